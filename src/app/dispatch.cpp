@@ -1,0 +1,61 @@
+#include <cstdio>
+#include <cstring>
+#include <exception>
+#include <string>
+
+#include "app/commands.h"
+#include "core/error.h"
+
+namespace bz::app {
+
+namespace {
+
+constexpr Command kCommands[] = {
+    {"render", "render a model file headless to PNG (and a line mask)", cmd_render},
+};
+
+void print_usage(std::FILE* out) {
+    std::fprintf(out, "usage: beamzone <command> [options]\n\ncommands:\n");
+    for (const auto& c : kCommands) {
+        std::fprintf(out, "  %-10.*s %.*s\n", static_cast<int>(c.name.size()), c.name.data(),
+                     static_cast<int>(c.summary.size()), c.summary.data());
+    }
+    std::fprintf(out, "\n'beamzone <command> --help' describes one command.\n");
+}
+
+}  // namespace
+
+std::span<const Command> commands() { return kCommands; }
+
+int dispatch(int argc, char** argv) {
+    if (argc < 2) {
+        print_usage(stderr);
+        return 2;
+    }
+    const std::string_view name = argv[1];
+    if (name == "--help" || name == "-h" || name == "help") {
+        print_usage(stdout);
+        return 0;
+    }
+    if (name == "--version") {
+        std::printf("beamzone %s\n", BEAMZONE_VERSION);
+        return 0;
+    }
+    for (const auto& c : kCommands) {
+        if (c.name != name) continue;
+        try {
+            return c.run(Args(argv + 2, static_cast<std::size_t>(argc - 2)));
+        } catch (const UserError& e) {
+            std::fprintf(stderr, "beamzone: error: %s\n", e.what());
+            return 1;
+        } catch (const std::exception& e) {
+            std::fprintf(stderr, "beamzone: internal error: %s\n", e.what());
+            return 1;
+        }
+    }
+    std::fprintf(stderr, "beamzone: unknown command '%s'\n", argv[1]);
+    print_usage(stderr);
+    return 2;
+}
+
+}  // namespace bz::app

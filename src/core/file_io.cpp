@@ -1,0 +1,85 @@
+#include "core/file_io.h"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <random>
+#include <sstream>
+
+#include "core/error.h"
+
+namespace bz {
+namespace fs = std::filesystem;
+
+std::string read_file(const fs::path& path, std::size_t max_bytes) {
+    std::error_code ec;
+    const auto status = fs::status(path, ec);
+    if (ec || !fs::exists(status)) throw UserError(path.string() + ": file not found");
+    if (!fs::is_regular_file(status)) throw UserError(path.string() + ": not a regular file");
+    const auto size = fs::file_size(path, ec);
+    if (ec) throw UserError(path.string() + ": cannot read size: " + ec.message());
+    if (size > max_bytes) {
+        throw UserError(path.string() + ": file is " + std::to_string(size) +
+                        " bytes, over the limit of " + std::to_string(max_bytes));
+    }
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw UserError(path.string() + ": cannot open: " + std::strerror(errno));
+    std::string data(size, '\0');
+    in.read(data.data(), static_cast<std::streamsize>(size));
+    data.resize(static_cast<std::size_t>(in.gcount()));
+    return data;
+}
+
+namespace {
+
+void write_all(int fd, std::string_view bytes, const fs::path& path) {
+    const char* p = bytes.data();
+    std::size_t left = bytes.size();
+    while (left > 0) {
+        const ssize_t n = ::write(fd, p, left);
+        if (n < 0) {
+            if (errno == EINTR) continue;
+            throw UserError(path.string() + ": write failed: " + std::strerror(errno));
+        }
+        p += n;
+        left -= static_cast<std::size_t>(n);
+    }
+}
+
+}  // namespace
+
+void write_file_atomic(const fs::path& path, std::string_view bytes) {
+    const fs::path dir = path.has_parent_path() ? path.parent_path() : fs::path(".");
+    std::error_code ec;
+    fs::create_directories(dir, ec);
+    std::random_device rd;
+    const fs::path tmp = dir / ("." + path.filename().string() + ".tmp" + std::to_string(rd()));
+    const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
+    if (fd < 0) throw UserError(tmp.string() + ": cannot create: " + std::strerror(errno));
+    try {
+        write_all(fd, bytes, tmp);
+        if (::fsync(fd) != 0) throw UserError(tmp.string() + ": fsync failed: " + std::strerror(errno));
+    } catch (...) {
+        ::close(fd);
+        ::unlink(tmp.c_str());
+        throw;
+    }
+    ::close(fd);
+    if (::rename(tmp.c_str(), path.c_str()) != 0) {
+        const std::string why = std::strerror(errno);
+        ::unlink(tmp.c_str());
+        throw UserError(path.string() + ": cannot replace: " + why);
+    }
+    // Make the rename itself durable.
+    const int dfd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if (dfd >= 0) {
+        ::fsync(dfd);
+        ::close(dfd);
+    }
+}
+
+}  // namespace bz

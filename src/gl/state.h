@@ -1,0 +1,22 @@
+#pragma once
+// Fixed-function state for one draw, applied in one place. Every pass states the whole of it,
+// so no pass depends on what the previous one left behind.
+#include "gl/gl.h"
+
+namespace bz::gl {
+
+enum class Blend { none, max, add };
+enum class DepthTest { off, less, greater, always };
+
+struct PipelineState {
+    DepthTest depth_test = DepthTest::off;
+    bool depth_write = false;
+    bool color_write = true;
+    Blend blend = Blend::none;
+    bool cull_back = false;
+    bool depth_clamp = false;
+};
+
+void apply(const PipelineState& state);
+
+}  // namespace bz::gl

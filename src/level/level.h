@@ -1,0 +1,82 @@
+#pragma once
+// A level as plain data: what the TOML file says, after validation, with defaults filled in.
+// The level loader produces it; the game turns it into entities through the factory table.
+// Every value keeps where it came from so later checks can still report file:line:col.
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace bz::level {
+
+struct SourcePos {
+    std::string file;
+    int line = 0;
+    int column = 0;
+};
+
+struct ObjectDesc {
+    std::string kind;                 // "cube", "pyramid", "tall_box", ... or "model"
+    std::filesystem::path model;      // resolved path, only for kind == "model"
+    glm::dvec3 position{0.0};         // world units; y up; the ground is y = 0
+    double heading_deg = 0.0;         // rotation about +y
+    double scale = 1.0;
+    glm::vec3 color{0.2f, 1.0f, 0.3f};  // linear RGB line colour
+    SourcePos pos;
+};
+
+struct EnemyRules {
+    bool slow_tank = true;
+    bool super_tank = true;
+    bool missile = true;
+    bool saucer = true;
+    int super_tank_score = 10000;   // super tanks may appear from this score
+    int missile_score = 5000;       // missiles may appear from this score
+    double spawn_min_distance = 40.0;
+    double spawn_max_distance = 90.0;
+    double aggression = 0.5;        // 0 = passive, 1 = relentless
+};
+
+struct Backdrop {
+    std::vector<glm::dvec2> mountains;  // (azimuth degrees 0..360, height in degrees above horizon)
+    bool volcano = true;
+    double volcano_azimuth_deg = 60.0;
+    bool moon = true;
+    double moon_azimuth_deg = 300.0;
+    double moon_elevation_deg = 18.0;
+};
+
+struct CameraKey {
+    double time = 0.0;  // seconds
+    glm::dvec3 eye{0.0};
+    glm::dvec3 target{0.0};
+};
+
+struct RenderSettings {
+    std::string style = "occluded";  // "occluded" or "arcade" (no hidden-line removal)
+    std::string preset = "balanced";  // "fast", "balanced", "high"
+    std::optional<double> line_width_px;
+    std::optional<double> crease_angle_deg;
+    std::optional<double> bloom_strength;
+};
+
+struct Level {
+    int version = 1;
+    std::string name;
+    std::string author;
+    std::filesystem::path file;  // the file it was loaded from
+    double field_size = 400.0;   // square field, centred on the origin, side in world units
+    bool wrap = true;            // leaving one edge enters the opposite one
+    glm::dvec3 player_start{0.0};
+    double player_heading_deg = 0.0;
+    std::vector<ObjectDesc> obstacles;
+    EnemyRules enemies;
+    Backdrop backdrop;
+    RenderSettings render;
+    std::vector<CameraKey> camera_path;  // sorted by time; may be empty
+};
+
+}  // namespace bz::level

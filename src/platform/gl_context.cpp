@@ -1,0 +1,106 @@
+#include "platform/gl_context.h"
+
+#include <SDL.h>
+
+#include <cstring>
+
+#include "core/error.h"
+#include "gl/gl.h"
+
+namespace bz::platform {
+
+namespace {
+
+void init_video() {
+    if (SDL_WasInit(SDL_INIT_VIDEO)) return;
+    if (SDL_InitSubSystem(SDL_INIT_VIDEO) != 0) {
+        throw UserError(std::string("cannot start SDL video: ") + SDL_GetError());
+    }
+}
+
+}  // namespace
+
+GlContext::GlContext(const ContextOptions& o) : debug_(std::make_unique<gl::DebugSink>()) {
+    init_video();
+    SDL_GL_SetAttribute(SDL_GL_CONTEXT_MAJOR_VERSION, 4);
+    SDL_GL_SetAttribute(SDL_GL_CONTEXT_MINOR_VERSION, 5);
+    SDL_GL_SetAttribute(SDL_GL_CONTEXT_PROFILE_MASK, SDL_GL_CONTEXT_PROFILE_CORE);
+    SDL_GL_SetAttribute(SDL_GL_CONTEXT_FLAGS, o.debug ? SDL_GL_CONTEXT_DEBUG_FLAG : 0);
+    SDL_GL_SetAttribute(SDL_GL_DOUBLEBUFFER, 1);
+    SDL_GL_SetAttribute(SDL_GL_DEPTH_SIZE, 0);  // every pass renders into its own targets
+    SDL_GL_SetAttribute(SDL_GL_FRAMEBUFFER_SRGB_CAPABLE, 0);
+    Uint32 flags = SDL_WINDOW_OPENGL | SDL_WINDOW_ALLOW_HIGHDPI;
+    if (o.mode == WindowMode::hidden) flags |= SDL_WINDOW_HIDDEN;
+    if (o.mode == WindowMode::fullscreen_desktop) flags |= SDL_WINDOW_FULLSCREEN_DESKTOP;
+    if (o.mode != WindowMode::hidden) flags |= SDL_WINDOW_RESIZABLE;
+    window_ = SDL_CreateWindow(o.title.c_str(), SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED,
+                               o.width, o.height, flags);
+    if (!window_) throw UserError(std::string("cannot open a window: ") + SDL_GetError());
+    context_ = SDL_GL_CreateContext(window_);
+    if (!context_) {
+        const std::string why = SDL_GetError();
+        SDL_DestroyWindow(window_);
+        throw UserError("cannot create an OpenGL 4.5 core context: " + why);
+    }
+    if (!gladLoadGL(reinterpret_cast<GLADloadfunc>(SDL_GL_GetProcAddress))) {
+        SDL_GL_DeleteContext(context_);
+        SDL_DestroyWindow(window_);
+        throw UserError("cannot load OpenGL 4.5 functions");
+    }
+    if (o.debug && GLAD_GL_KHR_debug) debug_->install();
+}
+
+GlContext::~GlContext() {
+    if (context_) SDL_GL_DeleteContext(context_);
+    if (window_) SDL_DestroyWindow(window_);
+}
+
+std::string GlContext::renderer_name() const {
+    const auto* r = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    return r ? r : "unknown";
+}
+
+bool GlContext::is_software() const {
+    const std::string r = renderer_name();
+    return r.find("llvmpipe") != std::string::npos || r.find("softpipe") != std::string::npos ||
+           r.find("Software") != std::string::npos;
+}
+
+void GlContext::drawable_size(int& w, int& h) const { SDL_GL_GetDrawableSize(window_, &w, &h); }
+
+void GlContext::swap() { SDL_GL_SwapWindow(window_); }
+
+Vsync GlContext::set_vsync(Vsync v) {
+    if (v == Vsync::adaptive) {
+        if (SDL_GL_SetSwapInterval(-1) == 0) return Vsync::adaptive;
+        v = Vsync::on;
+    }
+    if (v == Vsync::on) {
+        if (SDL_GL_SetSwapInterval(1) == 0) return Vsync::on;
+    }
+    SDL_GL_SetSwapInterval(0);
+    return Vsync::off;
+}
+
+void GlContext::set_fullscreen(bool on) {
+    SDL_SetWindowFullscreen(window_, on ? SDL_WINDOW_FULLSCREEN_DESKTOP : 0);
+}
+
+bool GlContext::fullscreen() const {
+    return (SDL_GetWindowFlags(window_) & SDL_WINDOW_FULLSCREEN_DESKTOP) != 0;
+}
+
+bool display_available(std::string* why) {
+    const char* driver = SDL_getenv("SDL_VIDEODRIVER");
+    if (driver && (std::strcmp(driver, "offscreen") == 0 || std::strcmp(driver, "dummy") == 0)) {
+        if (why) *why = std::string("SDL_VIDEODRIVER=") + driver + " cannot show a window";
+        return false;
+    }
+    if (!SDL_getenv("DISPLAY") && !SDL_getenv("WAYLAND_DISPLAY")) {
+        if (why) *why = "no display (neither DISPLAY nor WAYLAND_DISPLAY is set)";
+        return false;
+    }
+    return true;
+}
+
+}  // namespace bz::platform

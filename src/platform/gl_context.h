@@ -1,0 +1,52 @@
+#pragma once
+// An SDL window with an OpenGL 4.5 core context, or a hidden one for headless work
+// (SDL_VIDEODRIVER=offscreen gives an EGL context on Mesa llvmpipe with no display).
+#include <memory>
+#include <string>
+
+#include "gl/debug.h"
+
+struct SDL_Window;
+
+namespace bz::platform {
+
+enum class WindowMode { hidden, windowed, fullscreen_desktop };
+enum class Vsync { off, on, adaptive };
+
+struct ContextOptions {
+    WindowMode mode = WindowMode::hidden;
+    int width = 1280;
+    int height = 720;
+    std::string title = "beamzone";
+    bool debug = true;
+};
+
+class GlContext {
+public:
+    // Throws UserError with a one-line reason when no GL 4.5 context can be had.
+    explicit GlContext(const ContextOptions& options);
+    ~GlContext();
+    GlContext(const GlContext&) = delete;
+    GlContext& operator=(const GlContext&) = delete;
+
+    SDL_Window* window() const { return window_; }
+    gl::DebugSink& debug() { return *debug_; }
+    std::string renderer_name() const;
+    bool is_software() const;  // llvmpipe / softpipe: timer queries miss geometry work
+    void drawable_size(int& w, int& h) const;
+    void swap();
+    // Returns the mode actually set (adaptive falls back to on when the driver refuses).
+    Vsync set_vsync(Vsync v);
+    void set_fullscreen(bool on);
+    bool fullscreen() const;
+
+private:
+    SDL_Window* window_ = nullptr;
+    void* context_ = nullptr;
+    std::unique_ptr<gl::DebugSink> debug_;
+};
+
+// True if a real (non-offscreen, non-dummy) video driver could open a window.
+bool display_available(std::string* why);
+
+}  // namespace bz::platform
