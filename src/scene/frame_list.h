@@ -1,0 +1,53 @@
+#pragma once
+// What one frame shows, as plain data: the game and level code fill it, the renderer draws it.
+// Nothing here knows about GL, and the renderer never learns what a tank is.
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace bz::scene {
+
+using MeshId = std::uint32_t;  // index into a MeshLibrary
+
+struct Camera {
+    glm::dvec3 eye{0.0, 2.0, 5.0};
+    glm::dvec3 target{0.0};
+    glm::dvec3 up{0.0, 1.0, 0.0};
+    double fov_y_deg = 60.0;  // vertical field of view
+    double near = 0.1;
+    double far = 5000.0;
+};
+
+// One object instance. The model matrix is double precision so that scenes far from the
+// origin render camera-relative without jitter.
+struct DrawItem {
+    MeshId mesh = 0;
+    glm::dmat4 model{1.0};
+    glm::vec3 color{0.2f, 1.0f, 0.3f};  // linear RGB; > 1 is allowed (HDR)
+    float intensity = 1.0f;
+    bool occluder = true;  // writes the depth prepass (debris and shells may choose not to)
+};
+
+// A 2D line for the HUD, in HUD units: origin at the screen centre, y up, 1 unit = half the
+// screen height (so x spans -aspect..+aspect). Drawn with the same beam shading and bloom.
+struct HudLine {
+    glm::vec2 a{0.0f};
+    glm::vec2 b{0.0f};
+    glm::vec3 color{0.2f, 1.0f, 0.3f};
+    float intensity = 1.0f;
+};
+
+enum class LineStyle : std::uint8_t {
+    occluded,  // hidden lines removed against the depth prepass (default)
+    arcade,    // the 1980 look: no prepass, no hidden-line removal
+};
+
+struct FrameList {
+    Camera camera;
+    std::vector<DrawItem> items;
+    std::vector<HudLine> hud;
+    LineStyle style = LineStyle::occluded;
+};
+
+}  // namespace bz::scene
