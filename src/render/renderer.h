@@ -1,0 +1,60 @@
+#pragma once
+// The vector-line renderer: one frame is the list of passes
+//   prepass -> lines -> hud -> bloom -> composite
+// each in its own file under src/render/ and timed under its own name.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "gl/pass_timer.h"
+#include "render/settings.h"
+#include "scene/frame_list.h"
+#include "scene/mesh_library.h"
+
+namespace bz::render {
+
+struct FrameStats {
+    std::size_t objects_drawn = 0;
+    std::size_t objects_culled = 0;
+    std::size_t triangles_submitted = 0;
+    std::size_t feature_edges = 0;  // counted only when RenderSettings::count_edges is on
+};
+
+class Renderer {
+public:
+    // Needs a current GL 4.5 context. Throws UserError if a shader does not compile.
+    Renderer(const RenderSettings& settings, int width, int height, gl::TimingMethod timing);
+    ~Renderer();
+    Renderer(const Renderer&) = delete;
+    Renderer& operator=(const Renderer&) = delete;
+
+    void resize(int width, int height);
+    void set_settings(const RenderSettings& settings);
+    const RenderSettings& settings() const;
+
+    // Draws the frame into the renderer's own targets and composites it to `target_fbo`
+    // (0 = the window). Meshes are uploaded on first use and when their version changes.
+    void render(const scene::FrameList& frame, const scene::MeshLibrary& meshes,
+                unsigned target_fbo = 0);
+
+    // The 1-pixel visible-spine mask of the last frame's geometry (255 = lit), row 0 at top.
+    std::vector<std::uint8_t> render_mask(const scene::FrameList& frame,
+                                          const scene::MeshLibrary& meshes);
+    // The final composited colour of the last render(), RGBA8, row 0 at the top.
+    std::vector<std::uint8_t> read_color();
+
+    // Recompiles every shader from shaders/. On error keeps the old programs and returns false
+    // with the message (file:line:col) in *error.
+    bool reload_shaders(std::string* error);
+
+    const std::vector<gl::PassTime>& pass_times() const;
+    const FrameStats& stats() const;
+    int width() const;
+    int height() const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace bz::render
