@@ -1,0 +1,37 @@
+#pragma once
+// Every knob of the line pipeline, and the named presets that set them all.
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace bz::render {
+
+enum class DepthFormat {
+    reversed_f32,      // 32-bit float depth, reversed-Z via glClipControl (default)
+    conventional_d24,  // 24-bit fixed-point depth, [-1,1] clip (for comparison)
+};
+
+enum class BloomResolution { full = 1, half = 2, quarter = 4 };
+
+struct RenderSettings {
+    std::string preset = "balanced";
+    DepthFormat depth = DepthFormat::reversed_f32;
+    int spine_samples = 1;          // 1 (centre pixel) or 9 (3x3 neighbourhood)
+    float depth_bias = 2e-3f;       // relative view-space bias of the spine test
+    float line_half_width_px = 2.0f;
+    float crease_angle_deg = 60.0f;
+    BloomResolution bloom_resolution = BloomResolution::half;
+    int bloom_taps = 9;             // linear-sampled taps per direction (odd)
+    float bloom_sigma_px = 4.0f;    // Gaussian sigma, in pixels of the bloom target
+    float bloom_strength = 1.0f;
+    float exposure = 1.0f;
+    bool frustum_culling = true;
+    bool lod = true;                // raise the crease threshold / use simplified meshes far away
+    bool count_edges = false;       // count emitted feature edges (costs a query per frame)
+};
+
+// "fast", "balanced" or "high"; throws UserError naming the valid ones otherwise.
+RenderSettings preset(std::string_view name);
+const std::vector<std::string>& preset_names();
+
+}  // namespace bz::render
