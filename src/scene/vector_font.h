@@ -23,13 +23,21 @@ public:
     void draw(std::vector<HudLine>& out, std::string_view text, glm::vec2 origin, float height,
               glm::vec3 color, TextAlign align = TextAlign::left, float intensity = 1.0f) const;
     float width(std::string_view text, float height) const;
+    std::size_t glyph_count() const { return glyphs_.size(); }
 
 private:
     struct Glyph {
         float left = 0.0f, right = 0.0f;               // advance = right - left
         std::vector<std::vector<glm::vec2>> strokes;  // font units, y down as in the file
     };
+    const Glyph* glyph(unsigned char c) const;  // nullptr when the font has no such glyph
+    float advance(unsigned char c) const;       // in font units
+    float scale(float height) const { return height / (baseline_ - cap_top_); }
+
     std::vector<Glyph> glyphs_;  // index = character - 32
+    // Font units of the top and bottom of 'H' (Hershey Roman: 21 units of cap height).
+    float cap_top_ = -12.0f;
+    float baseline_ = 9.0f;
 };
 
 }  // namespace bz::scene
