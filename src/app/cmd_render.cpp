@@ -1,12 +1,175 @@
 #include <cstdio>
+#include <string>
 
+#include "app/cli_args.h"
 #include "app/commands.h"
+#include "app/default_camera.h"
+#include "app/headless_gl.h"
+#include "core/error.h"
+#include "core/image_io.h"
+#include "geometry/import.h"
+#include "geometry/line_mesh.h"
+#include "render/renderer.h"
 
 namespace bz::app {
 
-int cmd_render(Args) {
-    std::fprintf(stderr, "beamzone render: not built yet\n");
-    return 2;
+namespace {
+
+constexpr const char* kUsage =
+    "usage: beamzone render INPUT [--eye x,y,z] [--target x,y,z] [--up x,y,z] [--fov DEG]\n"
+    "                       [--near N] [--far F] [--size WxH] [--preset fast|balanced|high]\n"
+    "                       [--style occluded|arcade] [--color r,g,b] [--out frame.png]\n"
+    "                       [--mask mask.png] [--repeat N]\n"
+    "Renders a model file headless to PNG. Without --eye the camera frames the model's bounding\n"
+    "box from a 3/4 view. --mask writes the 1-pixel visible-spine mask (255 = line).\n"
+    "--repeat N renders N timed frames and prints the mean milliseconds of each pass.\n";
+
+struct RenderOptions {
+    std::string input;
+    std::optional<glm::dvec3> eye, target;
+    glm::dvec3 up{0.0, 1.0, 0.0};
+    double fov = 50.0;
+    std::optional<double> near, far;
+    glm::ivec2 size{800, 600};
+    std::string preset = "balanced";
+    scene::LineStyle style = scene::LineStyle::occluded;
+    glm::dvec3 color{0.25, 1.0, 0.35};
+    std::string out = "frame.png";
+    std::string mask;
+    int repeat = 0;
+};
+
+RenderOptions parse(Args args) {
+    RenderOptions o;
+    ArgCursor cur(static_cast<int>(args.size()), args.data());
+    while (!cur.done()) {
+        const std::string_view a = cur.next();
+        if (a == "--eye") o.eye = parse_vec3(a, cur.value(a));
+        else if (a == "--target") o.target = parse_vec3(a, cur.value(a));
+        else if (a == "--up") o.up = parse_vec3(a, cur.value(a));
+        else if (a == "--fov") o.fov = parse_number(a, cur.value(a));
+        else if (a == "--near") o.near = parse_number(a, cur.value(a));
+        else if (a == "--far") o.far = parse_number(a, cur.value(a));
+        else if (a == "--size") o.size = parse_size(a, cur.value(a));
+        else if (a == "--preset") o.preset = cur.value(a);
+        else if (a == "--color") o.color = parse_vec3(a, cur.value(a));
+        else if (a == "--out") o.out = cur.value(a);
+        else if (a == "--mask") o.mask = cur.value(a);
+        else if (a == "--repeat") o.repeat = parse_int(a, cur.value(a), 1, 100000);
+        else if (a == "--style") {
+            const std::string_view s = cur.value(a);
+            if (s == "occluded") o.style = scene::LineStyle::occluded;
+            else if (s == "arcade") o.style = scene::LineStyle::arcade;
+            else throw UsageError("--style: expected occluded or arcade");
+        } else if (!a.empty() && a[0] == '-') {
+            throw UsageError("unknown option " + std::string(a));
+        } else if (o.input.empty()) {
+            o.input = a;
+        } else {
+            throw UsageError("more than one INPUT given");
+        }
+    }
+    if (o.input.empty()) throw UsageError("no INPUT model given");
+    if (!(o.fov > 0.0 && o.fov < 180.0)) throw UsageError("--fov must be in (0, 180)");
+    if (o.near && *o.near <= 0.0) throw UsageError("--near must be > 0");
+    if (o.near && o.far && *o.far <= *o.near) throw UsageError("--far must be > --near");
+    if (o.eye && o.target && glm::length(*o.eye - *o.target) <= 0.0) {
+        throw UsageError("--eye and --target must differ");
+    }
+    return o;
+}
+
+scene::Camera make_camera(const RenderOptions& o, const geo::Bounds& bounds) {
+    const double aspect = static_cast<double>(o.size.x) / o.size.y;
+    scene::Camera c = frame_bounds(bounds, o.fov, aspect);
+    if (o.eye) {
+        c.eye = *o.eye;
+        c.target = o.target.value_or(glm::dvec3(bounds.center()));
+        const double dist = glm::length(c.eye - c.target);
+        const double r = std::max(static_cast<double>(bounds.radius()), 1e-6);
+        c.near = std::max(dist - r * 1.5, dist * 1e-3);
+        c.far = dist + r * 1.5;
+    } else if (o.target) {
+        c.target = *o.target;
+    }
+    c.up = o.up;
+    c.fov_y_deg = o.fov;
+    if (o.near) c.near = *o.near;
+    if (o.far) c.far = *o.far;
+    if (c.far <= c.near) c.far = c.near * 2.0;
+    return c;
+}
+
+void print_timings(const render::Renderer& r, const std::vector<std::vector<gl::PassTime>>& frames) {
+    if (frames.empty()) return;
+    std::fprintf(stdout, "pass        mean ms  (%zu frames, %dx%d, glFinish + CPU clock)\n", frames.size(),
+                 r.width(), r.height());
+    double total = 0.0;
+    for (std::size_t p = 0; p < frames.front().size(); ++p) {
+        double sum = 0.0;
+        for (const auto& f : frames) sum += f[p].ms;
+        const double mean = sum / static_cast<double>(frames.size());
+        total += mean;
+        std::fprintf(stdout, "%-10s %8.2f\n", frames.front()[p].name.c_str(), mean);
+    }
+    std::fprintf(stdout, "%-10s %8.2f\n", "total", total);
+    const auto& s = r.stats();
+    std::fprintf(stdout, "objects %zu, triangles %zu, feature edges %zu\n", s.objects_drawn,
+                 s.triangles_submitted, s.feature_edges);
+}
+
+}  // namespace
+
+int cmd_render(Args args) {
+    RenderOptions o;
+    try {
+        for (auto* a : args) {
+            if (std::string_view(a) == "--help" || std::string_view(a) == "-h") {
+                std::fputs(kUsage, stdout);
+                return 0;
+            }
+        }
+        o = parse(args);
+    } catch (const UsageError& e) {
+        std::fprintf(stderr, "beamzone render: %s\n%s", e.what(), kUsage);
+        return 2;
+    }
+    render::RenderSettings settings;
+    try {
+        settings = render::preset(o.preset);
+    } catch (const UserError& e) {
+        std::fprintf(stderr, "beamzone render: %s\n", e.what());
+        return 2;
+    }
+    geo::MeshReport report;
+    geo::AdjacencyMesh mesh = geo::build_line_mesh(geo::import_model(o.input), &report);
+    if (mesh.triangle_count() == 0) throw UserError(o.input + ": no usable triangles");
+
+    auto context = make_headless_context();
+    scene::MeshLibrary meshes;
+    scene::FrameList frame;
+    const geo::Bounds bounds = geo::compute_bounds(mesh.positions);
+    frame.items.push_back({meshes.add(o.input, std::move(mesh)), glm::dmat4(1.0), glm::vec3(o.color), 1.0f, true});
+    frame.camera = make_camera(o, bounds);
+    frame.style = o.style;
+
+    settings.count_edges = o.repeat > 0;
+    render::Renderer renderer(settings, o.size.x, o.size.y,
+                              o.repeat > 0 ? gl::TimingMethod::cpu_finish : gl::TimingMethod::off);
+    std::vector<std::vector<gl::PassTime>> timings;
+    const int frames = std::max(o.repeat, 1) + (o.repeat > 0 ? 2 : 0);  // 2 warm-up frames
+    for (int i = 0; i < frames; ++i) {
+        renderer.render(frame, meshes, render::Renderer::kOffscreen);
+        if (o.repeat > 0 && i >= 2) timings.push_back(renderer.pass_times());
+    }
+    write_png(o.out, Image{o.size.x, o.size.y, 4, renderer.read_color()});
+    if (!o.mask.empty()) write_png(o.mask, Image{o.size.x, o.size.y, 1, renderer.render_mask(frame, meshes)});
+    print_timings(renderer, timings);
+    if (context->debug().error_count() > 0) {
+        std::fprintf(stderr, "beamzone render: %d OpenGL error(s) reported\n", context->debug().error_count());
+        return 1;
+    }
+    return 0;
 }
 
 }  // namespace bz::app

@@ -34,6 +34,7 @@ void apply(const PipelineState& s) {
     } else {
         glDisable(GL_CULL_FACE);
     }
+    glClipControl(GL_LOWER_LEFT, s.depth_zero_to_one ? GL_ZERO_TO_ONE : GL_NEGATIVE_ONE_TO_ONE);
     if (s.depth_clamp) {
         glEnable(GL_DEPTH_CLAMP);
     } else {

@@ -15,6 +15,7 @@ struct PipelineState {
     Blend blend = Blend::none;
     bool cull_back = false;
     bool depth_clamp = false;
+    bool depth_zero_to_one = true;  // glClipControl depth range: [0,1] for reversed-Z
 };
 
 void apply(const PipelineState& state);

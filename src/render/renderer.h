@@ -22,6 +22,9 @@ struct FrameStats {
 
 class Renderer {
 public:
+    // Pass as target_fbo to composite into the renderer's own RGBA8 image (headless use).
+    static constexpr unsigned kOffscreen = ~0u;
+
     // Needs a current GL 4.5 context. Throws UserError if a shader does not compile.
     Renderer(const RenderSettings& settings, int width, int height, gl::TimingMethod timing);
     ~Renderer();
@@ -33,14 +36,16 @@ public:
     const RenderSettings& settings() const;
 
     // Draws the frame into the renderer's own targets and composites it to `target_fbo`
-    // (0 = the window). Meshes are uploaded on first use and when their version changes.
+    // (0 = the window, kOffscreen = own image for read_color). Meshes are uploaded on first
+    // use and when their version changes.
     void render(const scene::FrameList& frame, const scene::MeshLibrary& meshes,
                 unsigned target_fbo = 0);
 
     // The 1-pixel visible-spine mask of the last frame's geometry (255 = lit), row 0 at top.
     std::vector<std::uint8_t> render_mask(const scene::FrameList& frame,
                                           const scene::MeshLibrary& meshes);
-    // The final composited colour of the last render(), RGBA8, row 0 at the top.
+    // The final composited colour of the last render(), RGBA8, row 0 at the top (works for
+    // kOffscreen and, before the swap, for the window).
     std::vector<std::uint8_t> read_color();
 
     // Recompiles every shader from shaders/. On error keeps the old programs and returns false

@@ -1,0 +1,49 @@
+#version 450 core
+// Shades one feature-line quad: spine test against the prepass depth, then the beam profile.
+// With MASK_MODE it instead marks each pixel its visible spine crosses (the accuracy mask).
+#include "beam.glsl"
+#include "spine_test.glsl"
+
+noperspective in vec2 g_pixel;
+flat in vec2 g_p0;
+flat in vec2 g_p1;
+flat in vec2 g_inv_depth;
+flat in float g_slack;
+flat in vec2 g_nudge;
+flat in vec3 g_color;
+
+uniform float u_half_width;
+
+layout(location = 0) out vec4 o_color;
+
+#ifdef MASK_MODE
+// True when segment a-b passes through the unit pixel square centred on c
+// (separating axes: x, y and the segment's normal).
+bool crosses_pixel(vec2 c, vec2 a, vec2 b) {
+    vec2 lo = min(a, b), hi = max(a, b);
+    if (hi.x < c.x - 0.5 || lo.x >= c.x + 0.5 || hi.y < c.y - 0.5 || lo.y >= c.y + 0.5) return false;
+    vec2 d = b - a;
+    vec2 n = vec2(-d.y, d.x);
+    return abs(dot(n, c - a)) <= 0.5 * (abs(n.x) + abs(n.y));
+}
+#endif
+
+void main() {
+    vec2 p = gl_FragCoord.xy;
+#ifndef MASK_MODE
+    p = g_pixel;
+#endif
+    float t = closest_t(p, g_p0, g_p1);
+    vec2 spine = mix(g_p0, g_p1, t);
+    float line_depth = 1.0 / mix(g_inv_depth.x, g_inv_depth.y, t);
+#ifdef MASK_MODE
+    if (!crosses_pixel(p, g_p0, g_p1)) discard;
+    if (!spine_visible(spine, line_depth, g_slack, g_nudge)) discard;
+    o_color = vec4(1.0);
+#else
+    float dist = distance(p, spine);
+    if (dist >= u_half_width) discard;
+    if (!spine_visible(spine, line_depth, g_slack, g_nudge)) discard;
+    o_color = vec4(g_color * beam_profile(dist, u_half_width), 1.0);
+#endif
+}

@@ -1,0 +1,38 @@
+#pragma once
+// Small, strict parsers for command-line values. Each throws UsageError with a message that
+// names the option and what was expected.
+#include <glm/glm.hpp>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+namespace bz::app {
+
+class UsageError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+double parse_number(std::string_view option, std::string_view text);
+int parse_int(std::string_view option, std::string_view text, int min_value, int max_value);
+glm::dvec3 parse_vec3(std::string_view option, std::string_view text);  // "x,y,z"
+glm::ivec2 parse_size(std::string_view option, std::string_view text);  // "WxH"
+
+// Walks argv: `next_value()` takes the value of the current option or throws UsageError.
+class ArgCursor {
+public:
+    ArgCursor(int count, char* const* args) : count_(count), args_(args) {}
+    bool done() const { return index_ >= count_; }
+    std::string_view next() { return args_[index_++]; }
+    std::string_view value(std::string_view option) {
+        if (done()) throw UsageError(std::string(option) + " needs a value");
+        return next();
+    }
+
+private:
+    int count_;
+    char* const* args_;
+    int index_ = 0;
+};
+
+}  // namespace bz::app

@@ -1,0 +1,91 @@
+#include "render/batches.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+namespace bz::render {
+
+namespace {
+
+double max_axis_scale(const glm::dmat4& m) {
+    return std::sqrt(std::max({glm::dot(glm::dvec3(m[0]), glm::dvec3(m[0])),
+                               glm::dot(glm::dvec3(m[1]), glm::dvec3(m[1])),
+                               glm::dot(glm::dvec3(m[2]), glm::dvec3(m[2]))}));
+}
+
+// Sphere (view space) against the frustum; true if entirely outside.
+bool outside_frustum(const glm::dvec3& c, double r, const CameraMatrices& cam) {
+    const double depth = -c.z;
+    if (depth + r < cam.near || depth - r > cam.far) return true;
+    const double px = cam.proj[0][0], py = cam.proj[1][1];
+    const double nx = std::sqrt(px * px + 1.0), ny = std::sqrt(py * py + 1.0);
+    if ((px * c.x + c.z) / nx > r || (-px * c.x + c.z) / nx > r) return true;
+    if ((py * c.y + c.z) / ny > r || (-py * c.y + c.z) / ny > r) return true;
+    return false;
+}
+
+}  // namespace
+
+float lod_cos_crease(const RenderSettings& s, double radius_px) {
+    double angle = s.crease_angle_deg;
+    if (s.lod) {
+        if (radius_px < 6.0) return -2.0f;  // below any cosine: no creases at all
+        if (radius_px < 40.0) angle = std::max(angle, 80.0);
+    }
+    return static_cast<float>(std::cos(glm::radians(angle)));
+}
+
+FrameBatches build_batches(const scene::FrameList& frame, const scene::MeshLibrary& meshes,
+                           const CameraMatrices& cam, const RenderSettings& settings,
+                           int viewport_height) {
+    FrameBatches out;
+    struct Visible {
+        std::size_t item;
+        InstanceData data;
+    };
+    std::vector<Visible> visible;
+    visible.reserve(frame.items.size());
+    for (std::size_t i = 0; i < frame.items.size(); ++i) {
+        const scene::DrawItem& item = frame.items[i];
+        if (item.mesh >= meshes.size()) continue;
+        const glm::dmat4 mv = cam.view * item.model;
+        const geo::Bounds& b = meshes.bounds(item.mesh);
+        const glm::dvec3 centre = glm::dvec3(mv * glm::dvec4(glm::dvec3(b.center()), 1.0));
+        const double radius = static_cast<double>(b.radius()) * max_axis_scale(mv);
+        if (settings.frustum_culling && outside_frustum(centre, radius, cam)) {
+            ++out.stats.objects_culled;
+            continue;
+        }
+        const double depth = std::max(-centre.z, static_cast<double>(cam.near));
+        const double radius_px = radius * cam.proj[1][1] / depth * viewport_height * 0.5;
+        InstanceData d;
+        d.model_view = glm::mat4(mv);
+        d.color = glm::vec4(item.color * item.intensity, 1.0f);
+        d.params = glm::vec4(lod_cos_crease(settings, radius_px), 0.0f, 0.0f, 0.0f);
+        visible.push_back({i, d});
+    }
+    // Group by (mesh, occluder) so each group is one instanced draw; stable keeps the
+    // frame list's order inside a group, which keeps results deterministic.
+    std::stable_sort(visible.begin(), visible.end(), [&](const Visible& a, const Visible& b) {
+        const auto& ia = frame.items[a.item];
+        const auto& ib = frame.items[b.item];
+        if (ia.mesh != ib.mesh) return ia.mesh < ib.mesh;
+        return ia.occluder > ib.occluder;
+    });
+    out.instances.reserve(visible.size());
+    for (const Visible& v : visible) {
+        const auto& item = frame.items[v.item];
+        if (out.batches.empty() || out.batches.back().mesh != item.mesh ||
+            out.batches.back().occluder != item.occluder) {
+            out.batches.push_back({item.mesh, static_cast<GLuint>(out.instances.size()), 0, item.occluder});
+        }
+        ++out.batches.back().instance_count;
+        out.instances.push_back(v.data);
+        out.stats.triangles_submitted += meshes.mesh(item.mesh).triangle_count();
+    }
+    out.stats.objects_drawn = visible.size();
+    return out;
+}
+
+}  // namespace bz::render

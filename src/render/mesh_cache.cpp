@@ -1,0 +1,53 @@
+#include "render/mesh_cache.h"
+
+#include <memory>
+
+namespace bz::render {
+
+namespace {
+
+void instance_attributes(gl::VertexArray& vao, const gl::Buffer& instances, bool with_color) {
+    vao.bind_buffer(1, instances, sizeof(InstanceData), 0, 1);
+    for (GLuint col = 0; col < 4; ++col) {
+        vao.float_attribute(1 + col, 1, 4, static_cast<GLuint>(offsetof(InstanceData, model_view) +
+                                                               col * sizeof(glm::vec4)));
+    }
+    if (with_color) {
+        vao.float_attribute(5, 1, 4, offsetof(InstanceData, color));
+        vao.float_attribute(6, 1, 4, offsetof(InstanceData, params));
+    }
+}
+
+}  // namespace
+
+const GpuMesh& MeshCache::get(const scene::MeshLibrary& library, scene::MeshId id) {
+    if (id >= meshes_.size()) meshes_.resize(id + 1);
+    auto& slot = meshes_[id];
+    const std::uint32_t version = library.version(id);
+    if (!slot || slot->version != version) {
+        slot = std::make_unique<GpuMesh>();
+        upload(*slot, library.mesh(id));
+        slot->version = version;
+    }
+    return *slot;
+}
+
+void MeshCache::upload(GpuMesh& gpu, const geo::AdjacencyMesh& mesh) {
+    gpu.positions.set(std::span<const glm::vec3>(mesh.positions), GL_STATIC_DRAW);
+    gpu.adjacency.set(std::span<const std::uint32_t>(mesh.adjacency), GL_STATIC_DRAW);
+    gpu.triangles.set(std::span<const std::uint32_t>(mesh.triangles), GL_STATIC_DRAW);
+    gpu.adjacency_count = static_cast<GLsizei>(mesh.adjacency.size());
+    gpu.triangle_index_count = static_cast<GLsizei>(mesh.triangles.size());
+
+    gpu.lines_vao.bind_buffer(0, gpu.positions, sizeof(glm::vec3));
+    gpu.lines_vao.float_attribute(0, 0, 3, 0);
+    instance_attributes(gpu.lines_vao, *instances_, true);
+    gpu.lines_vao.element_buffer(gpu.adjacency);
+
+    gpu.prepass_vao.bind_buffer(0, gpu.positions, sizeof(glm::vec3));
+    gpu.prepass_vao.float_attribute(0, 0, 3, 0);
+    instance_attributes(gpu.prepass_vao, *instances_, false);
+    gpu.prepass_vao.element_buffer(gpu.triangles);
+}
+
+}  // namespace bz::render

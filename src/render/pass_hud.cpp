@@ -1,0 +1,20 @@
+#include "render/passes.h"
+
+namespace bz::render {
+
+// HUD lines go into the same HDR target before bloom, so text and radar glow like the scene.
+void pass_hud(const PassContext& ctx, const gl::VertexArray& hud_vao, GLsizei vertex_count) {
+    if (vertex_count == 0) return;
+    ctx.targets.lines_fbo.bind();
+    gl::PipelineState state;
+    state.blend = gl::Blend::max;
+    gl::apply(state);
+    const gl::Program& p = ctx.programs.hud;
+    p.use();
+    p.set("u_viewport", glm::vec2(static_cast<float>(ctx.targets.width), static_cast<float>(ctx.targets.height)));
+    p.set("u_half_width", ctx.settings.line_half_width_px);
+    hud_vao.bind();
+    glDrawArrays(GL_LINES, 0, vertex_count);
+}
+
+}  // namespace bz::render

@@ -1,0 +1,50 @@
+#include "render/passes.h"
+
+namespace bz::render {
+
+namespace {
+
+void set_line_uniforms(const gl::Program& p, const PassContext& ctx, float half_width) {
+    const auto& s = ctx.settings;
+    p.set("u_proj", ctx.cam.proj);
+    p.set("u_viewport", glm::vec2(static_cast<float>(ctx.targets.width), static_cast<float>(ctx.targets.height)));
+    p.set("u_half_width", half_width);
+    p.set("u_near", ctx.cam.near);
+    p.set("u_far", ctx.cam.far);
+    p.set("u_depth_bias", s.depth_bias);
+    p.set("u_slope_pixels", 1.0f);
+    p.set("u_depth", 0);
+    p.set("u_occlusion", ctx.occlusion ? 1 : 0);
+    p.set("u_spine_samples", s.spine_samples);
+    p.set("u_proj_a", ctx.cam.proj_a);
+    p.set("u_proj_b", ctx.cam.proj_b);
+    p.set("u_depth_zero_to_one", ctx.cam.zero_to_one ? 1 : 0);
+}
+
+}  // namespace
+
+// The feature-line pass: the geometry shader finds and extrudes edges, the fragment shader
+// runs the spine test against the prepass depth and shades the beam. GL_MAX blending keeps
+// overlapping ends and crossings from getting brighter than a single line.
+void pass_lines(const PassContext& ctx, bool mask_mode) {
+    const gl::Program& program = mask_mode ? ctx.programs.mask : ctx.programs.lines;
+    (mask_mode ? ctx.targets.mask_fbo : ctx.targets.lines_fbo).bind();
+    gl::PipelineState state;
+    state.blend = gl::Blend::max;
+    state.depth_zero_to_one = ctx.cam.zero_to_one;
+    gl::apply(state);
+    glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    program.use();
+    // The mask needs only the pixels the spine crosses: a quad one pixel to each side.
+    set_line_uniforms(program, ctx, mask_mode ? 1.0f : ctx.settings.line_half_width_px);
+    ctx.targets.depth.bind(0);
+    for (const Batch& b : ctx.batches.batches) {
+        const GpuMesh& mesh = ctx.gpu_meshes.get(ctx.meshes, b.mesh);
+        mesh.lines_vao.bind();
+        glDrawElementsInstancedBaseInstance(GL_TRIANGLES_ADJACENCY, mesh.adjacency_count,
+                                            GL_UNSIGNED_INT, nullptr, b.instance_count, b.first_instance);
+    }
+}
+
+}  // namespace bz::render

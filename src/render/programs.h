@@ -1,0 +1,22 @@
+#pragma once
+// Every shader program of the pipeline, built from one file per stage under shaders/.
+#include <string>
+
+#include "gl/program.h"
+
+namespace bz::render {
+
+struct Programs {
+    gl::Program prepass;
+    gl::Program lines;
+    gl::Program mask;  // lines.* with MASK_MODE
+    gl::Program hud;
+    gl::Program bloom_down;
+    gl::Program bloom_blur;
+    gl::Program composite;
+};
+
+// Throws UserError naming file:line:col of every compile error.
+Programs load_programs();
+
+}  // namespace bz::render

@@ -1,0 +1,180 @@
+#include "render/renderer.h"
+
+#include <algorithm>
+
+#include "core/error.h"
+#include "render/passes.h"
+
+namespace bz::render {
+
+struct Renderer::Impl {
+    RenderSettings settings;
+    int width;
+    int height;
+    gl::PassTimer timer;
+    Programs programs = load_programs();
+    Targets targets;
+    gl::Buffer instances;
+    MeshCache gpu_meshes{instances};
+    gl::VertexArray empty_vao;
+    gl::Buffer hud_vertices;
+    gl::VertexArray hud_vao;
+    FrameStats stats;
+    GLuint last_target = 0;
+    GLuint edge_query = 0;
+
+    Impl(const RenderSettings& s, int w, int h, gl::TimingMethod timing)
+        : settings(s), width(std::max(w, 1)), height(std::max(h, 1)), timer(timing) {
+        targets = make_targets(width, height, settings);
+        hud_vao.bind_buffer(0, hud_vertices, sizeof(float) * 5);
+        hud_vao.float_attribute(0, 0, 2, 0);
+        hud_vao.float_attribute(1, 0, 3, sizeof(float) * 2);
+        glGenQueries(1, &edge_query);
+    }
+    ~Impl() { glDeleteQueries(1, &edge_query); }
+
+    CameraMatrices camera(const scene::FrameList& frame) const {
+        return camera_matrices(frame.camera, static_cast<double>(width) / height, settings.depth);
+    }
+
+    FrameBatches prepare(const scene::FrameList& frame, const scene::MeshLibrary& meshes,
+                         const CameraMatrices& cam) {
+        FrameBatches b = build_batches(frame, meshes, cam, settings, height);
+        instances.set(std::span<const InstanceData>(b.instances), GL_STREAM_DRAW);
+        return b;
+    }
+
+    GLsizei upload_hud(const std::vector<scene::HudLine>& hud) {
+        std::vector<float> v;
+        v.reserve(hud.size() * 10);
+        for (const auto& l : hud) {
+            const glm::vec3 c = l.color * l.intensity;
+            for (const glm::vec2& p : {l.a, l.b}) v.insert(v.end(), {p.x, p.y, c.r, c.g, c.b});
+        }
+        hud_vertices.set(std::span<const float>(v), GL_STREAM_DRAW);
+        return static_cast<GLsizei>(hud.size() * 2);
+    }
+};
+
+Renderer::Renderer(const RenderSettings& settings, int width, int height, gl::TimingMethod timing)
+    : impl_(std::make_unique<Impl>(settings, width, height, timing)) {}
+
+Renderer::~Renderer() = default;
+
+void Renderer::resize(int width, int height) {
+    width = std::max(width, 1);
+    height = std::max(height, 1);
+    if (width == impl_->width && height == impl_->height) return;
+    impl_->width = width;
+    impl_->height = height;
+    impl_->targets = make_targets(width, height, impl_->settings);
+}
+
+void Renderer::set_settings(const RenderSettings& settings) {
+    const bool remake = settings.depth != impl_->settings.depth ||
+                        settings.bloom_resolution != impl_->settings.bloom_resolution;
+    impl_->settings = settings;
+    if (remake) impl_->targets = make_targets(impl_->width, impl_->height, settings);
+}
+
+const RenderSettings& Renderer::settings() const { return impl_->settings; }
+
+void Renderer::render(const scene::FrameList& frame, const scene::MeshLibrary& meshes,
+                      unsigned target_fbo) {
+    Impl& m = *impl_;
+    const CameraMatrices cam = m.camera(frame);
+    const FrameBatches batches = m.prepare(frame, meshes, cam);
+    const GLsizei hud_count = m.upload_hud(frame.hud);
+    const bool occlusion = frame.style == scene::LineStyle::occluded;
+    const PassContext ctx{m.programs, m.targets, m.gpu_meshes, meshes, batches,
+                          cam,        m.settings, occlusion, m.empty_vao};
+    m.stats = batches.stats;
+    const GLuint target = target_fbo == kOffscreen ? m.targets.output_fbo.id() : target_fbo;
+    m.last_target = target;
+
+    m.timer.begin_frame();
+    m.timer.begin("prepass");
+    pass_prepass(ctx);
+    m.timer.end();
+
+    m.timer.begin("lines");
+    if (m.settings.count_edges) glBeginQuery(GL_PRIMITIVES_GENERATED, m.edge_query);
+    pass_lines(ctx, false);
+    if (m.settings.count_edges) {
+        glEndQuery(GL_PRIMITIVES_GENERATED);
+        GLuint64 prims = 0;
+        glGetQueryObjectui64v(m.edge_query, GL_QUERY_RESULT, &prims);
+        m.stats.feature_edges = static_cast<std::size_t>(prims / 2);  // two triangles per quad
+    }
+    m.timer.end();
+
+    m.timer.begin("hud");
+    pass_hud(ctx, m.hud_vao, hud_count);
+    m.timer.end();
+
+    m.timer.begin("bloom");
+    pass_bloom(ctx);
+    m.timer.end();
+
+    m.timer.begin("composite");
+    pass_composite(ctx, target, m.width, m.height);
+    m.timer.end();
+    m.timer.end_frame();
+}
+
+std::vector<std::uint8_t> Renderer::render_mask(const scene::FrameList& frame,
+                                                const scene::MeshLibrary& meshes) {
+    Impl& m = *impl_;
+    const CameraMatrices cam = m.camera(frame);
+    const FrameBatches batches = m.prepare(frame, meshes, cam);
+    const bool occlusion = frame.style == scene::LineStyle::occluded;
+    const PassContext ctx{m.programs, m.targets, m.gpu_meshes, meshes, batches,
+                          cam,        m.settings, occlusion, m.empty_vao};
+    pass_prepass(ctx);
+    pass_lines(ctx, true);
+    std::vector<std::uint8_t> rows(static_cast<std::size_t>(m.width) * m.height);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glGetTextureImage(m.targets.mask.id(), 0, GL_RED, GL_UNSIGNED_BYTE,
+                      static_cast<GLsizei>(rows.size()), rows.data());
+    // GL's row 0 is the bottom; images put the top first.
+    std::vector<std::uint8_t> out(rows.size());
+    for (int y = 0; y < m.height; ++y) {
+        std::copy_n(rows.begin() + static_cast<std::ptrdiff_t>(y) * m.width, m.width,
+                    out.begin() + static_cast<std::ptrdiff_t>(m.height - 1 - y) * m.width);
+    }
+    for (auto& v : out) v = v ? 255 : 0;
+    return out;
+}
+
+std::vector<std::uint8_t> Renderer::read_color() {
+    Impl& m = *impl_;
+    const std::size_t row = static_cast<std::size_t>(m.width) * 4;
+    std::vector<std::uint8_t> rows(row * m.height);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, m.last_target);
+    if (m.last_target == 0) glReadBuffer(GL_BACK);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, m.width, m.height, GL_RGBA, GL_UNSIGNED_BYTE, rows.data());
+    std::vector<std::uint8_t> out(rows.size());
+    for (int y = 0; y < m.height; ++y) {
+        std::copy_n(rows.begin() + static_cast<std::ptrdiff_t>(y * row), row,
+                    out.begin() + static_cast<std::ptrdiff_t>((m.height - 1 - y) * row));
+    }
+    return out;
+}
+
+bool Renderer::reload_shaders(std::string* error) {
+    try {
+        impl_->programs = load_programs();
+        return true;
+    } catch (const UserError& e) {
+        if (error) *error = e.what();
+        return false;
+    }
+}
+
+const std::vector<gl::PassTime>& Renderer::pass_times() const { return impl_->timer.last_results(); }
+const FrameStats& Renderer::stats() const { return impl_->stats; }
+int Renderer::width() const { return impl_->width; }
+int Renderer::height() const { return impl_->height; }
+
+}  // namespace bz::render

@@ -1,0 +1,50 @@
+#include "render/settings.h"
+
+#include "core/error.h"
+
+namespace bz::render {
+
+const std::vector<std::string>& preset_names() {
+    static const std::vector<std::string> names = {"fast", "balanced", "high"};
+    return names;
+}
+
+RenderSettings preset(std::string_view name) {
+    RenderSettings s;
+    s.preset = std::string(name);
+    if (name == "fast") {
+        // Fewest fragments and taps: one spine sample, quarter-resolution bloom, thin lines.
+        s.depth = DepthFormat::reversed_f32;
+        s.spine_samples = 1;
+        s.depth_bias = 3e-3f;
+        s.line_half_width_px = 1.5f;
+        s.bloom_resolution = BloomResolution::quarter;
+        s.bloom_taps = 5;
+        s.bloom_sigma_px = 2.0f;
+        return s;
+    }
+    if (name == "balanced") {
+        s.depth = DepthFormat::reversed_f32;
+        s.spine_samples = 1;
+        s.depth_bias = 2e-3f;
+        s.line_half_width_px = 2.0f;
+        s.bloom_resolution = BloomResolution::half;
+        s.bloom_taps = 9;
+        s.bloom_sigma_px = 3.0f;
+        return s;
+    }
+    if (name == "high") {
+        // 3x3 spine neighbourhood and a wider, smoother bloom.
+        s.depth = DepthFormat::reversed_f32;
+        s.spine_samples = 9;
+        s.depth_bias = 1e-3f;
+        s.line_half_width_px = 2.5f;
+        s.bloom_resolution = BloomResolution::half;
+        s.bloom_taps = 17;
+        s.bloom_sigma_px = 5.0f;
+        return s;
+    }
+    throw UserError("unknown preset '" + std::string(name) + "' (use fast, balanced or high)");
+}
+
+}  // namespace bz::render

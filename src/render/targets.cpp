@@ -1,0 +1,30 @@
+#include "render/targets.h"
+
+#include <algorithm>
+
+namespace bz::render {
+
+Targets make_targets(int width, int height, const RenderSettings& s) {
+    Targets t;
+    t.width = width;
+    t.height = height;
+    const GLenum depth_format =
+        s.depth == DepthFormat::reversed_f32 ? GL_DEPTH_COMPONENT32F : GL_DEPTH_COMPONENT24;
+    t.depth = gl::Texture2D(width, height, depth_format, gl::Filter::nearest);
+    t.lines = gl::Texture2D(width, height, GL_RGBA16F, gl::Filter::linear);
+    const int f = static_cast<int>(s.bloom_resolution);
+    const int bw = std::max(1, width / f), bh = std::max(1, height / f);
+    t.bloom_a = gl::Texture2D(bw, bh, GL_RGBA16F, gl::Filter::linear);
+    t.bloom_b = gl::Texture2D(bw, bh, GL_RGBA16F, gl::Filter::linear);
+    t.mask = gl::Texture2D(width, height, GL_R8, gl::Filter::nearest);
+    t.output = gl::Texture2D(width, height, GL_RGBA8, gl::Filter::nearest);
+    t.depth_fbo = gl::Framebuffer({}, &t.depth);
+    t.lines_fbo = gl::Framebuffer({&t.lines}, nullptr);
+    t.bloom_a_fbo = gl::Framebuffer({&t.bloom_a}, nullptr);
+    t.bloom_b_fbo = gl::Framebuffer({&t.bloom_b}, nullptr);
+    t.mask_fbo = gl::Framebuffer({&t.mask}, nullptr);
+    t.output_fbo = gl::Framebuffer({&t.output}, nullptr);
+    return t;
+}
+
+}  // namespace bz::render

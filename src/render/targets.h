@@ -1,0 +1,22 @@
+#pragma once
+// The offscreen images one frame renders into.
+#include "gl/framebuffer.h"
+#include "render/settings.h"
+
+namespace bz::render {
+
+struct Targets {
+    int width = 0;
+    int height = 0;
+    gl::Texture2D depth;   // prepass depth (32F reversed-Z or 24-bit)
+    gl::Texture2D lines;   // HDR lines + HUD, RGBA16F, GL_MAX blended
+    gl::Texture2D bloom_a; // bloom ping-pong at the bloom resolution
+    gl::Texture2D bloom_b;
+    gl::Texture2D mask;    // R8 visible-spine mask
+    gl::Texture2D output;  // RGBA8 composite, for PNGs and screenshots
+    gl::Framebuffer depth_fbo, lines_fbo, bloom_a_fbo, bloom_b_fbo, mask_fbo, output_fbo;
+};
+
+Targets make_targets(int width, int height, const RenderSettings& settings);
+
+}  // namespace bz::render
