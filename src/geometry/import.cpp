@@ -1,0 +1,134 @@
+#include "geometry/import.h"
+
+#include <assimp/Importer.hpp>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+
+#include <cmath>
+#include <exception>
+#include <string>
+#include <system_error>
+#include <utility>
+#include <vector>
+
+#include "core/error.h"
+
+namespace bz::geo {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Deeper hierarchies than this are treated as broken files rather than walked.
+constexpr std::size_t kMaxNodeDepth = 1024;
+// Keeps a hostile file from making us allocate without bound through instancing (and keeps
+// vertex numbers well inside 32 bits).
+constexpr std::size_t kMaxTriangles = std::size_t{1} << 27;
+
+[[noreturn]] void fail(const fs::path& path, const std::string& reason) {
+    std::string line = path.string() + ": error: " + reason;
+    for (char& c : line) {
+        if (c == '\n' || c == '\r') c = ' ';
+    }
+    while (!line.empty() && line.back() == ' ') line.pop_back();
+    throw UserError(line);
+}
+
+void check_file(const fs::path& path) {
+    std::error_code ec;
+    const auto status = fs::status(path, ec);
+    if (ec || !fs::exists(status)) fail(path, "file not found");
+    if (!fs::is_regular_file(status)) fail(path, "not a regular file");
+    const auto size = fs::file_size(path, ec);
+    if (ec) fail(path, "cannot read file size: " + ec.message());
+    if (size > kMaxModelFileBytes) {
+        fail(path, "file is " + std::to_string(size) + " bytes, over the limit of " +
+                       std::to_string(kMaxModelFileBytes));
+    }
+}
+
+bool has_triangles(const aiMesh& mesh) {
+    for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
+        if (mesh.mFaces[f].mNumIndices == 3) return true;
+    }
+    return false;
+}
+
+// Appends one placed instance of `mesh`: its vertices transformed, its triangles re-indexed.
+void append_instance(const fs::path& path, const aiMesh& mesh, const aiMatrix4x4& to_model,
+                     TriMesh& out) {
+    if (!mesh.mVertices || !has_triangles(mesh)) return;
+    const auto base = static_cast<std::uint32_t>(out.positions.size());
+    for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
+        const aiVector3D p = to_model * mesh.mVertices[v];
+        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
+            fail(path, "non-finite vertex position (NaN or Inf) in mesh '" +
+                           std::string(mesh.mName.C_Str()) + "'");
+        }
+        out.positions.emplace_back(p.x, p.y, p.z);
+    }
+    for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
+        const aiFace& face = mesh.mFaces[f];
+        if (face.mNumIndices != 3) continue;  // points and lines
+        for (unsigned k = 0; k < 3; ++k) {
+            if (face.mIndices[k] >= mesh.mNumVertices) fail(path, "vertex index out of range");
+            out.indices.push_back(base + face.mIndices[k]);
+        }
+    }
+    if (out.triangle_count() > kMaxTriangles || out.positions.size() > kMaxTriangles) {
+        fail(path, "too many triangles or vertices");
+    }
+}
+
+void walk_nodes(const fs::path& path, const aiScene& scene, TriMesh& out) {
+    struct Visit {
+        const aiNode* node;
+        aiMatrix4x4 parent;
+        std::size_t depth;
+    };
+    std::vector<Visit> stack{{scene.mRootNode, aiMatrix4x4(), 0}};
+    while (!stack.empty()) {
+        const Visit at = stack.back();
+        stack.pop_back();
+        if (at.depth > kMaxNodeDepth) fail(path, "node hierarchy too deep");
+        const aiMatrix4x4 to_model = at.parent * at.node->mTransformation;
+        for (unsigned i = 0; i < at.node->mNumMeshes; ++i) {
+            const unsigned m = at.node->mMeshes[i];
+            if (m >= scene.mNumMeshes || !scene.mMeshes[m]) fail(path, "bad mesh reference");
+            append_instance(path, *scene.mMeshes[m], to_model, out);
+        }
+        // Pushed in reverse so children are visited in file order.
+        for (unsigned c = at.node->mNumChildren; c-- > 0;) {
+            if (at.node->mChildren[c]) stack.push_back({at.node->mChildren[c], to_model,
+                                                        at.depth + 1});
+        }
+    }
+}
+
+const aiScene* read_scene(const fs::path& path, Assimp::Importer& importer) {
+    // No Assimp::DefaultLogger is ever created, so Assimp logs to its null logger: silent.
+    const unsigned flags = aiProcess_Triangulate | aiProcess_ValidateDataStructure;
+    const aiScene* scene = nullptr;
+    try {
+        scene = importer.ReadFile(path.string(), flags);
+    } catch (const std::exception& e) {
+        // Assimp catches its own import errors; this is for allocation failures and the like.
+        fail(path, std::string("import failed: ") + e.what());
+    }
+    if (!scene) fail(path, importer.GetErrorString());
+    return scene;
+}
+
+}  // namespace
+
+TriMesh import_model(const fs::path& path) {
+    check_file(path);
+    Assimp::Importer importer;
+    const aiScene* scene = read_scene(path, importer);
+    if (!scene->mRootNode) fail(path, "no scene hierarchy");
+    TriMesh out;
+    walk_nodes(path, *scene, out);
+    if (out.indices.empty()) fail(path, "no triangles");
+    return out;
+}
+
+}  // namespace bz::geo
