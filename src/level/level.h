@@ -26,6 +26,9 @@ struct ObjectDesc {
     double scale = 1.0;
     glm::vec3 color{0.2f, 1.0f, 0.3f};  // linear RGB line colour
     SourcePos pos;
+    // Radius of a circle around `position` (xz plane) that holds the whole footprint, already
+    // multiplied by `scale`: from kinds.h for built-in kinds, from the `radius` key for models.
+    double footprint_radius = 0.0;
 };
 
 struct EnemyRules {
@@ -67,6 +70,7 @@ struct Level {
     int version = 1;
     std::string name;
     std::string author;
+    std::string description;     // one or two sentences for a level menu; may be empty
     std::filesystem::path file;  // the file it was loaded from
     double field_size = 400.0;   // square field, centred on the origin, side in world units
     bool wrap = true;            // leaving one edge enters the opposite one

@@ -1,0 +1,26 @@
+#pragma once
+// One problem found in a level file, with where it is.
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "level/level.h"
+
+namespace bz::level {
+
+struct Diagnostic {
+    SourcePos pos;  // line 0 means "the file as a whole" (missing, unreadable, too large)
+    std::string message;
+};
+
+// "file:line:col: error: message", or "file: error: message" when there is no line.
+std::string format(const Diagnostic& d);
+
+// Makes text from a level file safe to quote inside a one-line message: control characters
+// and quotes become escapes, and anything past `max_chars` is cut and marked with "...".
+std::string quote(std::string_view text, std::size_t max_chars = 40);
+
+// Orders by line then column (messages read top to bottom, as the file does).
+void sort_by_position(std::vector<Diagnostic>& diagnostics);
+
+}  // namespace bz::level

@@ -1,0 +1,152 @@
+#include "level/sections.h"
+
+#include <algorithm>
+#include <array>
+
+#include "level/suggest.h"
+
+namespace bz::level::detail {
+
+namespace {
+
+constexpr std::array<std::string_view, 11> kRootKeys = {
+    "version", "name", "author", "description", "field", "player",
+    "obstacle", "enemies", "backdrop", "render", "camera_key"};
+constexpr std::array<std::string_view, 3> kFieldKeys = {"size", "wrap", "obstacle_color"};
+constexpr std::array<std::string_view, 2> kPlayerKeys = {"position", "heading"};
+constexpr std::array<std::string_view, 6> kEnemyKeys = {
+    "types", "super_tank_score", "missile_score", "spawn_min_distance", "spawn_max_distance",
+    "aggression"};
+constexpr std::array<std::string_view, 4> kEnemyTypes = {"slow_tank", "super_tank", "missile",
+                                                         "saucer"};
+constexpr std::array<std::string_view, 5> kRenderKeys = {"style", "preset", "line_width",
+                                                         "crease_angle", "bloom_strength"};
+constexpr std::array<std::string_view, 2> kStyles = {"occluded", "arcade"};
+// Must match bz::render::preset_names(); the level module may not link the renderer.
+constexpr std::array<std::string_view, 3> kPresets = {"fast", "balanced", "high"};
+
+constexpr std::int64_t kMaxScore = 10'000'000;
+
+}  // namespace
+
+std::span<const std::string_view> root_keys() { return kRootKeys; }
+
+const toml::table* section(const toml::table& root, std::string_view key, Diagnostics& diag) {
+    const toml::node* node = root.get(key);
+    if (!node) return nullptr;
+    if (const auto* t = node->as_table()) return t;
+    diag.error(node->source(), "'" + std::string(key) + "' must be a table ([" + std::string(key) +
+                                   "]), not " + std::string(type_name(*node)));
+    return nullptr;
+}
+
+const toml::array* table_array(const toml::table& root, std::string_view key, std::size_t max_count,
+                               std::string_view plural, Diagnostics& diag) {
+    const toml::node* node = root.get(key);
+    if (!node) return nullptr;
+    const auto* a = node->as_array();
+    if (!a) {
+        diag.error(node->source(), "'" + std::string(key) + "' must be a list of tables ([[" +
+                                       std::string(key) + "]]), not " + std::string(type_name(*node)));
+        return nullptr;
+    }
+    if (a->size() > max_count) {
+        diag.error(node->source(), "too many " + std::string(plural) + ": " + std::to_string(a->size()) +
+                                       " (the limit is " + std::to_string(max_count) + ")");
+        return nullptr;
+    }
+    return a;
+}
+
+void read_field(const toml::table& root, Level& level, glm::vec3& obstacle_color, Diagnostics& diag) {
+    const toml::table* t = section(root, "field", diag);
+    if (!t) return;
+    TableReader r(*t, "[field]", kFieldKeys, diag);
+    if (auto v = r.number("size", {kMinFieldSize, kMaxFieldSize})) level.field_size = *v;
+    if (auto v = r.boolean("wrap")) level.wrap = *v;
+    if (auto v = r.color("obstacle_color")) obstacle_color = *v;
+}
+
+void read_player(const toml::table& root, Level& level, Diagnostics& diag) {
+    const toml::table* t = section(root, "player", diag);
+    if (!t) return;
+    TableReader r(*t, "[player]", kPlayerKeys, diag);
+    const double half = level.field_size / 2.0;
+    if (auto v = r.vec3("position", {Range{-half, half}, kHeightRange, Range{-half, half}})) {
+        level.player_start = *v;
+    }
+    if (auto v = r.number("heading", kHeadingRange)) level.player_heading_deg = *v;
+}
+
+void read_enemies(const toml::table& root, Level& level, Diagnostics& diag) {
+    const toml::table* t = section(root, "enemies", diag);
+    if (!t) return;
+    TableReader r(*t, "[enemies]", kEnemyKeys, diag);
+    EnemyRules& e = level.enemies;
+    if (const toml::node* node = r.get("types")) {
+        if (const auto* list = node->as_array()) {
+            e.slow_tank = e.super_tank = e.missile = e.saucer = false;
+            std::array<bool, kEnemyTypes.size()> seen{};
+            for (const auto& item : *list) {
+                const auto* s = item.as_string();
+                if (!s) {
+                    diag.error(item.source(), "enemy types are strings, not " + std::string(type_name(item)));
+                    continue;
+                }
+                std::size_t index = kEnemyTypes.size();
+                for (std::size_t i = 0; i < kEnemyTypes.size(); ++i) {
+                    if (kEnemyTypes[i] == s->get()) index = i;
+                }
+                if (index == kEnemyTypes.size()) {
+                    diag.error(item.source(), "unknown enemy type " + quote(s->get()) +
+                                                  did_you_mean(s->get(), kEnemyTypes) +
+                                                  " (one of: slow_tank, super_tank, missile, saucer)");
+                    continue;
+                }
+                if (seen[index]) {
+                    diag.error(item.source(), "enemy type " + quote(s->get()) + " is listed twice");
+                    continue;
+                }
+                seen[index] = true;
+            }
+            e.slow_tank = seen[0];
+            e.super_tank = seen[1];
+            e.missile = seen[2];
+            e.saucer = seen[3];
+        } else {
+            diag.error(node->source(), "'types' must be an array of enemy types, not " +
+                                           std::string(type_name(*node)));
+        }
+    }
+    if (auto v = r.integer("super_tank_score", 0, kMaxScore)) e.super_tank_score = static_cast<int>(*v);
+    if (auto v = r.integer("missile_score", 0, kMaxScore)) e.missile_score = static_cast<int>(*v);
+    const double half = level.field_size / 2.0;
+    const auto min_d = r.number("spawn_min_distance", {5.0, half});
+    const auto max_d = r.number("spawn_max_distance", {5.0, half});
+    if (min_d) e.spawn_min_distance = *min_d;
+    if (max_d) e.spawn_max_distance = *max_d;
+    // The defaults suit the default field; a small field pulls them in rather than failing.
+    if (!max_d) e.spawn_max_distance = std::min(e.spawn_max_distance, half);
+    if (!min_d) e.spawn_min_distance = std::min(e.spawn_min_distance, e.spawn_max_distance);
+    if ((min_d || max_d) && e.spawn_min_distance > e.spawn_max_distance) {
+        const toml::node* at = max_d ? r.get("spawn_max_distance") : r.get("spawn_min_distance");
+        diag.error(at->source(), "spawn_min_distance (" + number_text(e.spawn_min_distance) +
+                                     ") must not be larger than spawn_max_distance (" +
+                                     number_text(e.spawn_max_distance) + ")");
+    }
+    if (auto v = r.number("aggression", {0.0, 1.0})) e.aggression = *v;
+}
+
+void read_render(const toml::table& root, Level& level, Diagnostics& diag) {
+    const toml::table* t = section(root, "render", diag);
+    if (!t) return;
+    TableReader r(*t, "[render]", kRenderKeys, diag);
+    RenderSettings& s = level.render;
+    if (auto v = r.choice("style", kStyles)) s.style = *v;
+    if (auto v = r.choice("preset", kPresets)) s.preset = *v;
+    if (auto v = r.number("line_width", {0.5, 16.0})) s.line_width_px = *v;
+    if (auto v = r.number("crease_angle", {0.0, 180.0})) s.crease_angle_deg = *v;
+    if (auto v = r.number("bloom_strength", {0.0, 4.0})) s.bloom_strength = *v;
+}
+
+}  // namespace bz::level::detail

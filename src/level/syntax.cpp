@@ -1,0 +1,110 @@
+#include "level/syntax.h"
+
+#include <cstdio>
+
+#include "level/toml_scan.h"
+
+static_assert(TOML_EXCEPTIONS, "the level loader expects toml++ to report errors by exception");
+
+namespace bz::level {
+
+namespace {
+
+// toml++ says "Error while parsing key-value pair: expected value, saw '\n'"; a level author
+// wants "syntax error in key-value pair: expected value, saw '\n'".
+std::string plain_message(std::string_view description) {
+    constexpr std::string_view kPrefix = "Error while parsing ";
+    std::string text;
+    if (description.substr(0, kPrefix.size()) == kPrefix) {
+        text = "syntax error in ";
+        text += description.substr(kPrefix.size());
+    } else {
+        text = "syntax error: ";
+        text += description;
+        if (text.size() > 14 && text[14] >= 'A' && text[14] <= 'Z') {
+            text[14] = static_cast<char>(text[14] - 'A' + 'a');
+        }
+    }
+    std::string out;
+    for (const char ch : text) {
+        const auto c = static_cast<unsigned char>(ch);
+        if (c < 0x20 || c == 0x7f) {
+            char buf[8];
+            std::snprintf(buf, sizeof buf, "\\x%02x", c);
+            out += buf;
+        } else {
+            out += ch;
+        }
+    }
+    return out;
+}
+
+SourcePos position_of_offset(std::string_view text, std::size_t offset, const std::string& file) {
+    SourcePos pos{file, 1, 1};
+    for (std::size_t i = 0; i < offset && i < text.size(); ++i) {
+        if (text[i] == '\n') {
+            ++pos.line;
+            pos.column = 1;
+        } else if ((static_cast<unsigned char>(text[i]) & 0xc0) != 0x80) {
+            ++pos.column;
+        }
+    }
+    return pos;
+}
+
+// Blanks the statement starting on `line` (and the lines of a value it opens) with spaces so
+// every later line and column stays where it was. Returns the last line blanked, or 0 when
+// the error sits inside a value opened earlier: from there nothing can be trusted.
+int blank_statement(std::string& text, int line) {
+    const std::size_t start = line_start(text, line);
+    if (start == std::string::npos || start >= text.size()) return 0;
+    ScanState before;
+    scan(text, 0, start, before);
+    if (before.inside_value()) return 0;
+    ScanState own;
+    std::size_t pos = start;
+    int last = line - 1;
+    do {
+        std::size_t end = text.find('\n', pos);
+        if (end == std::string::npos) end = text.size();
+        scan(text, pos, end + 1, own);
+        for (std::size_t i = pos; i < end; ++i) text[i] = ' ';
+        ++last;
+        pos = end + 1;
+    } while (own.inside_value() && pos < text.size());
+    return last;
+}
+
+}  // namespace
+
+SyntaxResult parse_toml(std::string_view text, const std::string& file, std::size_t max_errors) {
+    SyntaxResult result;
+    if (const auto deep = find_deep_key(text, kMaxKeyDots)) {
+        std::size_t at = deep->offset;
+        while (at < text.size() && (text[at] == ' ' || text[at] == '\t')) ++at;
+        result.errors.push_back({position_of_offset(text, at, file),
+                                 "key is nested more than " + std::to_string(kMaxKeyDots) +
+                                     " levels deep (too many dots)"});
+        return result;
+    }
+    std::string work(text);
+    int blanked_through = 0;
+    for (;;) {
+        try {
+            toml::table table = toml::parse(std::string_view(work), std::string_view(file));
+            if (result.errors.empty()) result.table = std::move(table);
+            return result;
+        } catch (const toml::parse_error& e) {
+            const int line = static_cast<int>(e.source().begin.line);
+            const int column = static_cast<int>(e.source().begin.column);
+            result.errors.push_back(
+                {SourcePos{file, line, column}, plain_message(e.description())});
+            if (result.errors.size() >= max_errors || line <= blanked_through) return result;
+            const int last = blank_statement(work, line);
+            if (last == 0) return result;
+            blanked_through = last;
+        }
+    }
+}
+
+}  // namespace bz::level
