@@ -18,14 +18,14 @@ uniform vec2 u_viewport;       // pixels
 uniform float u_half_width;    // pixels
 uniform float u_near;
 uniform float u_far;
-uniform float u_depth_bias;    // relative
-uniform float u_slope_pixels;  // how many pixels of face slope the spine test tolerates
 
 noperspective out vec2 g_pixel;  // this corner's window position, interpolated linearly
 flat out vec2 g_p0;              // spine end points, window pixels
 flat out vec2 g_p1;
 flat out vec2 g_inv_depth;       // 1 / view depth at p0 and p1 (linear in screen space)
-flat out float g_slack;          // depth tolerance of the spine test, view units per unit depth
+flat out vec3 g_edge_plane;      // view-space plane through the eye and the edge
+flat out vec4 g_face_pos;        // plane (n, n.p) of the face on the edge plane's positive side
+flat out vec4 g_face_neg;        // ... negative side; all zero: compare with the spine's depth
 flat out vec2 g_nudge;           // pixel offset that moves a silhouette sample off its own face
 flat out vec3 g_color;
 
@@ -67,24 +67,25 @@ bool clip_lateral(inout vec4 a, inout vec4 b) {
 
 vec2 to_window(vec4 clip) { return (clip.xy / clip.w * 0.5 + 0.5) * u_viewport; }
 
-// Depth change per pixel of the plane through `p` with normal `n` (view space), at p.
-float depth_slope(vec3 n, vec3 p) {
-    float len = length(n);
-    if (len < 1e-30) return 0.0;
-    n /= len;
-    float k = dot(n, p);
-    float v = -p.z;
-    float gx = n.x / u_proj[0][0] * 2.0 / u_viewport.x;
-    float gy = n.y / u_proj[1][1] * 2.0 / u_viewport.y;
-    return v * v / max(abs(k), 1e-20) * length(vec2(gx, gy));
+// View-space ray (depth 1) through a window position.
+vec3 ray_at(vec2 px) {
+    vec2 ndc = px / u_viewport * 2.0 - 1.0;
+    return vec3(ndc.x / u_proj[0][0], ndc.y / u_proj[1][1], -1.0);
 }
 
-void emit_edge(int i0, int i1, vec3 slope_normal, bool nudge_away, int i_opposite) {
+vec4 plane_of(vec3 n, vec3 p) { return vec4(n, dot(n, p)); }
+
+// kind: 0 = crease (faces on both sides), 1 = silhouette, 2 = boundary-like (one face).
+// `face` is this triangle's plane, `other` the neighbour's (creases only); `opp` is this
+// triangle's vertex off the edge, which tells on which side of the edge the face lies.
+void emit_edge(int i0, int i1, int kind, vec4 face, vec4 other, vec3 opp) {
     vec3 a = v_in[i0].view_pos, b = v_in[i1].view_pos;
+    // The plane through the eye and the (unclipped) edge, oriented so the face is positive.
+    vec3 m = cross(a, b);
+    if (dot(m, opp) < 0.0) m = -m;
     if (!clip_depth(a, b)) return;
     vec4 ca = u_proj * vec4(a, 1.0), cb = u_proj * vec4(b, 1.0);
     if (!clip_lateral(ca, cb)) return;
-    // Depth after lateral clipping, from w (= view depth for a perspective projection).
     vec2 s0 = to_window(ca), s1 = to_window(cb);
     vec2 d = s1 - s0;
     float len = length(d);
@@ -92,15 +93,13 @@ void emit_edge(int i0, int i1, vec3 slope_normal, bool nudge_away, int i_opposit
     vec2 nrm = vec2(-dir.y, dir.x);
     float h = u_half_width;
 
-    vec3 mid = 0.5 * (a + b);
-    float slack = u_depth_bias + u_slope_pixels * depth_slope(slope_normal, mid) / max(-mid.z, 1e-20);
-    g_slack = min(slack, 0.25);
+    g_edge_plane = m;
+    g_face_pos = kind == 1 ? vec4(0.0) : face;
+    g_face_neg = kind == 0 ? other : vec4(0.0);
     g_nudge = vec2(0.0);
-    if (nudge_away) {
+    if (kind == 1) {
         // Sample the depth just outside the front face, where the background or an occluder is.
-        vec4 co = u_proj * vec4(v_in[i_opposite].view_pos, 1.0);
-        vec2 so = co.w > 0.0 ? to_window(co) : s0 - nrm;
-        g_nudge = (dot(so - s0, nrm) > 0.0 ? -nrm : nrm) * 0.75;
+        g_nudge = (dot(m, ray_at(s0 + nrm)) > 0.0 ? -nrm : nrm) * 0.75;
     }
     g_p0 = s0;
     g_p1 = s1;
@@ -127,15 +126,17 @@ void main() {
 
     for (int e = 0; e < 3; ++e) {
         int i0 = 2 * e, iadj = 2 * e + 1, i1 = (2 * e + 2) % 6, iopp = (2 * e + 4) % 6;
+        vec4 face = plane_of(n_view, p0);
+        vec3 opp = v_in[iopp].view_pos;
         if (v_in[iadj].vertex_id == v_in[i0].vertex_id) {
             // Boundary, non-manifold or inconsistently wound: always a feature edge.
-            emit_edge(i0, i1, n_view, false, iopp);
+            emit_edge(i0, i1, 2, face, vec4(0.0), opp);
             continue;
         }
         vec3 q = v_in[iadj].view_pos;
         bool neighbour_front = front_facing(v_in[i0].view_pos, q, v_in[i1].view_pos);
         if (front && !neighbour_front) {
-            emit_edge(i0, i1, n_view, true, iopp);  // silhouette, emitted by the front face
+            emit_edge(i0, i1, 1, face, vec4(0.0), opp);  // silhouette, emitted by the front face
             continue;
         }
         if (front != neighbour_front) continue;  // silhouette owned by the other face
@@ -144,11 +145,8 @@ void main() {
         float m_len = length(m_obj);
         if (m_len < 1e-30 || n_obj_len < 1e-30) continue;
         if (dot(n_obj, m_obj / m_len) < cos_crease) {
-            vec3 n_nb = face_normal(v_in[i0].view_pos, q, v_in[i1].view_pos);
-            // Tolerate the steeper of the two faces the spine pixel may land on.
-            vec3 mid = 0.5 * (v_in[i0].view_pos + v_in[i1].view_pos);
-            vec3 steeper = depth_slope(n_view, mid) > depth_slope(n_nb, mid) ? n_view : n_nb;
-            emit_edge(i0, i1, steeper, false, iopp);
+            vec4 other = plane_of(face_normal(v_in[i0].view_pos, q, v_in[i1].view_pos), q);
+            emit_edge(i0, i1, 0, face, other, opp);
         }
     }
 }

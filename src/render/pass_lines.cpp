@@ -12,7 +12,6 @@ void set_line_uniforms(const gl::Program& p, const PassContext& ctx, float half_
     p.set("u_near", ctx.cam.near);
     p.set("u_far", ctx.cam.far);
     p.set("u_depth_bias", s.depth_bias);
-    p.set("u_slope_pixels", 1.0f);
     p.set("u_depth", 0);
     p.set("u_occlusion", ctx.occlusion ? 1 : 0);
     p.set("u_spine_samples", s.spine_samples);

@@ -16,7 +16,7 @@ RenderSettings preset(std::string_view name) {
         // Fewest fragments and taps: one spine sample, quarter-resolution bloom, thin lines.
         s.depth = DepthFormat::reversed_f32;
         s.spine_samples = 1;
-        s.depth_bias = 3e-3f;
+        s.depth_bias = 2e-3f;
         s.line_half_width_px = 1.5f;
         s.bloom_resolution = BloomResolution::quarter;
         s.bloom_taps = 5;
