@@ -19,5 +19,6 @@ std::span<const Command> commands();
 int dispatch(int argc, char** argv);
 
 int cmd_render(Args args);
+int cmd_check(Args args);
 
 }  // namespace bz::app

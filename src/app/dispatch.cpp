@@ -12,6 +12,7 @@ namespace {
 
 constexpr Command kCommands[] = {
     {"render", "render a model file headless to PNG (and a line mask)", cmd_render},
+    {"check", "validate level files (file:line:col errors), no window needed", cmd_check},
 };
 
 void print_usage(std::FILE* out) {
