@@ -1,0 +1,170 @@
+#include "platform/input.h"
+
+#include <SDL_events.h>
+#include <SDL_gamecontroller.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace bz::platform {
+
+namespace {
+
+static_assert(SDL_NUM_SCANCODES <= 512, "Input::keys_ is too small");
+static_assert(SDL_CONTROLLER_BUTTON_MAX <= 32, "Input::Pad::buttons is too small");
+
+// Below this a stick counts as centred: worn sticks rest a little off centre.
+constexpr float kDeadZone = 0.2f;
+constexpr float kTriggerFire = 0.5f;
+
+// Radial dead zone, then rescaled so the output still reaches 1 at the rim.
+void dead_zone(float& x, float& y) {
+    const float r = std::sqrt(x * x + y * y);
+    if (r < kDeadZone) {
+        x = y = 0.0f;
+        return;
+    }
+    const float k = std::min(1.0f, (r - kDeadZone) / (1.0f - kDeadZone)) / r;
+    x *= k;
+    y *= k;
+}
+
+float axis_value(Sint16 v) { return std::max(-1.0f, static_cast<float>(v) / 32767.0f); }
+
+}  // namespace
+
+InputState pad_to_treads(const PadAxes& in, GamepadMode mode) {
+    PadAxes a = in;
+    dead_zone(a.left_x, a.left_y);
+    dead_zone(a.right_x, a.right_y);
+    InputState s;
+    if (mode == GamepadMode::tank) {
+        s.left_tread = -a.left_y;  // SDL's stick y grows toward the player
+        s.right_tread = -a.right_y;
+    } else {
+        const float forward = -a.left_y;
+        const float turn = a.left_x;  // right turns clockwise seen from above
+        s.left_tread = std::clamp(forward + turn, -1.0f, 1.0f);
+        s.right_tread = std::clamp(forward - turn, -1.0f, 1.0f);
+    }
+    s.fire = a.trigger_left > kTriggerFire || a.trigger_right > kTriggerFire;
+    return s;
+}
+
+Input::Input(Bindings bindings, GamepadMode mode) : bindings_(std::move(bindings)), mode_(mode) {}
+
+bool Input::key_held(int scancode) const {
+    return scancode >= 0 && scancode < static_cast<int>(keys_.size()) &&
+           keys_[static_cast<std::size_t>(scancode)];
+}
+
+bool Input::action_held(Action a) const {
+    for (const auto& k : bindings_[static_cast<std::size_t>(a)]) {
+        if (key_held(k.scancode) && (k.mods & ~mods_) == 0) return true;
+    }
+    return false;
+}
+
+void Input::key_down(int scancode, unsigned sdl_mod, bool repeat) {
+    if (scancode >= 0 && scancode < static_cast<int>(keys_.size())) {
+        keys_[static_cast<std::size_t>(scancode)] = true;
+    }
+    mods_ = modifiers_from_sdl(sdl_mod);
+    if (repeat) return;
+    // The most specific binding wins: Alt+Return toggles fullscreen without also doing what a
+    // bare Return is bound to. Extra modifiers do not block a binding (fire is on Ctrl).
+    int best = -1;
+    std::vector<Action> matches;
+    for (std::size_t i = 0; i < kActionCount; ++i) {
+        const auto action = static_cast<Action>(i);
+        if (is_held_action(action)) continue;
+        for (const auto& k : bindings_[i]) {
+            if (k.scancode != scancode || (k.mods & ~mods_) != 0) continue;
+            const int specificity = __builtin_popcount(k.mods);
+            if (specificity > best) {
+                best = specificity;
+                matches.clear();
+            }
+            if (specificity == best) matches.push_back(action);
+            break;
+        }
+    }
+    pressed_.insert(pressed_.end(), matches.begin(), matches.end());
+}
+
+void Input::handle_event(const SDL_Event& e) {
+    switch (e.type) {
+        case SDL_KEYDOWN:
+            key_down(static_cast<int>(e.key.keysym.scancode), e.key.keysym.mod, e.key.repeat != 0);
+            break;
+        case SDL_KEYUP: {
+            const int sc = static_cast<int>(e.key.keysym.scancode);
+            if (sc >= 0 && sc < static_cast<int>(keys_.size())) keys_[static_cast<std::size_t>(sc)] = false;
+            mods_ = modifiers_from_sdl(e.key.keysym.mod);
+            break;
+        }
+        case SDL_CONTROLLERAXISMOTION: {
+            PadAxes& a = pads_[e.caxis.which].axes;
+            const float v = axis_value(e.caxis.value);
+            switch (e.caxis.axis) {
+                case SDL_CONTROLLER_AXIS_LEFTX: a.left_x = v; break;
+                case SDL_CONTROLLER_AXIS_LEFTY: a.left_y = v; break;
+                case SDL_CONTROLLER_AXIS_RIGHTX: a.right_x = v; break;
+                case SDL_CONTROLLER_AXIS_RIGHTY: a.right_y = v; break;
+                case SDL_CONTROLLER_AXIS_TRIGGERLEFT: a.trigger_left = std::max(0.0f, v); break;
+                case SDL_CONTROLLER_AXIS_TRIGGERRIGHT: a.trigger_right = std::max(0.0f, v); break;
+                default: break;
+            }
+            break;
+        }
+        case SDL_CONTROLLERBUTTONDOWN:
+        case SDL_CONTROLLERBUTTONUP: {
+            const bool down = e.type == SDL_CONTROLLERBUTTONDOWN;
+            if (e.cbutton.button < 32) pads_[e.cbutton.which].buttons[e.cbutton.button] = down;
+            if (down && e.cbutton.button == SDL_CONTROLLER_BUTTON_START) pressed_.push_back(Action::pause);
+            break;
+        }
+        case SDL_CONTROLLERDEVICEREMOVED:
+            pads_.erase(e.cdevice.which);
+            break;
+        case SDL_WINDOWEVENT:
+            if (e.window.event == SDL_WINDOWEVENT_FOCUS_LOST) release_all();
+            break;
+        default:
+            break;
+    }
+}
+
+InputState Input::state() const {
+    auto held = [this](Action a) { return action_held(a) ? 1.0f : 0.0f; };
+    const float drive = held(Action::drive_forward) - held(Action::drive_back);
+    const float turn = held(Action::turn_right) - held(Action::turn_left);
+    float left = held(Action::left_tread_forward) - held(Action::left_tread_back) + drive + turn;
+    float right = held(Action::right_tread_forward) - held(Action::right_tread_back) + drive - turn;
+    bool fire = action_held(Action::fire);
+    for (const auto& [id, pad] : pads_) {
+        const InputState p = pad_to_treads(pad.axes, mode_);
+        left += p.left_tread;
+        right += p.right_tread;
+        fire = fire || p.fire || pad.buttons[SDL_CONTROLLER_BUTTON_A] ||
+               pad.buttons[SDL_CONTROLLER_BUTTON_RIGHTSHOULDER];
+    }
+    return {std::clamp(left, -1.0f, 1.0f), std::clamp(right, -1.0f, 1.0f), fire};
+}
+
+std::vector<Action> Input::take_pressed() {
+    std::vector<Action> out;
+    out.swap(pressed_);
+    return out;
+}
+
+void Input::release_all() {
+    keys_.fill(false);
+    mods_ = kModNone;
+    for (auto& [id, pad] : pads_) {
+        pad.buttons.fill(false);
+        pad.axes = {};
+    }
+}
+
+}  // namespace bz::platform

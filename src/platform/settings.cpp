@@ -1,0 +1,252 @@
+#include "platform/settings.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <toml++/toml.h>
+
+#include "core/error.h"
+#include "core/file_io.h"
+
+namespace bz::platform {
+
+namespace {
+
+// Settings are a few hundred bytes; anything this large is not a settings file.
+constexpr std::size_t kMaxSettingsBytes = 1u << 20;
+
+class Reader {
+public:
+    Reader(const std::string& source, SettingsLoad& out) : source_(source), out_(out) {}
+
+    void error(const toml::node* at, const std::string& message) {
+        error_at(at ? at->source().begin : toml::source_position{1, 1}, message);
+    }
+    void error_at(const toml::source_position& b, const std::string& message) {
+        found_.push_back({b.line, b.column,
+                          source_ + ":" + std::to_string(b.line) + ":" + std::to_string(b.column) +
+                              ": error: " + message});
+    }
+    // Errors in file order, however the checks were ordered.
+    void flush() {
+        std::stable_sort(found_.begin(), found_.end(), [](const Found& a, const Found& b) {
+            return a.line != b.line ? a.line < b.line : a.column < b.column;
+        });
+        for (auto& f : found_) out_.errors.push_back(std::move(f.text));
+        found_.clear();
+    }
+
+    void boolean(const toml::table& t, std::string_view key, bool& dst) {
+        const toml::node* n = t.get(key);
+        if (!n) return;
+        if (const auto v = n->value_exact<bool>()) {
+            dst = *v;
+        } else {
+            error(n, std::string(key) + " must be true or false; keeping " + (dst ? "true" : "false"));
+        }
+    }
+
+    void unit_float(const toml::table& t, std::string_view key, float& dst) {
+        const toml::node* n = t.get(key);
+        if (!n) return;
+        const auto v = n->is_number() ? n->value<double>() : std::nullopt;
+        if (v && std::isfinite(*v) && *v >= 0.0 && *v <= 1.0) {
+            dst = static_cast<float>(*v);
+        } else {
+            std::ostringstream keep;
+            keep << dst;
+            error(n, std::string(key) + " must be a number from 0 to 1; keeping " + keep.str());
+        }
+    }
+
+    // A string that must be one of `allowed`; returns the index chosen, or -1.
+    int choice(const toml::table& t, std::string_view key, std::span<const std::string> allowed,
+               std::string_view current) {
+        const toml::node* n = t.get(key);
+        if (!n) return -1;
+        if (const auto v = n->value_exact<std::string>()) {
+            const auto it = std::find(allowed.begin(), allowed.end(), *v);
+            if (it != allowed.end()) return static_cast<int>(it - allowed.begin());
+        }
+        std::string list;
+        for (const auto& a : allowed) list += (list.empty() ? "\"" : ", \"") + a + "\"";
+        error(n, std::string(key) + " must be one of " + list + "; keeping \"" + std::string(current) + "\"");
+        return -1;
+    }
+
+    void keys(const toml::table& t, Bindings& dst) {
+        const toml::node* n = t.get("keys");
+        if (!n) return;
+        const toml::table* keys = n->as_table();
+        if (!keys) {
+            error(n, "keys must be a table such as [keys] fire = [\"Space\"]; keeping the defaults");
+            return;
+        }
+        for (const auto& [name, value] : *keys) {
+            const auto action = action_from_name(name.str());
+            if (!action) {
+                std::string list;
+                for (std::size_t i = 0; i < kActionCount; ++i) {
+                    list += (i ? ", " : "") + std::string(action_name(static_cast<Action>(i)));
+                }
+                error_at(name.source().begin, "unknown action '" + std::string(name.str()) + "' (actions: " + list + ")");
+                continue;
+            }
+            std::vector<const toml::node*> items;
+            if (const toml::array* arr = value.as_array()) {
+                for (const auto& item : *arr) items.push_back(&item);
+            } else {
+                items.push_back(&value);
+            }
+            std::vector<KeyBinding> parsed;
+            bool ok = true;
+            for (const toml::node* item : items) {
+                const auto text = item->value_exact<std::string>();
+                std::string why;
+                const auto key = text ? parse_key(*text, &why) : std::nullopt;
+                if (!text) why = "a key must be a string such as \"Space\"";
+                if (!key) {
+                    error(item, std::string(name.str()) + ": " + why + "; keeping the default keys");
+                    ok = false;
+                    break;
+                }
+                parsed.push_back(*key);
+            }
+            if (ok) dst[static_cast<std::size_t>(*action)] = std::move(parsed);
+        }
+    }
+
+    void unknown_keys(const toml::table& t) {
+        static constexpr std::string_view kKnown[] = {
+            "keys",   "volume", "mute",  "vsync",  "fullscreen", "pause_on_focus_loss",
+            "preset", "style",  "gamepad"};
+        for (const auto& [name, value] : t) {
+            if (std::find(std::begin(kKnown), std::end(kKnown), name.str()) == std::end(kKnown)) {
+                error_at(name.source().begin, "unknown setting '" + std::string(name.str()) + "'");
+            }
+        }
+    }
+
+private:
+    struct Found {
+        toml::source_index line, column;
+        std::string text;
+    };
+    const std::string& source_;
+    SettingsLoad& out_;
+    std::vector<Found> found_;
+};
+
+std::string quoted(std::string_view s) {
+    std::string out = "\"";
+    for (const char c : s) {
+        if (c == '"' || c == '\\') out += '\\';
+        out += c;
+    }
+    return out + "\"";
+}
+
+}  // namespace
+
+std::string_view vsync_name(Vsync v) {
+    switch (v) {
+        case Vsync::off: return "off";
+        case Vsync::on: return "on";
+        case Vsync::adaptive: return "adaptive";
+    }
+    return "on";
+}
+
+bool parse_vsync(std::string_view text, Vsync* out) {
+    for (const Vsync v : {Vsync::off, Vsync::on, Vsync::adaptive}) {
+        if (text == vsync_name(v)) {
+            *out = v;
+            return true;
+        }
+    }
+    return false;
+}
+
+SettingsLoad parse_settings(std::string_view text, const std::string& source,
+                            std::span<const std::string> presets) {
+    SettingsLoad out;
+    out.file_existed = true;
+    toml::table t;
+    try {
+        t = toml::parse(text, source);
+    } catch (const toml::parse_error& e) {
+        const auto& b = e.source().begin;
+        out.errors.push_back(source + ":" + std::to_string(b.line) + ":" + std::to_string(b.column) +
+                             ": error: " + std::string(e.description()) +
+                             "; using default settings");
+        return out;
+    }
+    Settings& s = out.settings;
+    Reader r(source, out);
+    r.unit_float(t, "volume", s.volume);
+    r.boolean(t, "mute", s.mute);
+    r.boolean(t, "fullscreen", s.fullscreen);
+    r.boolean(t, "pause_on_focus_loss", s.pause_on_focus_loss);
+
+    const std::string vsyncs[] = {"off", "on", "adaptive"};
+    if (const int i = r.choice(t, "vsync", vsyncs, vsync_name(s.vsync)); i >= 0) {
+        parse_vsync(vsyncs[i], &s.vsync);
+    }
+    if (const int i = r.choice(t, "preset", presets, s.preset); i >= 0) s.preset = presets[static_cast<std::size_t>(i)];
+    const std::string styles[] = {"occluded", "arcade"};
+    if (const int i = r.choice(t, "style", styles, s.style); i >= 0) s.style = styles[i];
+    const std::string modes[] = {"tank", "drive"};
+    if (const int i = r.choice(t, "gamepad", modes, modes[static_cast<int>(s.gamepad)]); i >= 0) {
+        s.gamepad = static_cast<GamepadMode>(i);
+    }
+    r.keys(t, s.keys);
+    r.unknown_keys(t);
+    r.flush();
+    return out;
+}
+
+SettingsLoad load_settings(const std::filesystem::path& file, std::span<const std::string> presets) {
+    std::error_code ec;
+    if (!std::filesystem::exists(file, ec)) return {};
+    std::string text;
+    try {
+        text = read_file(file, kMaxSettingsBytes);
+    } catch (const UserError& e) {
+        SettingsLoad out;
+        out.file_existed = true;
+        out.errors.push_back(std::string(e.what()) + "; using default settings");
+        return out;
+    }
+    return parse_settings(text, file.string(), presets);
+}
+
+std::string format_settings(const Settings& s) {
+    std::ostringstream o;
+    o << "# beamzone settings. Bad values are reported with their line and fall back to the\n"
+         "# default; the game rewrites this file only while it has no errors.\n"
+      << "volume = " << s.volume << "               # 0.0 .. 1.0\n"
+      << "mute = " << (s.mute ? "true" : "false") << "\n"
+      << "vsync = " << quoted(vsync_name(s.vsync)) << "             # \"off\", \"on\" or \"adaptive\"\n"
+      << "fullscreen = " << (s.fullscreen ? "true" : "false") << "        # borderless desktop fullscreen\n"
+      << "pause_on_focus_loss = " << (s.pause_on_focus_loss ? "true" : "false") << "\n"
+      << "preset = " << quoted(s.preset) << "     # render preset: \"fast\", \"balanced\" or \"high\"\n"
+      << "style = " << quoted(s.style) << "      # \"occluded\" or \"arcade\" (no hidden-line removal)\n"
+      << "gamepad = " << quoted(s.gamepad == GamepadMode::tank ? "tank" : "drive")
+      << "          # \"tank\" (two sticks, one per tread) or \"drive\" (left stick)\n"
+      << "\n# Keys per action, as SDL scancode names (\"Q\", \"Space\", \"Left Ctrl\", \"Alt+Return\").\n"
+      << "[keys]\n";
+    for (std::size_t i = 0; i < kActionCount; ++i) {
+        o << action_name(static_cast<Action>(i)) << " = [";
+        for (std::size_t k = 0; k < s.keys[i].size(); ++k) {
+            o << (k ? ", " : "") << quoted(key_name(s.keys[i][k]));
+        }
+        o << "]\n";
+    }
+    return o.str();
+}
+
+void save_settings(const std::filesystem::path& file, const Settings& s) {
+    write_file_atomic(file, format_settings(s));
+}
+
+}  // namespace bz::platform

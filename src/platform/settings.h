@@ -1,0 +1,49 @@
+#pragma once
+// The player's settings file (TOML, in the pref folder). A bad value is reported as
+// `file:line:col: error: ...` and that key keeps its default; a broken file keeps them all.
+// Nothing in here may crash on what a person typed.
+#include <filesystem>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "platform/bindings.h"
+#include "platform/gl_context.h"
+#include "platform/input.h"
+
+namespace bz::platform {
+
+struct Settings {
+    Bindings keys = default_bindings();
+    float volume = 0.8f;  // 0..1
+    bool mute = false;
+    Vsync vsync = Vsync::on;
+    bool fullscreen = false;
+    bool pause_on_focus_loss = true;
+    std::string preset = "balanced";
+    std::string style = "occluded";  // "occluded" or "arcade"
+    GamepadMode gamepad = GamepadMode::tank;
+};
+
+struct SettingsLoad {
+    Settings settings;
+    std::vector<std::string> errors;  // one line each, ready to print
+    bool file_existed = false;
+    // Only a file that loaded cleanly (or none at all) may be overwritten: a typo in the
+    // user's file must not be "fixed" by silently replacing it with defaults.
+    bool may_save() const { return errors.empty(); }
+};
+
+// `presets` lists the valid values of `preset` (the renderer's names).
+SettingsLoad parse_settings(std::string_view toml_text, const std::string& source_name,
+                            std::span<const std::string> presets);
+SettingsLoad load_settings(const std::filesystem::path& file, std::span<const std::string> presets);
+
+std::string format_settings(const Settings& s);  // a commented TOML document
+void save_settings(const std::filesystem::path& file, const Settings& s);  // atomic
+
+std::string_view vsync_name(Vsync v);
+bool parse_vsync(std::string_view text, Vsync* out);
+
+}  // namespace bz::platform
