@@ -6,12 +6,14 @@
 
 #include <cmath>
 #include <exception>
+#include <fstream>
 #include <string>
 #include <system_error>
 #include <utility>
 #include <vector>
 
 #include "core/error.h"
+#include "geometry/import_guard.h"
 
 namespace bz::geo {
 namespace {
@@ -33,6 +35,14 @@ constexpr std::size_t kMaxTriangles = std::size_t{1} << 27;
     throw UserError(line);
 }
 
+std::string read_head(const fs::path& path, std::size_t max_bytes) {
+    std::ifstream in(path, std::ios::binary);
+    std::string head(max_bytes, '\0');
+    in.read(head.data(), static_cast<std::streamsize>(max_bytes));
+    head.resize(static_cast<std::size_t>(in.gcount()));
+    return head;
+}
+
 void check_file(const fs::path& path) {
     std::error_code ec;
     const auto status = fs::status(path, ec);
@@ -44,6 +54,7 @@ void check_file(const fs::path& path) {
         fail(path, "file is " + std::to_string(size) + " bytes, over the limit of " +
                        std::to_string(kMaxModelFileBytes));
     }
+    if (auto why = detail::implausible_off_header(read_head(path, 4096), size)) fail(path, *why);
 }
 
 bool has_triangles(const aiMesh& mesh) {
@@ -61,8 +72,9 @@ void append_instance(const fs::path& path, const aiMesh& mesh, const aiMatrix4x4
     for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
         const aiVector3D p = to_model * mesh.mVertices[v];
         if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
-            fail(path, "non-finite vertex position (NaN or Inf) in mesh '" +
-                           std::string(mesh.mName.C_Str()) + "'");
+            const std::string name = mesh.mName.C_Str();
+            fail(path, "non-finite vertex position (NaN or Inf)" +
+                           (name.empty() ? std::string() : " in mesh '" + name + "'"));
         }
         out.positions.emplace_back(p.x, p.y, p.z);
     }
