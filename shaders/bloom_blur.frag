@@ -1,20 +1,22 @@
 #version 450 core
 // One direction of a separable Gaussian with linear sampling (Rakos): each fetch between two
 // texels returns their weighted sum through the bilinear filter, halving the fetch count.
+// The kernel arrives as compile-time constants (BLOOM_FETCHES, BLOOM_OFFSETS, BLOOM_WEIGHTS):
+// on llvmpipe a loop over uniform arrays costs three times as much as the unrolled constants.
 in vec2 v_uv;
 uniform sampler2D u_source;
 uniform vec2 u_direction;  // (1,0) or (0,1)
-uniform int u_fetches;     // centre + pairs on each side
-uniform float u_offsets[16];
-uniform float u_weights[16];
 layout(location = 0) out vec4 o_color;
+
+const float kOffsets[BLOOM_FETCHES] = BLOOM_OFFSETS;
+const float kWeights[BLOOM_FETCHES] = BLOOM_WEIGHTS;
 
 void main() {
     vec2 step_uv = u_direction / vec2(textureSize(u_source, 0));
-    vec4 sum = texture(u_source, v_uv) * u_weights[0];
-    for (int i = 1; i < u_fetches; ++i) {
-        vec2 off = step_uv * u_offsets[i];
-        sum += (texture(u_source, v_uv + off) + texture(u_source, v_uv - off)) * u_weights[i];
+    vec4 sum = texture(u_source, v_uv) * kWeights[0];
+    for (int i = 1; i < BLOOM_FETCHES; ++i) {
+        vec2 off = step_uv * kOffsets[i];
+        sum += (texture(u_source, v_uv + off) + texture(u_source, v_uv - off)) * kWeights[i];
     }
     o_color = sum;
 }

@@ -9,7 +9,7 @@ uniform float u_exposure;
 layout(location = 0) out vec4 o_color;
 
 void main() {
-    vec3 hdr = texture(u_lines, v_uv).rgb + texture(u_bloom, v_uv).rgb * u_bloom_strength;
+    vec3 hdr = texelFetch(u_lines, ivec2(gl_FragCoord.xy), 0).rgb + texture(u_bloom, v_uv).rgb * u_bloom_strength;
     hdr *= u_exposure;
     float peak = max(max(hdr.r, hdr.g), hdr.b);
     vec3 mapped = peak > 1e-6 ? hdr * ((1.0 - exp(-peak)) / peak) : vec3(0.0);

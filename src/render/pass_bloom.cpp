@@ -1,4 +1,3 @@
-#include "render/bloom_kernel.h"
 #include "render/passes.h"
 
 namespace bz::render {
@@ -18,13 +17,9 @@ void pass_bloom(const PassContext& ctx) {
     t.lines.bind(0);
     glDrawArrays(GL_TRIANGLES, 0, 3);
 
-    const BloomKernel k = bloom_kernel(ctx.settings.bloom_taps, ctx.settings.bloom_sigma_px);
-    const gl::Program& blur = ctx.programs.bloom_blur;
+    const gl::Program& blur = ctx.programs.bloom_blur;  // kernel baked in (programs.cpp)
     blur.use();
     blur.set("u_source", 0);
-    blur.set("u_fetches", static_cast<int>(k.weights.size()));
-    blur.set_array("u_offsets", k.offsets.data(), static_cast<int>(k.offsets.size()));
-    blur.set_array("u_weights", k.weights.data(), static_cast<int>(k.weights.size()));
 
     t.bloom_b_fbo.bind();
     blur.set("u_direction", glm::vec2(1.0f, 0.0f));

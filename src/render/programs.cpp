@@ -1,10 +1,34 @@
 #include "render/programs.h"
 
+#include <sstream>
+
 #include "core/paths.h"
+#include "render/bloom_kernel.h"
 
 namespace bz::render {
 
-Programs load_programs() {
+namespace {
+
+std::string glsl_array(const std::vector<float>& v) {
+    std::ostringstream out;
+    out.precision(9);
+    out << "float[](";
+    for (std::size_t i = 0; i < v.size(); ++i) out << (i ? ", " : "") << std::showpoint << v[i];
+    out << ")";
+    return out.str();
+}
+
+}  // namespace
+
+gl::Program load_bloom_blur(const RenderSettings& settings) {
+    const BloomKernel k = bloom_kernel(settings.bloom_taps, settings.bloom_sigma_px);
+    const auto dir = shaders_dir();
+    return gl::Program({{GL_VERTEX_SHADER, dir / "fullscreen.vert"}, {GL_FRAGMENT_SHADER, dir / "bloom_blur.frag"}},
+                       {"BLOOM_FETCHES " + std::to_string(k.weights.size()),
+                        "BLOOM_OFFSETS " + glsl_array(k.offsets), "BLOOM_WEIGHTS " + glsl_array(k.weights)});
+}
+
+Programs load_programs(const RenderSettings& settings) {
     const auto dir = shaders_dir();
     auto stage = [&](GLenum type, const char* file) { return gl::StageFile{type, dir / file}; };
     Programs p;
@@ -18,8 +42,7 @@ Programs load_programs() {
                          stage(GL_FRAGMENT_SHADER, "hud.frag")});
     p.bloom_down = gl::Program({stage(GL_VERTEX_SHADER, "fullscreen.vert"),
                                 stage(GL_FRAGMENT_SHADER, "bloom_down.frag")});
-    p.bloom_blur = gl::Program({stage(GL_VERTEX_SHADER, "fullscreen.vert"),
-                                stage(GL_FRAGMENT_SHADER, "bloom_blur.frag")});
+    p.bloom_blur = load_bloom_blur(settings);
     p.composite = gl::Program({stage(GL_VERTEX_SHADER, "fullscreen.vert"),
                                stage(GL_FRAGMENT_SHADER, "composite.frag")});
     return p;

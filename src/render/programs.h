@@ -3,6 +3,7 @@
 #include <string>
 
 #include "gl/program.h"
+#include "render/settings.h"
 
 namespace bz::render {
 
@@ -16,7 +17,9 @@ struct Programs {
     gl::Program composite;
 };
 
-// Throws UserError naming file:line:col of every compile error.
-Programs load_programs();
+// Throws UserError naming file:line:col of every compile error. The bloom kernel is baked
+// into its program as constants, so it depends on the settings.
+Programs load_programs(const RenderSettings& settings);
+gl::Program load_bloom_blur(const RenderSettings& settings);
 
 }  // namespace bz::render

@@ -12,7 +12,7 @@ struct Renderer::Impl {
     int width;
     int height;
     gl::PassTimer timer;
-    Programs programs = load_programs();
+    Programs programs;
     Targets targets;
     gl::Buffer instances;
     MeshCache gpu_meshes{instances};
@@ -25,6 +25,7 @@ struct Renderer::Impl {
 
     Impl(const RenderSettings& s, int w, int h, gl::TimingMethod timing)
         : settings(s), width(std::max(w, 1)), height(std::max(h, 1)), timer(timing) {
+        programs = load_programs(settings);
         targets = make_targets(width, height, settings);
         hud_vao.bind_buffer(0, hud_vertices, sizeof(float) * 5);
         hud_vao.float_attribute(0, 0, 2, 0);
@@ -73,6 +74,9 @@ void Renderer::resize(int width, int height) {
 void Renderer::set_settings(const RenderSettings& settings) {
     const bool remake = settings.depth != impl_->settings.depth ||
                         settings.bloom_resolution != impl_->settings.bloom_resolution;
+    const bool new_kernel = settings.bloom_taps != impl_->settings.bloom_taps ||
+                            settings.bloom_sigma_px != impl_->settings.bloom_sigma_px;
+    if (new_kernel) impl_->programs.bloom_blur = load_bloom_blur(settings);
     impl_->settings = settings;
     if (remake) impl_->targets = make_targets(impl_->width, impl_->height, settings);
 }
@@ -164,7 +168,7 @@ std::vector<std::uint8_t> Renderer::read_color() {
 
 bool Renderer::reload_shaders(std::string* error) {
     try {
-        impl_->programs = load_programs();
+        impl_->programs = load_programs(impl_->settings);
         return true;
     } catch (const UserError& e) {
         if (error) *error = e.what();
