@@ -79,10 +79,15 @@ void read_player(const toml::table& root, Level& level, Diagnostics& diag) {
 }
 
 void read_enemies(const toml::table& root, Level& level, Diagnostics& diag) {
+    EnemyRules& e = level.enemies;
+    const double half = level.field_size / 2.0;
+    // The default spawn ring suits the default field; a small field pulls it in rather than
+    // making every small level spell out spawn distances.
+    e.spawn_max_distance = std::min(e.spawn_max_distance, half);
+    e.spawn_min_distance = std::min(e.spawn_min_distance, e.spawn_max_distance);
     const toml::table* t = section(root, "enemies", diag);
     if (!t) return;
     TableReader r(*t, "[enemies]", kEnemyKeys, diag);
-    EnemyRules& e = level.enemies;
     if (const toml::node* node = r.get("types")) {
         if (const auto* list = node->as_array()) {
             e.slow_tank = e.super_tank = e.missile = e.saucer = false;
@@ -120,17 +125,15 @@ void read_enemies(const toml::table& root, Level& level, Diagnostics& diag) {
     }
     if (auto v = r.integer("super_tank_score", 0, kMaxScore)) e.super_tank_score = static_cast<int>(*v);
     if (auto v = r.integer("missile_score", 0, kMaxScore)) e.missile_score = static_cast<int>(*v);
-    const double half = level.field_size / 2.0;
     const auto min_d = r.number("spawn_min_distance", {5.0, half});
     const auto max_d = r.number("spawn_max_distance", {5.0, half});
     if (min_d) e.spawn_min_distance = *min_d;
     if (max_d) e.spawn_max_distance = *max_d;
-    // The defaults suit the default field; a small field pulls them in rather than failing.
-    if (!max_d) e.spawn_max_distance = std::min(e.spawn_max_distance, half);
-    if (!min_d) e.spawn_min_distance = std::min(e.spawn_min_distance, e.spawn_max_distance);
-    if ((min_d || max_d) && e.spawn_min_distance > e.spawn_max_distance) {
-        const toml::node* at = max_d ? r.get("spawn_max_distance") : r.get("spawn_min_distance");
-        diag.error(at->source(), "spawn_min_distance (" + number_text(e.spawn_min_distance) +
+    // A default never contradicts a value the author wrote: it moves out of the way.
+    if (min_d && !max_d) e.spawn_max_distance = std::max(e.spawn_max_distance, *min_d);
+    if (max_d && !min_d) e.spawn_min_distance = std::min(e.spawn_min_distance, *max_d);
+    if (min_d && max_d && *min_d > *max_d) {
+        diag.error(r.get("spawn_max_distance")->source(), "spawn_min_distance (" + number_text(e.spawn_min_distance) +
                                      ") must not be larger than spawn_max_distance (" +
                                      number_text(e.spawn_max_distance) + ")");
     }

@@ -1,5 +1,6 @@
 #include "level/syntax.h"
 
+#include <algorithm>
 #include <cstdio>
 
 #include "level/toml_scan.h"
@@ -52,27 +53,42 @@ SourcePos position_of_offset(std::string_view text, std::size_t offset, const st
     return pos;
 }
 
-// Blanks the statement starting on `line` (and the lines of a value it opens) with spaces so
-// every later line and column stays where it was. Returns the last line blanked, or 0 when
-// the error sits inside a value opened earlier: from there nothing can be trusted.
+// Offset of the line on which the statement holding `offset` began: the line itself, or an
+// earlier one when a multi-line value (array, inline table, string) is still open there.
+std::size_t statement_start(std::string_view text, std::size_t offset) {
+    ScanState state;
+    std::size_t statement = 0;
+    std::size_t pos = 0;
+    while (pos < offset) {
+        std::size_t end = text.find('\n', pos);
+        end = (end == std::string_view::npos || end >= offset) ? offset : end + 1;
+        const bool was_inside = state.inside_value();
+        if (!was_inside) statement = pos;
+        scan(text, pos, end, state);
+        pos = end;
+    }
+    return state.inside_value() ? statement : offset;
+}
+
+// Blanks the statement around the error on `line` (with every line of a multi-line value in
+// it) by spaces, so all later lines and columns stay where they were. Returns the last line
+// blanked, or 0 when there is nothing left to blank.
 int blank_statement(std::string& text, int line) {
-    const std::size_t start = line_start(text, line);
-    if (start == std::string::npos || start >= text.size()) return 0;
-    ScanState before;
-    scan(text, 0, start, before);
-    if (before.inside_value()) return 0;
+    const std::size_t error_line = line_start(text, line);
+    if (error_line == std::string::npos || error_line >= text.size()) return 0;
+    std::size_t pos = statement_start(text, error_line);
+    int current = line - static_cast<int>(std::count(text.begin() + static_cast<std::ptrdiff_t>(pos),
+                                                     text.begin() + static_cast<std::ptrdiff_t>(error_line), '\n'));
     ScanState own;
-    std::size_t pos = start;
-    int last = line - 1;
-    do {
+    for (;;) {
         std::size_t end = text.find('\n', pos);
         if (end == std::string::npos) end = text.size();
         scan(text, pos, end + 1, own);
         for (std::size_t i = pos; i < end; ++i) text[i] = ' ';
-        ++last;
         pos = end + 1;
-    } while (own.inside_value() && pos < text.size());
-    return last;
+        if ((current >= line && !own.inside_value()) || pos >= text.size()) return current;
+        ++current;
+    }
 }
 
 }  // namespace

@@ -1,0 +1,77 @@
+#pragma once
+// Helpers for feeding level text to the loader in tests: a scratch folder per test that acts
+// as both the level's folder and the data/ root, so model-path rules can be exercised.
+// Header-only: tests/CMakeLists.txt compiles only *_test.cpp files.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <string_view>
+
+#include "level/loader.h"
+
+namespace bz::level::test {
+
+class ScratchDir {
+public:
+    ScratchDir() {
+        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+        std::string name = "bz_level_";
+        if (info) name += std::string(info->test_suite_name()) + "_" + info->name();
+        name += "_" + std::to_string(::getpid());
+        path_ = std::filesystem::temp_directory_path() / name;
+        std::filesystem::remove_all(path_);
+        std::filesystem::create_directories(path_);
+        path_ = std::filesystem::canonical(path_);
+    }
+    ~ScratchDir() {
+        std::error_code ec;
+        std::filesystem::remove_all(path_, ec);
+    }
+    ScratchDir(const ScratchDir&) = delete;
+    ScratchDir& operator=(const ScratchDir&) = delete;
+
+    const std::filesystem::path& path() const { return path_; }
+
+    // Writes `text` to `relative` under the folder (creating folders) and returns its path.
+    std::filesystem::path write(const std::string& relative, std::string_view text) const {
+        const std::filesystem::path p = path_ / relative;
+        std::filesystem::create_directories(p.parent_path());
+        std::ofstream out(p, std::ios::binary | std::ios::trunc);
+        out.write(text.data(), static_cast<std::streamsize>(text.size()));
+        return p;
+    }
+
+private:
+    std::filesystem::path path_;
+};
+
+// The smallest valid level (two lines) with `body` appended.
+inline std::string level_text(std::string_view body) {
+    return "version = 1\nname = \"Test level\"\n" + std::string(body);
+}
+
+// Checks that `result` holds exactly one error, at line:column, whose message contains
+// `fragment`, and no level.
+inline ::testing::AssertionResult has_one_error(const LoadResult& result, int line, int column,
+                                                std::string_view fragment) {
+    std::string all;
+    for (const auto& e : result.errors) all += "\n  " + format(e);
+    if (result.errors.size() != 1) {
+        return ::testing::AssertionFailure() << "expected 1 error, got " << result.errors.size() << all;
+    }
+    const Diagnostic& d = result.errors.front();
+    if (d.pos.line != line || d.pos.column != column) {
+        return ::testing::AssertionFailure() << "expected the error at " << line << ":" << column << all;
+    }
+    if (d.message.find(fragment) == std::string::npos) {
+        return ::testing::AssertionFailure() << "expected the message to contain '" << fragment
+                                             << "'" << all;
+    }
+    if (result.level) return ::testing::AssertionFailure() << "a level came back despite the error";
+    return ::testing::AssertionSuccess();
+}
+
+}  // namespace bz::level::test

@@ -1,0 +1,111 @@
+// Syntax errors: exact positions, and every one of them rather than only the first.
+#include <gtest/gtest.h>
+
+#include "level/loader.h"
+#include "level_test_util.h"
+
+namespace bz::level {
+namespace {
+
+using test::has_one_error;
+using test::level_text;
+
+LoadResult load(std::string_view text) {
+    LoadOptions options;
+    options.data_root = "/nonexistent-data";
+    return load_level_string(text, "levels/test.toml", options);
+}
+
+TEST(LoaderSyntax, MissingValue) {
+    const auto r = load(level_text("[field]\nsize =\n"));
+    EXPECT_TRUE(has_one_error(r, 4, 7, "syntax error"));
+}
+
+TEST(LoaderSyntax, UnterminatedString) {
+    //                           1234567890
+    const auto r = load("version = 1\nname = \"abc\n");
+    EXPECT_TRUE(has_one_error(r, 2, 12, "syntax error in string"));
+}
+
+TEST(LoaderSyntax, DuplicateKey) {
+    const auto r = load(level_text("[field]\nsize = 100\nsize = 200\n"));
+    ASSERT_EQ(r.errors.size(), 1u);
+    EXPECT_EQ(r.errors[0].pos.line, 5);
+    EXPECT_NE(r.errors[0].message.find("redefine"), std::string::npos) << r.errors[0].message;
+}
+
+TEST(LoaderSyntax, InvalidUtf8) {
+    const auto r = load(level_text("author = \"\xff\"\n"));
+    ASSERT_EQ(r.errors.size(), 1u);
+    EXPECT_EQ(r.errors[0].pos.line, 3);
+    EXPECT_NE(r.errors[0].message.find("utf-8"), std::string::npos) << r.errors[0].message;
+}
+
+TEST(LoaderSyntax, ReportsEverySyntaxErrorNotJustTheFirst) {
+    const auto r = load(level_text("[field]\n"
+                                   "size = 40O\n"     // line 4: stray letter
+                                   "wrap = tru\n"     // line 5: bad boolean
+                                   "[player]\n"
+                                   "heading = = 3\n"  // line 7
+                                   "[render]\n"
+                                   "style = \"arcade\"\n"));
+    ASSERT_EQ(r.errors.size(), 3u);
+    EXPECT_EQ(r.errors[0].pos.line, 4);
+    EXPECT_EQ(r.errors[0].pos.column, 10);
+    EXPECT_EQ(r.errors[1].pos.line, 5);
+    EXPECT_EQ(r.errors[2].pos.line, 7);
+    EXPECT_EQ(r.errors[2].pos.column, 11);
+    EXPECT_FALSE(r.level);
+}
+
+TEST(LoaderSyntax, ErrorInsideMultiLineArraySkipsTheWholeValue) {
+    const auto r = load(level_text("[backdrop]\n"
+                                   "mountains = [\n"
+                                   "  [0, 1],\n"
+                                   "  [10, 2] x,\n"  // line 6: error inside the array
+                                   "  [20, 1],\n"
+                                   "]\n"
+                                   "moon = maybe\n"));  // line 9: a second, separate error
+    ASSERT_EQ(r.errors.size(), 2u) << format(r.errors[0]);
+    EXPECT_EQ(r.errors[0].pos.line, 6);
+    EXPECT_EQ(r.errors[0].pos.column, 11);
+    EXPECT_EQ(r.errors[1].pos.line, 9);
+    EXPECT_EQ(r.errors[1].pos.column, 8);
+}
+
+TEST(LoaderSyntax, UnclosedArrayDoesNotCascade) {
+    // The missing ']' swallows the rest of the file; one error, not one per following line.
+    const auto r = load(level_text("[backdrop]\nmountains = [[0, 1], [10, 2]\nmoon = true\n"
+                                   "[render]\nstyle = \"arcade\"\npreset = \"high\"\n"));
+    ASSERT_EQ(r.errors.size(), 1u) << format(r.errors[0]);
+    EXPECT_EQ(r.errors[0].pos.line, 5);
+}
+
+TEST(LoaderSyntax, DeeplyDottedKeyIsRefusedBeforeParsing) {
+    std::string key = "a";
+    for (int i = 0; i < 100000; ++i) key += ".a";
+    const auto r = load(level_text("  " + key + " = 1\n"));
+    EXPECT_TRUE(has_one_error(r, 3, 3, "nested more than"));
+}
+
+TEST(LoaderSyntax, DeeplyNestedArrayIsAnErrorNotACrash) {
+    const auto r = load(level_text("x = " + std::string(5000, '[') + "\n"));
+    ASSERT_EQ(r.errors.size(), 1u);
+    EXPECT_EQ(r.errors[0].pos.line, 3);
+}
+
+TEST(LoaderSyntax, MessagesStayOnOneLine) {
+    const auto r = load(level_text("x = \"a\x01b\"\n"));
+    ASSERT_FALSE(r.errors.empty());
+    for (const auto& e : r.errors) EXPECT_EQ(format(e).find('\n'), std::string::npos) << format(e);
+}
+
+TEST(LoaderSyntax, FormatIsFileLineColumn) {
+    const auto r = load(level_text("[field]\nsize =\n"));
+    ASSERT_EQ(r.errors.size(), 1u);
+    EXPECT_EQ(format(r.errors[0]).rfind("levels/test.toml:4:7: error: syntax error", 0), 0u)
+        << format(r.errors[0]);
+}
+
+}  // namespace
+}  // namespace bz::level
