@@ -20,5 +20,7 @@ int dispatch(int argc, char** argv);
 
 int cmd_render(Args args);
 int cmd_check(Args args);
+int cmd_replay(Args args);
+int cmd_play(Args args);
 
 }  // namespace bz::app

@@ -11,8 +11,10 @@ namespace bz::app {
 namespace {
 
 constexpr Command kCommands[] = {
+    {"play", "play the game in a window (F11 fullscreen, F12 screenshot, --help for keys)", cmd_play},
     {"render", "render a model file headless to PNG (and a line mask)", cmd_render},
     {"check", "validate level files (file:line:col errors), no window needed", cmd_check},
+    {"replay", "inspect a replay file, or --verify it headless against its state hashes", cmd_replay},
 };
 
 void print_usage(std::FILE* out) {

@@ -97,7 +97,7 @@ bool display_available(std::string* why) {
         return false;
     }
     if (!SDL_getenv("DISPLAY") && !SDL_getenv("WAYLAND_DISPLAY")) {
-        if (why) *why = "no display (neither DISPLAY nor WAYLAND_DISPLAY is set)";
+        if (why) *why = "neither DISPLAY nor WAYLAND_DISPLAY is set";
         return false;
     }
     return true;

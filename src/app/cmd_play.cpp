@@ -1,0 +1,184 @@
+// `beamzone play`: the game in a window. Setup lives here; the frame loop is in play_loop.cpp
+// and what is simulated and drawn in play_sessions.cpp.
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <memory>
+#include <string>
+
+#include "app/cli_args.h"
+#include "app/commands.h"
+#include "app/play_loop.h"
+#include "app/play_options.h"
+#include "app/play_sessions.h"
+#include "core/error.h"
+#include "core/log.h"
+#include "core/paths.h"
+#include "level/loader.h"
+#include "platform/pref_paths.h"
+#include "render/settings.h"
+
+namespace bz::app {
+
+namespace {
+
+bool offscreen_allowed(const PlayOptions& o) {
+    const char* env = std::getenv("BEAMZONE_ALLOW_OFFSCREEN");
+    return o.headless_test || (env && std::strcmp(env, "1") == 0);
+}
+
+// The level's optional look overrides on top of the chosen preset.
+render::RenderSettings render_settings(const std::string& preset, const level::Level* lvl) {
+    render::RenderSettings r = render::preset(preset);
+    if (!lvl) return r;
+    if (lvl->render.line_width_px) r.line_half_width_px = static_cast<float>(*lvl->render.line_width_px * 0.5);
+    if (lvl->render.crease_angle_deg) r.crease_angle_deg = static_cast<float>(*lvl->render.crease_angle_deg);
+    if (lvl->render.bloom_strength) r.bloom_strength = static_cast<float>(*lvl->render.bloom_strength);
+    return r;
+}
+
+struct Play {
+    const PlayOptions& options;
+    const platform::PrefPaths& paths;
+    Log& log;
+
+    int run() {
+        log.info("settings: " + paths.settings.string());
+        log.info("high scores: " + paths.high_scores.string());
+        log.info("log: " + paths.log.string());
+
+        platform::SettingsLoad loaded = platform::load_settings(paths.settings, render::preset_names());
+        for (const auto& e : loaded.errors) log.warn(e);
+        platform::Settings& settings = loaded.settings;
+        if (!loaded.file_existed) save(settings);  // a commented file to edit, on first start
+        if (options.preset) settings.preset = *options.preset;
+        if (options.style) settings.style = *options.style;
+        if (options.vsync) settings.vsync = *options.vsync;
+        const bool fullscreen = options.fullscreen.value_or(settings.fullscreen);
+
+        // The level before the window, so a broken level file fails fast and plainly.
+        std::unique_ptr<level::LevelWatcher> watcher;
+        const std::filesystem::path level_path =
+            options.level.empty() ? level::default_level_path() : std::filesystem::path(options.level);
+        std::error_code ec;
+        if (!options.level.empty() || std::filesystem::exists(level_path, ec)) {
+            watcher = std::make_unique<level::LevelWatcher>(level_path);
+            if (!watcher->current()) {
+                for (const auto& line : format_diagnostics(watcher->errors())) {
+                    std::fprintf(stderr, "%s\n", line.c_str());
+                }
+                log.error("cannot play " + level_path.string() + ": it has errors (beamzone check " +
+                          level_path.string() + " lists them)");
+                return 1;
+            }
+            log.info("level: " + level_path.string() + " (edits reload while playing)");
+        } else {
+            log.info("no " + level_path.string() + "; playing the built-in level");
+        }
+        const level::Level* lvl = watcher ? &*watcher->current() : nullptr;
+
+        platform::ContextOptions co;
+        // A test run (offscreen allowed) uses a hidden window; players get a real one.
+        co.mode = offscreen_allowed(options) ? platform::WindowMode::hidden
+                  : fullscreen               ? platform::WindowMode::fullscreen_desktop
+                                             : platform::WindowMode::windowed;
+        co.title = "beamzone";
+        // Synchronous GL debug output costs time; test runs want it, players do not.
+        co.debug = options.frames > 0 || std::getenv("BEAMZONE_GL_DEBUG") != nullptr;
+        platform::GlContext context(co);
+        log.info("OpenGL renderer: " + context.renderer_name());
+        const platform::Vsync vsync = context.set_vsync(settings.vsync);
+        if (vsync != settings.vsync) {
+            log.info("vsync " + std::string(platform::vsync_name(settings.vsync)) + " is not available; using " +
+                     std::string(platform::vsync_name(vsync)));
+        }
+
+        int w = 0, h = 0;
+        context.drawable_size(w, h);
+        render::Renderer renderer(render_settings(settings.preset, lvl), std::max(w, 1), std::max(h, 1),
+                                  gl::TimingMethod::off);
+
+        platform::Audio audio(log, settings.volume, settings.mute);
+        platform::Gamepads gamepads(log, data_dir() / "gamecontrollerdb" / "gamecontrollerdb.txt",
+                                    paths.gamepad_db);
+        platform::Input input(settings.keys, settings.gamepad);
+        const scene::VectorFont font = scene::VectorFont::load_default();
+        PlayOverlay overlay(font);
+
+        SessionOptions so;
+        so.level = lvl;
+        so.seed = options.seed;
+        so.record = options.record;
+        so.replay = options.replay;
+        so.high_scores = paths.high_scores;
+        std::unique_ptr<PlaySession> session = options.edit ? make_edit_session(so, log) : make_game_session(so, log);
+
+        LoopConfig config;
+        config.frames = options.frames;
+        config.screenshot_at = options.screenshot_at;
+        config.edit = options.edit;
+        config.style = settings.style == "arcade" ? scene::LineStyle::arcade : scene::LineStyle::occluded;
+        config.screenshots = paths.screenshots;
+        LoopParts parts{context, renderer, audio, input, gamepads, watcher.get(), overlay, log, settings};
+        const LoopResult result = run_play_loop(*session, parts, config);
+        session.reset();  // flushes a recording before we report
+
+        if (result.settings_changed) {
+            if (loaded.may_save()) {
+                save(settings);
+            } else {
+                log.warn("not saving settings: " + paths.settings.string() + " has errors to fix first");
+            }
+        }
+        if (options.frames > 0) {
+            std::printf("play: %d frames, %d ticks, %d GL errors\n", result.frames, result.ticks, result.gl_errors);
+        }
+        return result.gl_errors > 0 ? 1 : 0;
+    }
+
+    void save(const platform::Settings& s) {
+        try {
+            platform::save_settings(paths.settings, s);
+        } catch (const UserError& e) {
+            log.warn(std::string("cannot save settings: ") + e.what());
+        }
+    }
+};
+
+}  // namespace
+
+int cmd_play(Args args) {
+    PlayOptions options;
+    try {
+        options = parse_play_options(static_cast<int>(args.size()), args.data());
+    } catch (const UsageError& e) {
+        std::fprintf(stderr, "beamzone play: %s\n", e.what());
+        return 2;
+    }
+    const platform::PrefPaths paths = platform::pref_paths();
+    if (options.help) {
+        std::fputs(play_usage(paths.settings.string(), paths.high_scores.string()).c_str(), stdout);
+        return 0;
+    }
+
+    std::string why;
+    if (!platform::display_available(&why)) {
+        if (!offscreen_allowed(options)) {
+            std::fprintf(stderr,
+                         "beamzone: no display available (%s); try `beamzone render` for headless images\n",
+                         why.c_str());
+            return 1;
+        }
+        setenv("SDL_VIDEODRIVER", "offscreen", 0);  // a test run: a hidden window is enough
+    }
+
+    Log log(paths.log);
+    try {
+        return Play{options, paths, log}.run();
+    } catch (const std::exception& e) {
+        log.error(std::string(e.what()) + " (log: " + paths.log.string() + ")");
+        return 1;
+    }
+}
+
+}  // namespace bz::app

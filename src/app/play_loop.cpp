@@ -1,0 +1,279 @@
+#include "app/play_loop.h"
+
+#include <SDL.h>
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+#include "game/fixed_step.h"
+#include "platform/screenshot.h"
+
+namespace bz::app {
+
+namespace {
+
+// How often the level files are checked for edits (a stat per file: cheap, but not free).
+constexpr double kReloadPollSeconds = 0.25;
+constexpr float kVolumeStep = 0.1f;
+
+class Loop {
+public:
+    Loop(PlaySession& session, LoopParts& parts, const LoopConfig& config)
+        : session_(session), p_(parts), config_(config) {}
+
+    LoopResult run() {
+        if (p_.watcher) last_generation_ = p_.watcher->generation();
+        std::uint64_t last_counter = SDL_GetPerformanceCounter();
+        const double counter_hz = static_cast<double>(SDL_GetPerformanceFrequency());
+        while (running_) {
+            const std::uint64_t now = SDL_GetPerformanceCounter();
+            double dt = static_cast<double>(now - last_counter) / counter_hz;
+            last_counter = now;
+            // A test run steps exactly one tick per frame, so it does the same work on any machine.
+            if (config_.frames > 0) dt = game::FixedStep::kTickSeconds;
+
+            pump_events();
+            for (const platform::Action a : p_.input.take_pressed()) on_action(a);
+            poll_reload(dt);
+            simulate(dt);
+            p_.overlay.advance(dt);
+            if (!minimized_ || config_.frames > 0) {
+                draw();
+            } else {
+                SDL_Delay(20);  // nothing to show: do not spin
+            }
+            ++result_.frames;
+            if (config_.frames > 0 && result_.frames >= config_.frames) running_ = false;
+            if (session_.finished()) running_ = false;
+        }
+        p_.audio.set_engine(false, 0.0f);
+        return result_;
+    }
+
+private:
+    void pump_events() {
+        SDL_Event e;
+        while (SDL_PollEvent(&e)) {
+            p_.gamepads.handle_event(e);
+            p_.input.handle_event(e);
+            switch (e.type) {
+                case SDL_QUIT: running_ = false; break;
+                case SDL_WINDOWEVENT:
+                    if (e.window.event == SDL_WINDOWEVENT_FOCUS_LOST && p_.settings.pause_on_focus_loss &&
+                        !config_.edit) {
+                        set_paused(true);
+                    }
+                    if (e.window.event == SDL_WINDOWEVENT_MINIMIZED) minimized_ = true;
+                    if (e.window.event == SDL_WINDOWEVENT_RESTORED ||
+                        e.window.event == SDL_WINDOWEVENT_SHOWN) {
+                        minimized_ = false;
+                    }
+                    break;
+                case SDL_MOUSEBUTTONDOWN:
+                    if (config_.edit && e.button.button == SDL_BUTTON_RIGHT) SDL_SetRelativeMouseMode(SDL_TRUE);
+                    break;
+                case SDL_MOUSEBUTTONUP:
+                    if (config_.edit && e.button.button == SDL_BUTTON_RIGHT) SDL_SetRelativeMouseMode(SDL_FALSE);
+                    break;
+                case SDL_MOUSEMOTION:
+                    if (config_.edit && (e.motion.state & SDL_BUTTON_RMASK)) {
+                        mouse_dx_ += static_cast<float>(e.motion.xrel);
+                        mouse_dy_ += static_cast<float>(e.motion.yrel);
+                    }
+                    break;
+                default: break;
+            }
+        }
+    }
+
+    void set_paused(bool p) {
+        paused_ = p;
+        p_.overlay.set_paused(p);
+        step_.reset();  // no burst of catch-up ticks after a pause
+    }
+
+    void on_action(platform::Action a) {
+        using platform::Action;
+        switch (a) {
+            case Action::pause:
+                if (!config_.edit) set_paused(!paused_);
+                break;
+            case Action::fullscreen: {
+                p_.context.set_fullscreen(!p_.context.fullscreen());
+                p_.settings.fullscreen = p_.context.fullscreen();
+                result_.settings_changed = true;
+                break;
+            }
+            case Action::screenshot: screenshot_requested_ = true; break;
+            case Action::reload_shaders: reload_shaders(); break;
+            case Action::mute: {
+                p_.settings.mute = !p_.settings.mute;
+                p_.audio.set_mute(p_.settings.mute);
+                p_.overlay.notify(p_.settings.mute ? "sound off" : "sound on");
+                result_.settings_changed = true;
+                break;
+            }
+            case Action::volume_up:
+            case Action::volume_down: {
+                const float step = a == Action::volume_up ? kVolumeStep : -kVolumeStep;
+                // Snap to whole steps so repeated presses land on 0% and 100% exactly.
+                const float v = std::round((p_.settings.volume + step) / kVolumeStep) * kVolumeStep;
+                p_.settings.volume = std::clamp(v, 0.0f, 1.0f);
+                p_.audio.set_volume(p_.settings.volume);
+                p_.overlay.notify("volume " + std::to_string(static_cast<int>(std::lround(p_.settings.volume * 100))) +
+                                  "%" + (p_.settings.mute ? " (muted: M)" : ""));
+                result_.settings_changed = true;
+                break;
+            }
+            case Action::quit: running_ = false; break;
+            default: break;
+        }
+    }
+
+    void reload_shaders() {
+        std::string error;
+        if (p_.renderer.reload_shaders(&error)) {
+            shader_errors_.clear();
+            p_.log.info("shaders reloaded");
+            p_.overlay.notify("shaders reloaded");
+        } else {
+            p_.log.warn("shader reload failed, keeping the old shaders: " + error);
+            shader_errors_ = {error};
+        }
+        show_errors();
+    }
+
+    void poll_reload(double dt) {
+        if (!p_.watcher) return;
+        since_poll_ += dt;
+        if (since_poll_ < kReloadPollSeconds) return;
+        since_poll_ = 0.0;
+        if (!p_.watcher->poll()) return;
+        level_errors_ = format_diagnostics(p_.watcher->errors());
+        for (const auto& line : level_errors_) p_.log.warn(line);
+        if (p_.watcher->generation() != last_generation_ && p_.watcher->current()) {
+            last_generation_ = p_.watcher->generation();
+            try {
+                session_.level_changed(*p_.watcher->current());
+                p_.log.info("level reloaded: " + p_.watcher->file().string());
+                p_.overlay.notify("level reloaded");
+            } catch (const std::exception& e) {
+                // The level validated but the game could not build it (say, a model that will
+                // not import): treat it like a level error and keep the running world.
+                level_errors_.push_back(e.what());
+                p_.log.warn(e.what());
+            }
+        }
+        show_errors();
+    }
+
+    void show_errors() {
+        std::vector<std::string> all = level_errors_;
+        all.insert(all.end(), shader_errors_.begin(), shader_errors_.end());
+        p_.overlay.set_errors(std::move(all));
+    }
+
+    platform::FlyControls fly_controls() {
+        platform::FlyControls c;
+        if (!config_.edit) return c;
+        auto key = [this](SDL_Scancode s) { return p_.input.key_held(s) ? 1.0f : 0.0f; };
+        c.forward = key(SDL_SCANCODE_W) - key(SDL_SCANCODE_S);
+        c.right = key(SDL_SCANCODE_D) - key(SDL_SCANCODE_A);
+        c.up = key(SDL_SCANCODE_R) + key(SDL_SCANCODE_E) - key(SDL_SCANCODE_F) - key(SDL_SCANCODE_Q);
+        c.yaw = key(SDL_SCANCODE_LEFT) - key(SDL_SCANCODE_RIGHT);
+        c.pitch = key(SDL_SCANCODE_UP) - key(SDL_SCANCODE_DOWN);
+        c.fast = p_.input.key_held(SDL_SCANCODE_LSHIFT) || p_.input.key_held(SDL_SCANCODE_RSHIFT);
+        c.mouse_dx = std::exchange(mouse_dx_, 0.0f);
+        c.mouse_dy = std::exchange(mouse_dy_, 0.0f);
+        return c;
+    }
+
+    void simulate(double dt) {
+        session_.update(fly_controls(), dt);
+        if (paused_) {
+            p_.audio.set_engine(false, 0.0f);
+            session_.take_sounds();
+            return;
+        }
+        const game::StepPlan plan = step_.advance(dt);
+        const platform::InputState input = p_.input.state();
+        for (int i = 0; i < plan.ticks; ++i) session_.tick(input);
+        result_.ticks += plan.ticks;
+        alpha_ = plan.alpha;
+        const SessionSounds sounds = session_.take_sounds();
+        p_.audio.set_engine(sounds.engine_on, sounds.engine_speed);
+        for (const SoundCue& s : sounds.events) p_.audio.play(s.sound, s.gain);
+    }
+
+    void draw() {
+        int w = 0, h = 0;
+        p_.context.drawable_size(w, h);  // pixels, not window points: right on HiDPI screens
+        if (w > 0 && h > 0 && (w != p_.renderer.width() || h != p_.renderer.height())) {
+            p_.renderer.resize(w, h);
+        }
+        const double aspect = static_cast<double>(p_.renderer.width()) / std::max(1, p_.renderer.height());
+        scene::FrameList frame = session_.frame(alpha_, aspect);
+        frame.style = config_.style;
+        p_.overlay.draw(frame.hud, aspect);
+        p_.renderer.render(frame, session_.meshes(), 0);
+        if (result_.frames + 1 == config_.screenshot_at) screenshot_requested_ = true;
+        if (screenshot_requested_) {
+            screenshot_requested_ = false;
+            take_screenshot();
+        }
+        collect_gl_messages();
+        p_.context.swap();
+    }
+
+    void take_screenshot() {
+        try {
+            const auto path = platform::save_screenshot(config_.screenshots, p_.renderer.width(),
+                                                        p_.renderer.height(), p_.renderer.read_color());
+            p_.log.info("screenshot saved: " + path.string());
+            p_.overlay.notify("screenshot " + path.filename().string());
+        } catch (const std::exception& e) {
+            p_.log.warn(std::string("screenshot failed: ") + e.what());
+            p_.overlay.notify("screenshot failed (see the log)");
+        }
+    }
+
+    void collect_gl_messages() {
+        auto& sink = p_.context.debug();
+        if (sink.messages().empty() && sink.error_count() == 0) return;
+        for (const auto& m : sink.messages()) p_.log.warn("GL: " + m);
+        result_.gl_errors += sink.error_count();
+        sink.clear();
+    }
+
+    PlaySession& session_;
+    LoopParts& p_;
+    const LoopConfig& config_;
+    game::FixedStep step_;
+    LoopResult result_;
+    bool running_ = true;
+    bool paused_ = false;
+    bool minimized_ = false;
+    bool screenshot_requested_ = false;
+    double alpha_ = 1.0;
+    double since_poll_ = 0.0;
+    std::uint64_t last_generation_ = 0;
+    float mouse_dx_ = 0.0f, mouse_dy_ = 0.0f;
+    std::vector<std::string> level_errors_;
+    std::vector<std::string> shader_errors_;
+};
+
+}  // namespace
+
+std::vector<std::string> format_diagnostics(const std::vector<level::Diagnostic>& errors) {
+    std::vector<std::string> lines;
+    lines.reserve(errors.size());
+    for (const auto& d : errors) lines.push_back(level::format(d));
+    return lines;
+}
+
+LoopResult run_play_loop(PlaySession& session, LoopParts& parts, const LoopConfig& config) {
+    return Loop(session, parts, config).run();
+}
+
+}  // namespace bz::app

@@ -1,0 +1,52 @@
+#pragma once
+// The interactive frame loop of `beamzone play`: events, fixed 60 Hz ticks with interpolated
+// drawing, hot reload, overlays, screenshots, sound and the window-level keys.
+#include <filesystem>
+#include <string>
+
+#include "app/play_overlay.h"
+#include "app/play_session.h"
+#include "core/log.h"
+#include "level/watcher.h"
+#include "platform/audio.h"
+#include "platform/gamepads.h"
+#include "platform/gl_context.h"
+#include "platform/input.h"
+#include "platform/settings.h"
+#include "render/renderer.h"
+
+namespace bz::app {
+
+struct LoopConfig {
+    int frames = 0;       // > 0: stop after this many frames, each exactly one tick long
+    int screenshot_at = 0;  // > 0: take a screenshot on this frame (1-based)
+    bool edit = false;    // free-fly camera controls instead of tank controls
+    scene::LineStyle style = scene::LineStyle::occluded;
+    std::filesystem::path screenshots;
+};
+
+struct LoopParts {
+    platform::GlContext& context;
+    render::Renderer& renderer;
+    platform::Audio& audio;
+    platform::Input& input;
+    platform::Gamepads& gamepads;
+    level::LevelWatcher* watcher;  // nullptr: the built-in level, nothing to watch
+    PlayOverlay& overlay;
+    Log& log;
+    platform::Settings& settings;  // volume, mute and fullscreen changes are written back here
+};
+
+struct LoopResult {
+    int frames = 0;
+    int ticks = 0;
+    int gl_errors = 0;
+    bool settings_changed = false;
+};
+
+LoopResult run_play_loop(PlaySession& session, LoopParts& parts, const LoopConfig& config);
+
+// Diagnostics as the overlay and the log show them.
+std::vector<std::string> format_diagnostics(const std::vector<level::Diagnostic>& errors);
+
+}  // namespace bz::app

@@ -1,0 +1,115 @@
+#include "app/play_options.h"
+
+#include <algorithm>
+#include <charconv>
+
+#include "app/cli_args.h"
+#include "platform/settings.h"
+#include "render/settings.h"
+
+namespace bz::app {
+
+namespace {
+
+std::uint64_t parse_seed(std::string_view option, std::string_view text) {
+    std::uint64_t v = 0;
+    const char* end = text.data() + text.size();
+    const auto r = std::from_chars(text.data(), end, v);
+    if (text.empty() || r.ec != std::errc{} || r.ptr != end) {
+        throw UsageError(std::string(option) + ": '" + std::string(text) +
+                         "' is not a whole number from 0 to 18446744073709551615");
+    }
+    return v;
+}
+
+}  // namespace
+
+PlayOptions parse_play_options(int argc, char* const* argv) {
+    PlayOptions o;
+    ArgCursor cur(argc, argv);
+    while (!cur.done()) {
+        const std::string_view a = cur.next();
+        if (a == "--help" || a == "-h") {
+            o.help = true;
+        } else if (a == "--edit") {
+            o.edit = true;
+        } else if (a == "--preset") {
+            const std::string p(cur.value(a));
+            const auto& names = render::preset_names();
+            if (std::find(names.begin(), names.end(), p) == names.end()) {
+                std::string list;
+                for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
+                throw UsageError("--preset: expected one of " + list + ", not '" + p + "'");
+            }
+            o.preset = p;
+        } else if (a == "--style") {
+            const std::string s(cur.value(a));
+            if (s != "occluded" && s != "arcade") {
+                throw UsageError("--style: expected occluded or arcade, not '" + s + "'");
+            }
+            o.style = s;
+        } else if (a == "--windowed") {
+            o.fullscreen = false;
+        } else if (a == "--fullscreen") {
+            o.fullscreen = true;
+        } else if (a == "--vsync") {
+            const std::string_view v = cur.value(a);
+            platform::Vsync mode{};
+            if (!platform::parse_vsync(v, &mode)) {
+                throw UsageError("--vsync: expected off, on or adaptive, not '" + std::string(v) + "'");
+            }
+            o.vsync = mode;
+        } else if (a == "--record") {
+            o.record = cur.value(a);
+        } else if (a == "--replay") {
+            o.replay = cur.value(a);
+        } else if (a == "--seed") {
+            o.seed = parse_seed(a, cur.value(a));
+        } else if (a == "--frames") {
+            o.frames = parse_int(a, cur.value(a), 1, 100000000);
+        } else if (a == "--screenshot-at") {
+            o.screenshot_at = parse_int(a, cur.value(a), 1, 100000000);
+        } else if (a == "--headless-test") {
+            o.headless_test = true;
+        } else if (!a.empty() && a[0] == '-') {
+            throw UsageError("unknown option " + std::string(a) + " (see beamzone play --help)");
+        } else if (o.level.empty()) {
+            o.level = a;
+        } else {
+            throw UsageError("more than one LEVEL given");
+        }
+    }
+    if (!o.record.empty() && !o.replay.empty()) {
+        throw UsageError("--record and --replay cannot be used together");
+    }
+    if (o.edit && (!o.record.empty() || !o.replay.empty())) {
+        throw UsageError("--edit views a level; it cannot --record or --replay");
+    }
+    return o;
+}
+
+std::string play_usage(const std::string& settings_path, const std::string& high_scores_path) {
+    return "usage: beamzone play [LEVEL] [--edit] [--preset fast|balanced|high]\n"
+           "                     [--style occluded|arcade] [--windowed|--fullscreen]\n"
+           "                     [--vsync off|on|adaptive] [--record FILE] [--replay FILE]\n"
+           "                     [--seed N] [--frames N] [--screenshot-at N] [--headless-test]\n"
+           "Plays LEVEL (default levels/classic.toml) in a window. Edits to the level file are\n"
+           "picked up while playing; errors show on screen and the last good level stays.\n"
+           "  --edit           fly around the level without gameplay (WASD, R/F up/down,\n"
+           "                   arrows or right mouse button to look, Shift faster)\n"
+           "  --record FILE    save this game's inputs so --replay FILE plays it back exactly\n"
+           "  --seed N         random seed of the game (default: from the clock)\n"
+           "  --frames N       run N frames, one 60 Hz tick each, then exit (for tests)\n"
+           "  --screenshot-at N  save a screenshot after frame N, as F12 does\n"
+           "  --headless-test  run in a hidden window, e.g. with SDL_VIDEODRIVER=offscreen\n"
+           "                   (BEAMZONE_ALLOW_OFFSCREEN=1 does the same)\n"
+           "Keys (change them in the settings file): treads Q/A and E/D, or drive with the\n"
+           "arrows (W/S too); fire Space or Ctrl; pause P or Esc; F11 or Alt+Enter fullscreen;\n"
+           "F12 screenshot; F5 reload shaders; M mute; +/- volume; F10 quit.\n"
+           "Game controllers: sticks drive the treads, triggers or A fire, Start pauses.\n"
+           "\n"
+           "settings:    " + settings_path + "\n"
+           "high scores: " + high_scores_path + "\n";
+}
+
+}  // namespace bz::app

@@ -1,0 +1,33 @@
+#pragma once
+// The command line of `beamzone play`.
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "platform/gl_context.h"
+
+namespace bz::app {
+
+struct PlayOptions {
+    std::string level;  // empty: levels/classic.toml, or the game's built-in level
+    bool edit = false;
+    std::optional<std::string> preset;
+    std::optional<std::string> style;  // "occluded" or "arcade"
+    std::optional<bool> fullscreen;    // --fullscreen / --windowed
+    std::optional<platform::Vsync> vsync;
+    std::string record;
+    std::string replay;
+    std::optional<std::uint64_t> seed;
+    int frames = 0;            // > 0: run this many frames (one tick each) and exit
+    int screenshot_at = 0;     // > 0: take a screenshot after this frame, as F12 would
+    bool headless_test = false;  // run in a hidden window under SDL's offscreen driver
+    bool help = false;
+};
+
+// Throws UsageError (app/cli_args.h) naming the bad option.
+PlayOptions parse_play_options(int argc, char* const* argv);
+
+// The --help text, with the user's settings and high-score files named.
+std::string play_usage(const std::string& settings_path, const std::string& high_scores_path);
+
+}  // namespace bz::app

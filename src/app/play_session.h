@@ -1,0 +1,44 @@
+#pragma once
+// What the play loop drives: the game itself, or the --edit viewer. The loop owns the window,
+// input, timing, audio, hot reload and overlays; a session owns what is simulated and drawn.
+#include <vector>
+
+#include "level/level.h"
+#include "platform/free_fly.h"
+#include "platform/input.h"
+#include "platform/synth.h"
+#include "scene/frame_list.h"
+#include "scene/mesh_library.h"
+
+namespace bz::app {
+
+struct SoundCue {
+    platform::Sound sound = platform::Sound::radar_blip;
+    float gain = 1.0f;
+};
+
+struct SessionSounds {
+    bool engine_on = false;
+    float engine_speed = 0.0f;
+    std::vector<SoundCue> events;
+};
+
+class PlaySession {
+public:
+    virtual ~PlaySession() = default;
+    // One fixed 60 Hz step.
+    virtual void tick(const platform::InputState& input) = 0;
+    // Once per frame with the real frame time (the free-fly camera moves per frame).
+    virtual void update(const platform::FlyControls& fly, double dt) = 0;
+    // alpha: 0..1 between the previous and the current tick; aspect: width / height.
+    virtual scene::FrameList frame(double alpha, double aspect) = 0;
+    virtual const scene::MeshLibrary& meshes() const = 0;
+    // Sounds of the ticks since the last call.
+    virtual SessionSounds take_sounds() = 0;
+    // A hot reload produced a new good level: rebuild, keeping the player where they are.
+    virtual void level_changed(const level::Level& level) = 0;
+    // True when the session has nothing more to show (a replay reached its end).
+    virtual bool finished() const { return false; }
+};
+
+}  // namespace bz::app

@@ -1,0 +1,32 @@
+#pragma once
+// The two things `beamzone play` can run: the game, and the --edit level viewer.
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "app/play_session.h"
+#include "game/events.h"
+
+namespace bz {
+class Log;
+}
+
+namespace bz::app {
+
+struct SessionOptions {
+    const level::Level* level = nullptr;  // nullptr: the game's built-in level
+    std::optional<std::uint64_t> seed;    // none: from the clock
+    std::string record;                   // replay file to write, or empty
+    std::string replay;                   // replay file to play back, or empty
+    std::filesystem::path high_scores;
+};
+
+std::unique_ptr<PlaySession> make_game_session(const SessionOptions& options, Log& log);
+std::unique_ptr<PlaySession> make_edit_session(const SessionOptions& options, Log& log);
+
+// How each game event sounds: which synth voice, how loud.
+SoundCue sound_cue(game::SoundEvent e);
+
+}  // namespace bz::app
