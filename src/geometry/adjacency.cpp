@@ -1,6 +1,7 @@
 #include "geometry/adjacency.h"
 
 #include <algorithm>
+#include <memory>
 #include <stdexcept>
 #include <string>
 
@@ -39,8 +40,10 @@ void check_input(std::span<const std::uint32_t> tri, std::size_t vertex_count) {
 
 // Counting sort of all half-edges by lower vertex. On return ends[v] is one past the last entry
 // of vertex v's bucket, which starts at ends[v - 1] (or 0).
-std::vector<EdgeEntry> bucket_edges(std::span<const std::uint32_t> tri,
-                                    std::vector<std::uint32_t>& ends) {
+// Scratch that every slot of is written before it is read: left uninitialised.
+using EdgeEntries = std::unique_ptr<EdgeEntry[]>;
+
+EdgeEntries bucket_edges(std::span<const std::uint32_t> tri, std::vector<std::uint32_t>& ends) {
     for (std::size_t h = 0; h < tri.size(); h += 3) {
         const std::uint32_t a = tri[h], b = tri[h + 1], c = tri[h + 2];
         ++ends[std::min(a, b)];
@@ -53,7 +56,7 @@ std::vector<EdgeEntry> bucket_edges(std::span<const std::uint32_t> tri,
         e = sum;
         sum += n;
     }
-    std::vector<EdgeEntry> entries(tri.size());
+    EdgeEntries entries(new EdgeEntry[tri.size()]);
     auto file = [&](std::uint32_t from, std::uint32_t to, std::size_t h) {
         const bool rev = from > to;
         const std::uint32_t lo = rev ? to : from, hi = rev ? from : to;
@@ -140,19 +143,19 @@ Adjacency build_adjacency(std::span<const std::uint32_t> triangles, std::size_t 
     Adjacency out;
     // Every edge starts as a boundary with a degenerate neighbour (a_i == v_i); grouping
     // overwrites the ones that have neighbours.
-    out.adjacency.resize(triangles.size() * 2);
-    for (std::size_t h = 0; h < triangles.size(); ++h) {
-        out.adjacency[2 * h] = triangles[h];
-        out.adjacency[2 * h + 1] = triangles[h];
+    out.adjacency.reserve(triangles.size() * 2);
+    for (const std::uint32_t v : triangles) {
+        out.adjacency.push_back(v);
+        out.adjacency.push_back(v);
     }
     out.edge_kinds.assign(triangles.size(), EdgeKind::boundary);
 
     std::vector<std::uint32_t> ends(vertex_count, 0);
-    std::vector<EdgeEntry> entries = bucket_edges(triangles, ends);
+    const EdgeEntries entries = bucket_edges(triangles, ends);
     Classifier classifier(triangles, out);
     std::uint32_t begin = 0;
     for (std::size_t v = 0; v < vertex_count; ++v) {
-        classify_bucket(entries.data() + begin, entries.data() + ends[v], classifier);
+        classify_bucket(entries.get() + begin, entries.get() + ends[v], classifier);
         begin = ends[v];
     }
     return out;

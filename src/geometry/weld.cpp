@@ -26,35 +26,35 @@ PositionKey key_of(const glm::vec3& p) {
     return {canonical_bits(p.x), canonical_bits(p.y), canonical_bits(p.z)};
 }
 
-// Open addressing with linear probing; each slot keeps its key so a probe touches one slot
-// and never the output array.
+// Open addressing with linear probing over welded ids; keys are compared against the welded
+// positions. Slots are 4 bytes so the table stays small enough to be cheap to allocate and
+// mostly cache-resident.
 class PositionTable {
 public:
-    explicit PositionTable(std::size_t max_items)
-        : slots_(detail::table_size_for(max_items)),
-          shift_(64 - std::countr_zero(slots_.size())) {}
+    PositionTable(std::size_t max_items, const std::vector<glm::vec3>& welded)
+        : slots_(detail::table_size_for(max_items), kUnset),
+          shift_(64 - std::countr_zero(slots_.size())),
+          welded_(welded) {}
 
-    // Returns the id stored for key, inserting `next_id` when the key is new.
+    // Returns the id of the welded vertex at key, or kUnset after reserving a slot for
+    // `next_id`, which the caller must then append to the welded positions.
     std::uint32_t find_or_insert(const PositionKey& key, std::uint32_t next_id) {
         const std::size_t mask = slots_.size() - 1;
         std::size_t i = detail::hash3(key.x, key.y, key.z) >> shift_;
         for (;; i = (i + 1) & mask) {
-            Slot& s = slots_[i];
-            if (s.id == kUnset) {
-                s = {key, next_id};
-                return next_id;
+            const std::uint32_t id = slots_[i];
+            if (id == kUnset) {
+                slots_[i] = next_id;
+                return kUnset;
             }
-            if (s.key == key) return s.id;
+            if (key_of(welded_[id]) == key) return id;
         }
     }
 
 private:
-    struct Slot {
-        PositionKey key{};
-        std::uint32_t id = kUnset;
-    };
-    std::vector<Slot> slots_;
+    std::vector<std::uint32_t> slots_;
     int shift_;
+    const std::vector<glm::vec3>& welded_;
 };
 
 void check_shape(const TriMesh& mesh) {
@@ -79,8 +79,8 @@ WeldedMesh weld_positions(const TriMesh& mesh) {
     check_shape(mesh);
     const std::size_t vertex_count = mesh.positions.size();
     std::vector<std::uint32_t> remap(vertex_count, kUnset);
-    PositionTable table(vertex_count);
     WeldedMesh out;
+    PositionTable table(vertex_count, out.positions);
     out.triangles.resize(mesh.indices.size());
     for (std::size_t i = 0; i < mesh.indices.size(); ++i) {
         const std::uint32_t v = mesh.indices[i];
@@ -89,7 +89,10 @@ WeldedMesh weld_positions(const TriMesh& mesh) {
         if (id == kUnset) {
             const auto next = static_cast<std::uint32_t>(out.positions.size());
             id = table.find_or_insert(key_of(mesh.positions[v]), next);
-            if (id == next) out.positions.push_back(mesh.positions[v]);
+            if (id == kUnset) {
+                id = next;
+                out.positions.push_back(mesh.positions[v]);
+            }
             remap[v] = id;
         }
         out.triangles[i] = id;
