@@ -5,6 +5,7 @@
 #include "app/commands.h"
 #include "app/default_camera.h"
 #include "app/headless_gl.h"
+#include "app/resource_limits.h"
 #include "core/error.h"
 #include "core/image_io.h"
 #include "geometry/import.h"
@@ -141,6 +142,7 @@ int cmd_render(Args args) {
         std::fprintf(stderr, "beamzone render: %s\n", e.what());
         return 2;
     }
+    limit_memory_for_untrusted_input();
     geo::MeshReport report;
     geo::AdjacencyMesh mesh = geo::build_line_mesh(geo::import_model(o.input), &report);
     if (mesh.triangle_count() == 0) throw UserError(o.input + ": no usable triangles");

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "core/stderr_capture.h"
 #include "geometry/import_guard.h"
 
 namespace bz::geo {
@@ -120,13 +121,20 @@ const aiScene* read_scene(const fs::path& path, Assimp::Importer& importer) {
     // No Assimp::DefaultLogger is ever created, so Assimp logs to its null logger: silent.
     const unsigned flags = aiProcess_Triangulate | aiProcess_ValidateDataStructure;
     const aiScene* scene = nullptr;
+    // A few loaders print to stderr directly; keep that out of our one-line messages.
+    StderrCapture loader_output;
     try {
         scene = importer.ReadFile(path.string(), flags);
     } catch (const std::exception& e) {
         // Assimp catches its own import errors; this is for allocation failures and the like.
         fail(path, std::string("import failed: ") + e.what());
     }
-    if (!scene) fail(path, importer.GetErrorString());
+    const std::string printed = loader_output.text();
+    if (!scene) {
+        std::string why = importer.GetErrorString();
+        if (!printed.empty()) why += " (loader printed: " + printed.substr(0, 200) + ")";
+        fail(path, why);
+    }
     return scene;
 }
 

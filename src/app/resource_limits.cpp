@@ -1,0 +1,25 @@
+#include "app/resource_limits.h"
+
+#include <sys/resource.h>
+
+#include <cstdlib>
+#include <string>
+
+namespace bz::app {
+
+void limit_memory_for_untrusted_input() {
+    unsigned long long mb = 8192;
+    if (const char* env = std::getenv("BEAMZONE_MEMORY_LIMIT_MB"); env && *env) {
+        mb = std::strtoull(env, nullptr, 10);
+    }
+    if (mb == 0) return;
+    rlimit current{};
+    if (getrlimit(RLIMIT_DATA, &current) != 0) return;
+    const rlim_t want = static_cast<rlim_t>(mb) << 20;
+    if (current.rlim_cur != RLIM_INFINITY && current.rlim_cur <= want) return;
+    rlimit next = current;
+    next.rlim_cur = want;
+    setrlimit(RLIMIT_DATA, &next);
+}
+
+}  // namespace bz::app
