@@ -67,8 +67,9 @@ struct Play {
                 for (const auto& line : format_diagnostics(watcher->errors())) {
                     std::fprintf(stderr, "%s\n", line.c_str());
                 }
-                log.error("cannot play " + level_path.string() + ": it has errors (beamzone check " +
-                          level_path.string() + " lists them)");
+                const auto n = watcher->errors().size();
+                log.error("cannot play " + level_path.string() + ": " + std::to_string(n) +
+                          (n == 1 ? " error" : " errors") + " above");
                 return 1;
             }
             log.info("level: " + level_path.string() + " (edits reload while playing)");
@@ -82,6 +83,10 @@ struct Play {
         co.mode = offscreen_allowed(options) ? platform::WindowMode::hidden
                   : fullscreen               ? platform::WindowMode::fullscreen_desktop
                                              : platform::WindowMode::windowed;
+        if (co.mode == platform::WindowMode::hidden) {
+            co.width = 640;  // a test run: a smaller frame keeps software GL quick
+            co.height = 360;
+        }
         co.title = "beamzone";
         // Synchronous GL debug output costs time; test runs want it, players do not.
         co.debug = options.frames > 0 || std::getenv("BEAMZONE_GL_DEBUG") != nullptr;
