@@ -1,0 +1,122 @@
+#pragma once
+// The whole game for the play loop: screens (attract, play, pause, game over, initials, high
+// scores), the world in play, its HUD, sounds, high scores, and recording or playing replays.
+//
+//   game::Game game(level, options, &font);
+//   each frame:  for (plan.ticks) game.tick(command_from_input);
+//                renderer.render(game.frame(plan.alpha, aspect), game.meshes());
+//                synth.play(game.sounds());   // the last tick's
+//                if (game.take_highscores_changed()) save_highscores(path, game.highscores());
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "game/assets.h"
+#include "game/events.h"
+#include "game/highscores.h"
+#include "game/replay.h"
+#include "game/tick_command.h"
+#include "game/world.h"
+#include "level/level.h"
+#include "scene/frame_list.h"
+#include "scene/mesh_library.h"
+#include "scene/vector_font.h"
+
+namespace bz::game {
+
+enum class Screen : std::uint8_t {
+    attract,         // title and demo; start begins a game
+    playing,
+    paused,
+    game_over,       // "GAME OVER" for a few seconds
+    enter_initials,  // a score made the table
+    high_scores,     // the table, then back to attract
+};
+
+struct GameOptions {
+    std::uint64_t seed = 1;  // the first game's seed; each later game adds one
+    int lives = 3;
+    HighScoreTable highscores = HighScoreTable::defaults();
+    // What replays name as the level: empty = the level's file path, or "builtin:default".
+    std::string level_name;
+    bool record = false;   // record every game (see recording())
+    bool attract = true;   // false: start playing at once (tests, benchmarks)
+    int hash_interval = 60;
+    double fov_y_deg = 45.0;
+};
+
+class Game {
+public:
+    // Throws UserError (file:line:col) when the level names an object kind with no factory
+    // or a model that does not load. `font` may be null (no text) and must outlive the game.
+    Game(level::Level level, GameOptions options, const scene::VectorFont* font = nullptr);
+    ~Game();
+    Game(const Game&) = delete;
+    Game& operator=(const Game&) = delete;
+
+    // One 60 Hz tick.
+    void tick(const TickCommand& command);
+
+    // What to draw, interpolated `alpha` of the way from the previous tick to the last.
+    scene::FrameList frame(double alpha, double aspect) const;
+    const scene::MeshLibrary& meshes() const { return assets_->meshes(); }
+    // The last tick's sounds.
+    const SoundFrame& sounds() const { return sounds_; }
+
+    Screen screen() const { return screen_; }
+    // The game in play or just ended; null before the first game.
+    const World* world() const { return world_.get(); }
+    const level::Level& level() const { return level_; }
+
+    const HighScoreTable& highscores() const { return highscores_; }
+    // True once after the table changed: the caller saves it then.
+    bool take_highscores_changed();
+
+    // Plays a recorded game back from its seed, checking state hashes as it goes. Live input
+    // only pauses or quits. Throws UserError if the replay's level hash differs.
+    void start_replay(replay::Replay replay);
+    bool replaying() const { return playback_.has_value(); }
+    bool replay_finished() const { return playback_ && playback_->done(); }
+    const std::optional<replay::Mismatch>& replay_mismatch() const { return mismatch_; }
+
+    // The current (or last) game's recording, with its final state hash; empty when not
+    // recording or before the first game.
+    std::optional<replay::Replay> recording() const;
+
+private:
+    struct Buttons;
+    void start_game();
+    void end_game();
+    void step_world(const TickCommand& command);
+    void step_demo();
+    void step_initials(const Buttons& b);
+    std::string level_name() const;
+    std::uint64_t level_hash_value() const;
+
+    level::Level level_;
+    GameOptions options_;
+    const scene::VectorFont* font_;
+    std::unique_ptr<Assets> assets_;
+    std::unique_ptr<World> world_;
+    std::unique_ptr<World> demo_;
+    std::optional<replay::Recorder> recorder_;
+    std::optional<replay::Player> playback_;
+    std::optional<replay::Mismatch> mismatch_;
+    mutable std::optional<std::uint64_t> level_hash_;
+    HighScoreTable highscores_;
+    bool highscores_changed_ = false;
+    Screen screen_ = Screen::attract;
+    std::uint64_t ticks_ = 0;       // every tick since construction (animations)
+    int screen_ticks_ = 0;          // ticks on the current screen
+    std::uint64_t games_started_ = 0;
+    std::uint64_t demo_games_ = 0;
+    std::uint8_t prev_buttons_ = 0;
+    int prev_vertical_ = 0;         // -1, 0, 1: treads used as up/down in menus
+    std::string initials_;
+    char initial_ = 'A';
+    int new_rank_ = -1;
+    SoundFrame sounds_;
+};
+
+}  // namespace bz::game
