@@ -15,12 +15,20 @@ using EdgeEntry = std::uint64_t;
 
 constexpr std::size_t kMaxTriangles = ((std::size_t{1} << 31) - 1) / 3;
 
-std::uint32_t other_vertex(EdgeEntry e) { return static_cast<std::uint32_t>(e >> 32); }
-std::uint32_t half_edge(EdgeEntry e) { return static_cast<std::uint32_t>(e) >> 1; }
-bool reversed(EdgeEntry e) { return (e & 1u) != 0; }
+std::uint32_t other_vertex(EdgeEntry e) {
+    return static_cast<std::uint32_t>(e >> 32);
+}
+std::uint32_t half_edge(EdgeEntry e) {
+    return static_cast<std::uint32_t>(e) >> 1;
+}
+bool reversed(EdgeEntry e) {
+    return (e & 1u) != 0;
+}
 
 // Corner of the same triangle that is not on half-edge h (edge e runs from corner e to e+1).
-std::uint32_t far_corner(std::uint32_t h) { return h % 3 == 0 ? h + 2 : h - 1; }
+std::uint32_t far_corner(std::uint32_t h) {
+    return h % 3 == 0 ? h + 2 : h - 1;
+}
 
 void check_input(std::span<const std::uint32_t> tri, std::size_t vertex_count) {
     if (tri.size() % 3 != 0) {
@@ -86,7 +94,7 @@ void sort_bucket(EdgeEntry* first, EdgeEntry* last) {
 }
 
 class Classifier {
-public:
+  public:
     Classifier(std::span<const std::uint32_t> tri, Adjacency& out) : tri_(tri), out_(out) {}
 
     // Entries [g, g + n) are every face on one undirected edge, in half-edge order.
@@ -104,7 +112,7 @@ public:
         }
     }
 
-private:
+  private:
     void pair(EdgeEntry e0, EdgeEntry e1) {
         const std::uint32_t h0 = half_edge(e0), h1 = half_edge(e1);
         const std::uint32_t o0 = tri_[far_corner(h0)], o1 = tri_[far_corner(h1)];

@@ -3,9 +3,8 @@
 // per triangle) in place and keeps the surviving triangles in their original order.
 #include <cstddef>
 #include <cstdint>
-#include <vector>
-
 #include <glm/glm.hpp>
+#include <vector>
 
 namespace bz::geo {
 

@@ -37,7 +37,7 @@ KeyedFace key_face(std::uint32_t x, std::uint32_t y, std::uint32_t z) {
 
 // For each distinct vertex set, the first face seen with each winding.
 class FaceTable {
-public:
+  public:
     explicit FaceTable(std::size_t faces)
         : slots_(detail::table_size_for(faces)), shift_(64 - std::countr_zero(slots_.size())) {}
 
@@ -51,7 +51,7 @@ public:
         }
     }
 
-private:
+  private:
     struct Slot {
         FaceKey key;
         std::uint32_t first[2] = {kUnset, kUnset};

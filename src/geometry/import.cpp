@@ -1,9 +1,9 @@
 #include "geometry/import.h"
 
-#include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
+#include <assimp/Importer.hpp>
 #include <cmath>
 #include <exception>
 #include <fstream>
@@ -111,8 +111,8 @@ void walk_nodes(const fs::path& path, const aiScene& scene, TriMesh& out) {
         }
         // Pushed in reverse so children are visited in file order.
         for (unsigned c = at.node->mNumChildren; c-- > 0;) {
-            if (at.node->mChildren[c]) stack.push_back({at.node->mChildren[c], to_model,
-                                                        at.depth + 1});
+            if (at.node->mChildren[c])
+                stack.push_back({at.node->mChildren[c], to_model, at.depth + 1});
         }
     }
 }

@@ -12,7 +12,7 @@ constexpr std::uintmax_t kMinFaceBytes = 3;
 
 // Splits the header into whitespace-separated tokens, skipping '#' comments.
 class Tokens {
-public:
+  public:
     explicit Tokens(std::string_view text) : text_(text) {}
 
     std::string_view next() {
@@ -33,7 +33,7 @@ public:
         return text_.substr(start, pos_ - start);
     }
 
-private:
+  private:
     std::string_view text_;
     std::size_t pos_ = 0;
 };
@@ -61,8 +61,7 @@ std::optional<std::uintmax_t> parse_count(std::string_view t) {
 
 }  // namespace
 
-std::optional<std::string> implausible_off_header(std::string_view head,
-                                                  std::uintmax_t file_size) {
+std::optional<std::string> implausible_off_header(std::string_view head, std::uintmax_t file_size) {
     Tokens tokens(head);
     if (!is_off_keyword(tokens.next())) return std::nullopt;
     const auto vertices = parse_count(tokens.next());

@@ -46,6 +46,8 @@ struct AdjacencyMesh {
 };
 
 // What cleaning and adjacency building found, for logs and tests.
+// The *_edges counts count distinct edges: a non-manifold edge on three faces counts once,
+// while each of its three triangle edges carries EdgeKind::non_manifold (see build_line_mesh).
 struct MeshReport {
     std::size_t input_triangles = 0;
     std::size_t degenerate_removed = 0;

@@ -4,7 +4,6 @@
 // Counter-clockwise seen from outside is the front. Sizes must be positive and counts at
 // least the stated minimum, else std::invalid_argument.
 #include <cstdint>
-
 #include <glm/glm.hpp>
 
 #include "geometry/mesh.h"

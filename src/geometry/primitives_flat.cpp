@@ -56,9 +56,13 @@ TriMesh box_faces(glm::vec3 half, bool with_top) {
 
 }  // namespace
 
-TriMesh box(glm::vec3 half_extents) { return box_faces(half_extents, true); }
+TriMesh box(glm::vec3 half_extents) {
+    return box_faces(half_extents, true);
+}
 
-TriMesh open_box(glm::vec3 half_extents) { return box_faces(half_extents, false); }
+TriMesh open_box(glm::vec3 half_extents) {
+    return box_faces(half_extents, false);
+}
 
 TriMesh pyramid(float half_base, float height) {
     check_positive({half_base, height, 1.0f}, "pyramid");

@@ -19,8 +19,8 @@ struct GridFrame {
 };
 
 // One tile: cells [x0, x1) x [z0, z1) on vertices of its own.
-void add_tile(TriMesh& m, const GridFrame& f, std::uint32_t x0, std::uint32_t x1,
-              std::uint32_t z0, std::uint32_t z1) {
+void add_tile(TriMesh& m, const GridFrame& f, std::uint32_t x0, std::uint32_t x1, std::uint32_t z0,
+              std::uint32_t z1) {
     const auto base = static_cast<std::uint32_t>(m.positions.size());
     const std::uint32_t row = x1 - x0 + 1;
     for (std::uint32_t z = z0; z <= z1; ++z) {
@@ -42,8 +42,8 @@ TriMesh grid(std::uint32_t nx, std::uint32_t nz, float size, std::uint32_t tile)
     if (nx == 0 || nz == 0 || tile == 0 || !(size > 0.0f)) {
         throw std::invalid_argument("grid: invalid size or count");
     }
-    const GridFrame frame{size, {-0.5f * size * static_cast<float>(nx),
-                                 -0.5f * size * static_cast<float>(nz)}};
+    const GridFrame frame{
+        size, {-0.5f * size * static_cast<float>(nx), -0.5f * size * static_cast<float>(nz)}};
     TriMesh m;
     m.indices.reserve(std::size_t{nx} * nz * 6);
     for (std::uint32_t z0 = 0; z0 < nz; z0 += tile) {

@@ -82,8 +82,10 @@ TriMesh cylinder(float radius, float half_height, std::uint32_t segments) {
         }
         for (std::uint32_t j = 0; j < segments; ++j) {
             const std::uint32_t p = centre + 1 + j, q = centre + 1 + (j + 1) % segments;
-            if (y > 0) push(m, centre, q, p);
-            else push(m, centre, p, q);
+            if (y > 0)
+                push(m, centre, q, p);
+            else
+                push(m, centre, p, q);
         }
     }
     return m;

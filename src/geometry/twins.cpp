@@ -39,11 +39,15 @@ VertexFaces index_faces(std::span<const std::uint32_t> tri, std::size_t vertex_c
 }
 
 class TwinResolver {
-public:
+  public:
     TwinResolver(std::span<const std::uint32_t> tri, std::size_t vertex_count,
                  std::span<const TwinPair> pairs, std::vector<std::uint8_t>& dropped)
-        : tri_(tri), pairs_(pairs), dropped_(dropped), state_(tri.size() / 3),
-          pair_of_(tri.size() / 3, kUnset), decided_(pairs.size(), 0),
+        : tri_(tri),
+          pairs_(pairs),
+          dropped_(dropped),
+          state_(tri.size() / 3),
+          pair_of_(tri.size() / 3, kUnset),
+          decided_(pairs.size(), 0),
           queued_(pairs.size(), 0) {
         for (std::size_t f = 0; f < state_.size(); ++f) {
             state_[f] = dropped[f] ? FaceState::dropped : FaceState::settled;
@@ -70,7 +74,7 @@ public:
         return pairs_.size();
     }
 
-private:
+  private:
     void enqueue(std::size_t p) {
         if (decided_[p] || queued_[p]) return;
         queued_[p] = 1;

@@ -30,7 +30,7 @@ PositionKey key_of(const glm::vec3& p) {
 // positions. Slots are 4 bytes so the table stays small enough to be cheap to allocate and
 // mostly cache-resident.
 class PositionTable {
-public:
+  public:
     PositionTable(std::size_t max_items, const std::vector<glm::vec3>& welded)
         : slots_(detail::table_size_for(max_items), kUnset),
           shift_(64 - std::countr_zero(slots_.size())),
@@ -51,7 +51,7 @@ public:
         }
     }
 
-private:
+  private:
     std::vector<std::uint32_t> slots_;
     int shift_;
     const std::vector<glm::vec3>& welded_;
@@ -69,8 +69,8 @@ void check_shape(const TriMesh& mesh) {
 }
 
 [[noreturn]] void throw_bad_index(std::uint32_t v, std::size_t count) {
-    throw std::invalid_argument("weld_positions: index " + std::to_string(v) +
-                                " out of range (" + std::to_string(count) + " vertices)");
+    throw std::invalid_argument("weld_positions: index " + std::to_string(v) + " out of range (" +
+                                std::to_string(count) + " vertices)");
 }
 
 }  // namespace

@@ -2,9 +2,8 @@
 // Welding by exact position: vertices that a file split for normals or UVs become one again, so
 // seams are not mistaken for boundaries.
 #include <cstdint>
-#include <vector>
-
 #include <glm/glm.hpp>
+#include <vector>
 
 #include "geometry/mesh.h"
 

@@ -114,9 +114,9 @@ TEST(Adjacency, FlippedBoxFaceGivesFourInconsistentEdges) {
 }
 
 TEST(Adjacency, MatchesReferenceOnPrimitives) {
-    for (const TriMesh& mesh : {box({1, 1, 1}), open_box({1, 2, 3}), uv_sphere(1.0f, 7, 9),
-                                grid(9, 7, 0.5f, 4), pyramid(1.0f, 2.0f), cylinder(1, 1, 11),
-                                fin()}) {
+    for (const TriMesh& mesh :
+         {box({1, 1, 1}), open_box({1, 2, 3}), uv_sphere(1.0f, 7, 9), grid(9, 7, 0.5f, 4),
+          pyramid(1.0f, 2.0f), cylinder(1, 1, 11), fin()}) {
         const AdjacencyMesh welded = build_line_mesh(mesh);
         expect_matches_reference(welded.triangles, welded.positions.size());
         // Unwelded, every split seam is a boundary; the builder must agree there too.
@@ -131,8 +131,7 @@ TEST(Adjacency, MatchesReferenceOnRandomTriangleSoup) {
         const std::uint32_t vertices = 4 + rng.below(12);
         std::vector<std::uint32_t> tri;
         for (int i = 0; i < 60; ++i) {
-            std::uint32_t a = rng.below(vertices), b = rng.below(vertices),
-                          c = rng.below(vertices);
+            std::uint32_t a = rng.below(vertices), b = rng.below(vertices), c = rng.below(vertices);
             if (a == b || b == c || a == c) continue;
             tri.insert(tri.end(), {a, b, c});
         }

@@ -22,7 +22,7 @@ const fs::path kModels = "/usr/share/assimp/models";
 
 // A scratch folder per test process (ctest runs tests in parallel).
 class ImportTest : public ::testing::Test {
-protected:
+  protected:
     void SetUp() override {
         dir_ = fs::temp_directory_path() / ("bz_geo_import_" + std::to_string(::getpid()));
         fs::create_directories(dir_);
@@ -176,7 +176,8 @@ TEST(Import, BrokenFilesThrowUserErrorNamingTheFile) {
     EXPECT_GE(refused, 13u);
     EXPECT_LE(loaded, 1u);
     for (const char* file : {"empty.obj", "empty.ply", "malformed.obj", "empty.3ds"}) {
-        expect_one_line_naming(import_error(kModels / "invalid" / file), kModels / "invalid" / file);
+        expect_one_line_naming(import_error(kModels / "invalid" / file),
+                               kModels / "invalid" / file);
     }
 }
 

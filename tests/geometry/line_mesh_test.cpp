@@ -61,8 +61,7 @@ TEST(LineMesh, TiledGridSeamsWeldSoOnlyTheRimIsBoundary) {
     EXPECT_EQ(report.welded_vertices, (nx + 1u) * (nz + 1u));
     EXPECT_EQ(report.boundary_edges, 2u * (nx + nz));
     EXPECT_EQ(count_kind(m.edge_kinds, EdgeKind::boundary), 2u * (nx + nz));
-    EXPECT_EQ(count_kind(m.edge_kinds, EdgeKind::interior),
-              m.edge_kinds.size() - 2u * (nx + nz));
+    EXPECT_EQ(count_kind(m.edge_kinds, EdgeKind::interior), m.edge_kinds.size() - 2u * (nx + nz));
 }
 
 TEST(LineMesh, MillionTriangleGridHasOnlyTheOuterRimAsBoundary) {
@@ -132,8 +131,10 @@ TEST(LineMesh, FullyTwinnedMeshInAnyOrderComesOutConsistentlyWound) {
     for (std::size_t t = 0; t < cube.triangle_count(); ++t) {
         const std::uint32_t a = cube.indices[3 * t], b = cube.indices[3 * t + 1],
                             c = cube.indices[3 * t + 2];
-        if (t % 2 == 0) m.indices.insert(m.indices.end(), {a, c, b, a, b, c});
-        else m.indices.insert(m.indices.end(), {a, b, c, a, c, b});
+        if (t % 2 == 0)
+            m.indices.insert(m.indices.end(), {a, c, b, a, b, c});
+        else
+            m.indices.insert(m.indices.end(), {a, b, c, a, c, b});
     }
     MeshReport report;
     const AdjacencyMesh out = build_line_mesh(m, &report);

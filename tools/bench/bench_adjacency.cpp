@@ -76,7 +76,7 @@ void bench_adjacency_only(benchmark::State& state, const TriMesh& mesh) {
 // Console output plus, at the end, one line per mesh comparing the two full builders by wall
 // time and by CPU time (the latter is steadier on a shared, loaded machine).
 class RatioReporter : public benchmark::ConsoleReporter {
-public:
+  public:
     void ReportRuns(const std::vector<Run>& runs) override {
         ConsoleReporter::ReportRuns(runs);
         for (const Run& r : runs) {
@@ -84,7 +84,7 @@ public:
             const std::string name = r.benchmark_name();
             const auto slash = name.find('/');
             times_[name.substr(0, slash)][name.substr(slash + 1)] = {r.GetAdjustedRealTime(),
-                                                                    r.GetAdjustedCPUTime()};
+                                                                     r.GetAdjustedCPUTime()};
         }
     }
 
@@ -102,7 +102,7 @@ public:
         }
     }
 
-private:
+  private:
     struct Times {
         double real = 0.0;
         double cpu = 0.0;
@@ -116,12 +116,13 @@ int main(int argc, char** argv) {
     const std::vector<NamedMesh> meshes = make_meshes();
     for (const NamedMesh& m : meshes) {
         const TriMesh& mesh = m.mesh;
-        benchmark::RegisterBenchmark((m.name + "/bz_line_mesh").c_str(),
-                                     [&mesh](benchmark::State& s) { bench_line_mesh(s, mesh); })
-            ->Unit(benchmark::kMillisecond);
-        benchmark::RegisterBenchmark((m.name + "/meshopt").c_str(),
-                                     [&mesh](benchmark::State& s) { bench_meshopt(s, mesh); })
-            ->Unit(benchmark::kMillisecond);
+        benchmark::RegisterBenchmark((m.name + "/bz_line_mesh").c_str(), [&mesh](
+                                                                             benchmark::State& s) {
+            bench_line_mesh(s, mesh);
+        })->Unit(benchmark::kMillisecond);
+        benchmark::RegisterBenchmark((m.name + "/meshopt").c_str(), [&mesh](benchmark::State& s) {
+            bench_meshopt(s, mesh);
+        })->Unit(benchmark::kMillisecond);
         benchmark::RegisterBenchmark(
             (m.name + "/bz_adjacency_only").c_str(),
             [&mesh](benchmark::State& s) { bench_adjacency_only(s, mesh); })
