@@ -3,7 +3,7 @@
 
 #include "app/cli_args.h"
 #include "app/commands.h"
-#include "app/default_camera.h"
+#include "render/camera_framing.h"
 #include "app/headless_gl.h"
 #include "app/resource_limits.h"
 #include "core/error.h"
@@ -82,7 +82,7 @@ RenderOptions parse(Args args) {
 
 scene::Camera make_camera(const RenderOptions& o, const geo::Bounds& bounds) {
     const double aspect = static_cast<double>(o.size.x) / o.size.y;
-    scene::Camera c = frame_bounds(bounds, o.fov, aspect);
+    scene::Camera c = render::frame_bounds(bounds, o.fov, aspect);
     if (o.eye) {
         c.eye = *o.eye;
         c.target = o.target.value_or(glm::dvec3(bounds.center()));

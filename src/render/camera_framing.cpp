@@ -1,9 +1,9 @@
-#include "app/default_camera.h"
+#include "render/camera_framing.h"
 
 #include <algorithm>
 #include <cmath>
 
-namespace bz::app {
+namespace bz::render {
 
 scene::Camera frame_bounds(const geo::Bounds& bounds, double fov_y_deg, double aspect) {
     scene::Camera c;
@@ -23,4 +23,4 @@ scene::Camera frame_bounds(const geo::Bounds& bounds, double fov_y_deg, double a
     return c;
 }
 
-}  // namespace bz::app
+}  // namespace bz::render
