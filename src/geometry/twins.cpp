@@ -2,6 +2,9 @@
 
 #include <deque>
 #include <limits>
+#include <memory>
+
+#include "geometry/edge_groups.h"
 
 namespace bz::geo::detail {
 namespace {
@@ -10,33 +13,11 @@ constexpr std::uint32_t kUnset = std::numeric_limits<std::uint32_t>::max();
 
 enum class FaceState : std::uint8_t { settled, pending, dropped };
 
-// Faces around each vertex (compressed rows), over the faces still present.
-struct VertexFaces {
-    std::vector<std::uint32_t> start;  // vertex_count + 1
-    std::vector<std::uint32_t> faces;
-
-    std::span<const std::uint32_t> of(std::uint32_t v) const {
-        return {faces.data() + start[v], faces.data() + start[v + 1]};
-    }
+// For every half-edge of a face in a twin pair, where its edge's group of faces lies.
+struct GroupSpan {
+    std::uint32_t start = 0;
+    std::uint32_t count = 0;
 };
-
-VertexFaces index_faces(std::span<const std::uint32_t> tri, std::size_t vertex_count,
-                        const std::vector<FaceState>& state) {
-    VertexFaces vf;
-    vf.start.assign(vertex_count + 1, 0);
-    for (std::size_t i = 0; i < tri.size(); ++i) {
-        if (state[i / 3] != FaceState::dropped) ++vf.start[tri[i] + 1];
-    }
-    for (std::size_t v = 0; v < vertex_count; ++v) vf.start[v + 1] += vf.start[v];
-    vf.faces.resize(vf.start[vertex_count]);
-    std::vector<std::uint32_t> cursor(vf.start.begin(), vf.start.end() - 1);
-    for (std::size_t i = 0; i < tri.size(); ++i) {
-        if (state[i / 3] != FaceState::dropped) {
-            vf.faces[cursor[tri[i]]++] = static_cast<std::uint32_t>(i / 3);
-        }
-    }
-    return vf;
-}
 
 class TwinResolver {
   public:
@@ -58,7 +39,7 @@ class TwinResolver {
                 pair_of_[f] = static_cast<std::uint32_t>(p);
             }
         }
-        around_ = index_faces(tri, vertex_count, state_);
+        index_edges(vertex_count);
     }
 
     std::size_t run() {
@@ -114,30 +95,33 @@ class TwinResolver {
         return s;
     }
 
-    // Calls fn(other_face, runs_same_direction) for every face other than `face` on each of
-    // its edges. Scans the shorter of the two endpoint lists so a high-valence hub stays cheap.
-    template <class Fn>
-    void for_each_edge_face(std::uint32_t face, Fn&& fn) const {
-        for (std::uint32_t e = 0; e < 3; ++e) {
-            const std::uint32_t u = tri_[3 * face + e], v = tri_[3 * face + (e + 1) % 3];
-            const auto list_u = around_.of(u), list_v = around_.of(v);
-            const bool scan_u = list_u.size() <= list_v.size();
-            for (std::uint32_t f : scan_u ? list_u : list_v) {
-                if (f == face) continue;
-                const int dir = direction(f, u, v);
-                if (dir != 0) fn(f, dir > 0);
+    void index_edges(std::size_t vertex_count) {
+        groups_ = std::make_unique<EdgeGroups>(tri_, vertex_count);
+        spans_.resize(tri_.size());
+        groups_->for_each([&](const EdgeEntry* g, std::size_t n) {
+            const auto start = static_cast<std::uint32_t>(g - groups_->data());
+            for (std::size_t i = 0; i < n; ++i) {
+                const std::uint32_t h = half_edge(g[i]);
+                if (state_[h / 3] == FaceState::pending) {
+                    spans_[h] = {start, static_cast<std::uint32_t>(n)};
+                }
             }
-        }
+        });
     }
 
-    // +1 if face f has edge u->v, -1 if it has v->u, 0 if it lacks the edge.
-    int direction(std::uint32_t f, std::uint32_t u, std::uint32_t v) const {
-        for (std::uint32_t k = 0; k < 3; ++k) {
-            if (tri_[3 * f + k] != u) continue;
-            if (tri_[3 * f + (k + 1) % 3] == v) return 1;
-            if (tri_[3 * f + (k + 2) % 3] == v) return -1;
+    // Calls fn(other_face, runs_same_direction) for every face other than `face` on each of
+    // its edges.
+    template <class Fn>
+    void for_each_edge_face(std::uint32_t face, Fn&& fn) const {
+        for (std::uint32_t h = 3 * face; h < 3 * face + 3; ++h) {
+            const std::uint32_t to = tri_[h % 3 == 2 ? h - 2 : h + 1];
+            const bool rev = tri_[h] > to;
+            const EdgeEntry* g = groups_->data() + spans_[h].start;
+            for (std::uint32_t i = 0; i < spans_[h].count; ++i) {
+                const std::uint32_t f = half_edge(g[i]) / 3;
+                if (f != face) fn(f, reversed(g[i]) == rev);
+            }
         }
-        return 0;
     }
 
     std::span<const std::uint32_t> tri_;
@@ -148,7 +132,8 @@ class TwinResolver {
     std::vector<std::uint8_t> decided_;
     std::vector<std::uint8_t> queued_;
     std::deque<std::uint32_t> queue_;
-    VertexFaces around_;
+    std::unique_ptr<EdgeGroups> groups_;
+    std::vector<GroupSpan> spans_;  // per half-edge, filled for faces in pairs
 };
 
 }  // namespace
