@@ -105,8 +105,10 @@ std::string play_usage(const std::string& settings_path, const std::string& high
            "                   (BEAMZONE_ALLOW_OFFSCREEN=1 does the same)\n"
            "Keys (change them in the settings file): treads Q/A and E/D, or drive with the\n"
            "arrows (W/S too); fire Space or Ctrl; pause P or Esc; F11 or Alt+Enter fullscreen;\n"
-           "F12 screenshot; F5 reload shaders; M mute; +/- volume; F10 quit.\n"
-           "Game controllers: sticks drive the treads, triggers or A fire, Start pauses.\n"
+           "F12 screenshot; F5 reload shaders; M mute; +/- volume; F10 quit; Enter start;\n"
+           "Backspace back (menus).\n"
+           "Game controllers: sticks drive the treads (or the left stick alone: gamepad =\n"
+           "\"drive\" in the settings), triggers, A or R1 fire, Start pauses or starts, B back.\n"
            "\n"
            "settings:    " + settings_path + "\n"
            "high scores: " + high_scores_path + "\n";

@@ -13,7 +13,7 @@ constexpr std::array<std::string_view, kActionCount> kNames = {
     "drive_forward",      "drive_back",      "turn_left",           "turn_right",
     "fire",               "pause",           "fullscreen",          "screenshot",
     "reload_shaders",     "mute",            "volume_up",           "volume_down",
-    "quit",
+    "quit",               "start",           "back",
 };
 
 struct ModifierName {
@@ -113,6 +113,8 @@ Bindings default_bindings() {
     set(Action::volume_up, {key("="), key("Keypad +")});
     set(Action::volume_down, {key("-"), key("Keypad -")});
     set(Action::quit, {key("F10"), key("F4", kModAlt)});
+    set(Action::start, {key("Return"), key("Keypad Enter"), key("1")});
+    set(Action::back, {key("Backspace")});
     return b;
 }
 

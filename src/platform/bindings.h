@@ -31,6 +31,8 @@ enum class Action : std::uint8_t {
     volume_up,
     volume_down,
     quit,
+    start,  // begin a game, confirm (menus, initials)
+    back,   // menus and initials: go back, delete
     count
 };
 constexpr std::size_t kActionCount = static_cast<std::size_t>(Action::count);

@@ -121,7 +121,14 @@ void Input::handle_event(const SDL_Event& e) {
         case SDL_CONTROLLERBUTTONUP: {
             const bool down = e.type == SDL_CONTROLLERBUTTONDOWN;
             if (e.cbutton.button < 32) pads_[e.cbutton.which].buttons[e.cbutton.button] = down;
-            if (down && e.cbutton.button == SDL_CONTROLLER_BUTTON_START) pressed_.push_back(Action::pause);
+            if (down) {
+                // Start pauses in play and starts from the title; the game knows which.
+                if (e.cbutton.button == SDL_CONTROLLER_BUTTON_START) {
+                    pressed_.push_back(Action::pause);
+                    pressed_.push_back(Action::start);
+                }
+                if (e.cbutton.button == SDL_CONTROLLER_BUTTON_B) pressed_.push_back(Action::back);
+            }
             break;
         }
         case SDL_CONTROLLERDEVICEREMOVED:
@@ -142,14 +149,26 @@ InputState Input::state() const {
     float left = held(Action::left_tread_forward) - held(Action::left_tread_back) + drive + turn;
     float right = held(Action::right_tread_forward) - held(Action::right_tread_back) + drive - turn;
     bool fire = action_held(Action::fire);
+    InputState out;
+    out.up = action_held(Action::drive_forward);
+    out.down = action_held(Action::drive_back);
+    out.left = action_held(Action::turn_left);
+    out.right = action_held(Action::turn_right);
     for (const auto& [id, pad] : pads_) {
+        out.up = out.up || pad.buttons[SDL_CONTROLLER_BUTTON_DPAD_UP];
+        out.down = out.down || pad.buttons[SDL_CONTROLLER_BUTTON_DPAD_DOWN];
+        out.left = out.left || pad.buttons[SDL_CONTROLLER_BUTTON_DPAD_LEFT];
+        out.right = out.right || pad.buttons[SDL_CONTROLLER_BUTTON_DPAD_RIGHT];
         const InputState p = pad_to_treads(pad.axes, mode_);
         left += p.left_tread;
         right += p.right_tread;
         fire = fire || p.fire || pad.buttons[SDL_CONTROLLER_BUTTON_A] ||
                pad.buttons[SDL_CONTROLLER_BUTTON_RIGHTSHOULDER];
     }
-    return {std::clamp(left, -1.0f, 1.0f), std::clamp(right, -1.0f, 1.0f), fire};
+    out.left_tread = std::clamp(left, -1.0f, 1.0f);
+    out.right_tread = std::clamp(right, -1.0f, 1.0f);
+    out.fire = fire;
+    return out;
 }
 
 std::vector<Action> Input::take_pressed() {

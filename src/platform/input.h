@@ -21,6 +21,8 @@ struct InputState {
     float left_tread = 0.0f;   // -1 (full back) .. +1 (full forward)
     float right_tread = 0.0f;
     bool fire = false;
+    // Menu directions (held): the drive keys and a pad's d-pad.
+    bool up = false, down = false, left = false, right = false;
 };
 
 // Stick values in -1..1 with SDL's sign (y grows downward), triggers 0..1.

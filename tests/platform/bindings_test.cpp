@@ -85,6 +85,9 @@ TEST(Bindings, DefaultsMatchTheManual) {
     EXPECT_TRUE(has(Action::mute, "M"));
     EXPECT_TRUE(has(Action::volume_up, "Keypad +"));
     EXPECT_TRUE(has(Action::volume_down, "-"));
+    EXPECT_TRUE(has(Action::start, "Return"));
+    EXPECT_TRUE(has(Action::back, "Backspace"));
+    EXPECT_TRUE(has(Action::quit, "F10"));
 }
 
 }  // namespace

@@ -79,9 +79,23 @@ TEST(Input, MostSpecificBindingWins) {
     EXPECT_EQ(in.take_pressed(), std::vector<Action>{Action::fullscreen});
     in.handle_event(key(SDL_KEYUP, SDL_SCANCODE_RETURN));
     in.handle_event(key(SDL_KEYDOWN, SDL_SCANCODE_RETURN));
-    EXPECT_EQ(in.take_pressed(), std::vector<Action>{Action::screenshot});
+    // Equally specific bindings all fire (Return is also start by default).
+    EXPECT_EQ(in.take_pressed(), (std::vector<Action>{Action::screenshot, Action::start}));
     in.handle_event(key(SDL_KEYDOWN, SDL_SCANCODE_F11));
     EXPECT_EQ(in.take_pressed(), std::vector<Action>{Action::fullscreen});
+}
+
+TEST(Input, MenuKeys) {
+    Input in;
+    in.handle_event(key(SDL_KEYDOWN, SDL_SCANCODE_UP));
+    in.handle_event(key(SDL_KEYDOWN, SDL_SCANCODE_LEFT));
+    EXPECT_TRUE(in.state().up);
+    EXPECT_TRUE(in.state().left);
+    EXPECT_FALSE(in.state().down);
+    EXPECT_FALSE(in.state().right);
+    in.handle_event(key(SDL_KEYDOWN, SDL_SCANCODE_RETURN));
+    in.handle_event(key(SDL_KEYDOWN, SDL_SCANCODE_BACKSPACE));
+    EXPECT_EQ(in.take_pressed(), (std::vector<Action>{Action::start, Action::back}));
 }
 
 TEST(Input, RemappedKeys) {
@@ -129,7 +143,12 @@ TEST(Input, GamepadTankSticksAndFire) {
     in.handle_event(button(3, SDL_CONTROLLER_BUTTON_A, true));
     EXPECT_TRUE(in.state().fire);
     in.handle_event(button(3, SDL_CONTROLLER_BUTTON_START, true));
-    EXPECT_EQ(in.take_pressed(), std::vector<Action>{Action::pause});
+    EXPECT_EQ(in.take_pressed(), (std::vector<Action>{Action::pause, Action::start}));
+    in.handle_event(button(3, SDL_CONTROLLER_BUTTON_B, true));
+    EXPECT_EQ(in.take_pressed(), std::vector<Action>{Action::back});
+    in.handle_event(button(3, SDL_CONTROLLER_BUTTON_DPAD_DOWN, true));
+    EXPECT_TRUE(in.state().down);
+    EXPECT_FALSE(in.state().up);
 
     // Unplugging forgets the pad: no tread stuck at full.
     SDL_Event removed{};
