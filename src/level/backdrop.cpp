@@ -1,8 +1,19 @@
 #include <array>
 
+#include "level/loader.h"
 #include "level/sections.h"
 
-namespace bz::level::detail {
+namespace bz::level {
+
+std::vector<glm::dvec2> default_mountains() {
+    // The arcade-like skyline; the same points the game draws for its built-in plain.
+    return {{0, 1.2},   {14, 2.8},  {25, 1.6},  {38, 3.9},  {47, 2.2},  {80, 1.4},  {96, 3.1},
+            {108, 2.0}, {125, 4.6}, {139, 2.4}, {160, 1.1}, {178, 2.9}, {192, 1.8}, {210, 3.6},
+            {226, 2.1}, {244, 4.2}, {259, 2.6}, {277, 1.3}, {292, 3.3}, {318, 1.9}, {333, 3.8},
+            {347, 2.0}};
+}
+
+namespace detail {
 
 namespace {
 
@@ -12,15 +23,6 @@ constexpr Range kAzimuth{0.0, 360.0};
 constexpr Range kMountainHeight{0.0, 30.0};
 
 }  // namespace
-
-std::vector<glm::dvec2> default_mountains() {
-    // A jagged ring of ranges with two gaps, in the spirit of the arcade skyline.
-    return {{0, 2.0},    {12, 4.5},  {20, 3.0},  {31, 6.0},  {40, 4.0},  {52, 2.5},
-            {75, 1.0},   {95, 3.5},  {104, 5.5}, {113, 3.0}, {128, 7.0}, {140, 4.0},
-            {152, 2.0},  {170, 0.5}, {190, 2.5}, {205, 5.0}, {214, 3.5}, {226, 8.0},
-            {238, 5.5},  {250, 3.0}, {265, 1.5}, {290, 4.0}, {302, 6.5}, {315, 3.5},
-            {330, 5.0},  {345, 3.0}, {360, 2.0}};
-}
 
 void read_backdrop(const toml::table& root, Level& level, ReadContext& ctx) {
     level.backdrop.mountains = default_mountains();
@@ -33,6 +35,10 @@ void read_backdrop(const toml::table& root, Level& level, ReadContext& ctx) {
         if (!list) {
             ctx.diag.error(node->source(), "'mountains' must be an array of [azimuth, height] pairs, not " +
                                                std::string(type_name(*node)));
+        } else if (list->size() < 2) {
+            // An empty list would leave the game to pick its own skyline; say "flat" explicitly.
+            ctx.diag.error(node->source(), "'mountains' needs at least 2 points; for a flat horizon "
+                                           "write [[0, 0], [360, 0]]");
         } else if (list->size() > ctx.options.max_mountain_points) {
             ctx.diag.error(node->source(), "too many mountain points: " + std::to_string(list->size()) +
                                                " (the limit is " +
@@ -75,4 +81,5 @@ void read_backdrop(const toml::table& root, Level& level, ReadContext& ctx) {
     if (auto v = r.number("moon_elevation", {0.0, 80.0})) b.moon_elevation_deg = *v;
 }
 
-}  // namespace bz::level::detail
+}  // namespace detail
+}  // namespace bz::level

@@ -22,7 +22,7 @@ struct ObjectDesc {
     std::string kind;                 // "cube", "pyramid", "tall_box", ... or "model"
     std::filesystem::path model;      // resolved path, only for kind == "model"
     glm::dvec3 position{0.0};         // world units; y up; the ground is y = 0
-    double heading_deg = 0.0;         // rotation about +y
+    double heading_deg = 0.0;         // rotation about +y: 0 faces -z, +90 faces -x (left)
     double scale = 1.0;
     glm::vec3 color{0.2f, 1.0f, 0.3f};  // linear RGB line colour
     SourcePos pos;
@@ -44,7 +44,9 @@ struct EnemyRules {
 };
 
 struct Backdrop {
-    std::vector<glm::dvec2> mountains;  // (azimuth degrees 0..360, height in degrees above horizon)
+    // (azimuth degrees 0..360, height in degrees above horizon). Azimuths here are compass
+    // bearings: 0 towards -z, 90 towards +x, clockwise seen from above.
+    std::vector<glm::dvec2> mountains;
     bool volcano = true;
     double volcano_azimuth_deg = 60.0;
     bool moon = true;

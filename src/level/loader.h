@@ -7,6 +7,8 @@
 #include <string_view>
 #include <vector>
 
+#include <glm/glm.hpp>
+
 #include "core/paths.h"
 #include "level/diagnostic.h"
 #include "level/level.h"
@@ -39,6 +41,10 @@ struct LoadResult {
 LoadResult load_level_string(std::string_view text, const std::filesystem::path& file_for_messages,
                              const LoadOptions& options = {});
 LoadResult load_level_file(const std::filesystem::path& file, const LoadOptions& options = {});
+
+// The skyline (azimuth, height in degrees) a level gets when it does not set
+// backdrop.mountains.
+std::vector<glm::dvec2> default_mountains();
 
 // levels/classic.toml under the project root.
 std::filesystem::path default_level_path();

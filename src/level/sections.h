@@ -38,9 +38,6 @@ void read_render(const toml::table& root, Level& level, Diagnostics& diag);
 void read_obstacles(const toml::table& root, Level& level, glm::vec3 default_color, ReadContext& ctx);
 void read_camera_path(const toml::table& root, Level& level, ReadContext& ctx);
 
-// The skyline a level gets when it does not set backdrop.mountains.
-std::vector<glm::dvec2> default_mountains();
-
 // Limits shared by several readers (world units unless named otherwise).
 inline constexpr Range kHeightRange{-100.0, 1000.0};
 inline constexpr Range kHeadingRange{-360.0, 360.0};

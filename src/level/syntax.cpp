@@ -106,6 +106,15 @@ SyntaxResult parse_toml(std::string_view text, const std::string& file, std::siz
     std::string work(text);
     int blanked_through = 0;
     for (;;) {
+        if (const auto unsafe = find_unsafe_char(work)) {
+            const SourcePos at = position_of_offset(work, unsafe->offset, file);
+            result.errors.push_back({at, std::string("syntax error: ") + unsafe->why});
+            if (result.errors.size() >= max_errors || at.line <= blanked_through) return result;
+            const int last = blank_statement(work, at.line);
+            if (last == 0) return result;
+            blanked_through = last;
+            continue;
+        }
         try {
             toml::table table = toml::parse(std::string_view(work), std::string_view(file));
             if (result.errors.empty()) result.table = std::move(table);

@@ -8,12 +8,22 @@ bool starts_with_at(std::string_view text, std::size_t i, std::string_view what)
     return text.substr(i, what.size()) == what;
 }
 
+bool opens_string(char previous) {
+    return previous == ' ' || previous == '\t' || previous == '\n' || previous == '\r' ||
+           previous == '=' || previous == '[' || previous == '{' || previous == ',';
+}
+
 // Steps over one character (or a three-quote delimiter); returns how many were consumed.
 std::size_t step(std::string_view text, std::size_t i, ScanState& s) {
     using In = ScanState::In;
     const char c = text[i];
     switch (s.in) {
         case In::code:
+            if ((c == '"' || c == '\'') && !opens_string(s.previous_code)) {
+                s.previous_code = c;
+                return 1;
+            }
+            s.previous_code = c;
             if (c == '#') {
                 s.in = In::comment;
             } else if (c == '"') {
@@ -35,7 +45,10 @@ std::size_t step(std::string_view text, std::size_t i, ScanState& s) {
             }
             return 1;
         case In::comment:
-            if (c == '\n') s.in = In::code;
+            if (c == '\n') {
+                s.in = In::code;
+                s.previous_code = c;
+            }
             return 1;
         case In::basic:
         case In::multiline_basic:
@@ -45,17 +58,23 @@ std::size_t step(std::string_view text, std::size_t i, ScanState& s) {
                 s.escaped = true;
             } else if (s.in == In::basic && (c == '"' || c == '\n')) {
                 s.in = In::code;
+                s.previous_code = c;
             } else if (s.in == In::multiline_basic && starts_with_at(text, i, "\"\"\"")) {
                 s.in = In::code;
+                s.previous_code = c;
                 return 3;
             }
             return 1;
         case In::literal:
-            if (c == '\'' || c == '\n') s.in = In::code;
+            if (c == '\'' || c == '\n') {
+                s.in = In::code;
+                s.previous_code = c;
+            }
             return 1;
         case In::multiline_literal:
             if (starts_with_at(text, i, "'''")) {
                 s.in = In::code;
+                s.previous_code = c;
                 return 3;
             }
             return 1;
@@ -98,6 +117,47 @@ std::optional<DeepKey> find_deep_key(std::string_view text, int max_dots) {
                 stretch_start = i + 1;
             } else if (c == '.') {
                 if (++dots > max_dots) return DeepKey{stretch_start, dots};
+            }
+        }
+        i += step(text, i, state);
+    }
+    return std::nullopt;
+}
+
+std::optional<UnsafeChar> find_unsafe_char(std::string_view text) {
+    using In = ScanState::In;
+    ScanState state;
+    // A byte order mark may open the file; toml++ skips it before parsing.
+    std::size_t i = text.substr(0, 3) == "\xEF\xBB\xBF" ? 3 : 0;
+    bool skipping = false;  // after a line-ending backslash in a multi-line basic string
+    while (i < text.size()) {
+        const auto c = static_cast<unsigned char>(text[i]);
+        const bool ascii = c < 0x80;
+        if (state.in == In::code && !ascii) {
+            return UnsafeChar{i, "non-ASCII character outside a string or comment"};
+        }
+        if (state.in == In::multiline_basic) {
+            if (skipping) {
+                if (c == ' ' || c == '\t' || c == '\r' || c == '\n') {
+                    ++i;
+                    continue;
+                }
+                skipping = false;
+                if (!ascii) {
+                    return UnsafeChar{i, "non-ASCII character right after a line-ending backslash "
+                                         "in a multi-line string (put it before the backslash)"};
+                }
+            } else if (state.escaped) {
+                if (!ascii) {
+                    return UnsafeChar{i, "non-ASCII character after a backslash in a string "
+                                         "(not an escape sequence)"};
+                }
+                if (c == ' ' || c == '\t' || c == '\r' || c == '\n') {
+                    state.escaped = false;
+                    skipping = true;
+                    ++i;
+                    continue;
+                }
             }
         }
         i += step(text, i, state);

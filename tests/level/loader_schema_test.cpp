@@ -318,11 +318,16 @@ TEST(LoaderSchema, MountainsMustIncreaseInAzimuth) {
                               4, 32, "mountain azimuths must increase: 40 follows 50"));
     EXPECT_TRUE(has_one_error(load(level_text("[backdrop]\nmountains = [[0, 1], [50]]\n")), 4, 22,
                               "each mountain point must be [azimuth, height]"));
-    EXPECT_TRUE(has_one_error(load(level_text("[backdrop]\nmountains = [[0, 45]]\n")), 4, 18,
+    EXPECT_TRUE(has_one_error(load(level_text("[backdrop]\nmountains = [[0, 45], [10, 1]]\n")), 4, 18,
                               "mountain height must be between 0 and 30, not 45"));
-    const auto flat = load(level_text("[backdrop]\nmountains = []\n"));
+    EXPECT_TRUE(has_one_error(load(level_text("[backdrop]\nmountains = []\n")), 4, 13,
+                              "'mountains' needs at least 2 points; for a flat horizon"));
+    const auto flat = load(level_text("[backdrop]\nmountains = [[0, 0], [360, 0]]\n"));
     ASSERT_TRUE(flat.ok());
-    EXPECT_TRUE(flat.level->backdrop.mountains.empty());
+    EXPECT_EQ(flat.level->backdrop.mountains.size(), 2u);
+    const auto absent = load(level_text(""));
+    ASSERT_TRUE(absent.ok());
+    EXPECT_EQ(absent.level->backdrop.mountains, default_mountains());
 }
 
 TEST(LoaderSchema, CameraKeys) {
