@@ -8,7 +8,7 @@
 #include "app/resource_limits.h"
 #include "core/error.h"
 #include "core/image_io.h"
-#include "geometry/import.h"
+#include "app/model_source.h"
 #include "geometry/line_mesh.h"
 #include "render/renderer.h"
 
@@ -21,7 +21,7 @@ constexpr const char* kUsage =
     "                       [--near N] [--far F] [--size WxH] [--preset fast|balanced|high]\n"
     "                       [--style occluded|arcade] [--color r,g,b] [--out frame.png]\n"
     "                       [--mask mask.png] [--repeat N]\n"
-    "Renders a model file headless to PNG. Without --eye the camera frames the model's bounding\n"
+    "Renders a model file (or builtin:cube, builtin:sphere, builtin:grid) headless to PNG. Without --eye the camera frames the model's bounding\n"
     "box from a 3/4 view. --mask writes the 1-pixel visible-spine mask (255 = line).\n"
     "--repeat N renders N timed frames and prints the mean milliseconds of each pass.\n";
 
@@ -144,7 +144,7 @@ int cmd_render(Args args) {
     }
     limit_memory_for_untrusted_input();
     geo::MeshReport report;
-    geo::AdjacencyMesh mesh = geo::build_line_mesh(geo::import_model(o.input), &report);
+    geo::AdjacencyMesh mesh = geo::build_line_mesh(load_model_source(o.input), &report);
     if (mesh.triangle_count() == 0) throw UserError(o.input + ": no usable triangles");
 
     auto context = make_headless_context();
