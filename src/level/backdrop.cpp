@@ -28,7 +28,7 @@ void read_backdrop(const toml::table& root, Level& level, ReadContext& ctx) {
     level.backdrop.mountains = default_mountains();
     const toml::table* t = section(root, "backdrop", ctx.diag);
     if (!t) return;
-    TableReader r(*t, "[backdrop]", kBackdropKeys, ctx.diag);
+    TableReader r(*t, "[backdrop]", kBackdropKeys, ctx.diag, root_keys());
     Backdrop& b = level.backdrop;
     if (const toml::node* node = r.get("mountains")) {
         const auto* list = node->as_array();

@@ -27,7 +27,7 @@ void read_camera_path(const toml::table& root, Level& level, ReadContext& ctx) {
             ctx.diag.error(item.source(), "each camera key must be a table, not " + std::string(type_name(item)));
             continue;
         }
-        TableReader r(*t, "camera key " + std::to_string(i + 1), kCameraKeys, ctx.diag);
+        TableReader r(*t, "camera key " + std::to_string(i + 1), kCameraKeys, ctx.diag, root_keys());
         bool ok = true;
         for (const std::string_view key : kCameraKeys) {
             if (!r.has(key)) {

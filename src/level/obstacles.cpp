@@ -67,7 +67,7 @@ void read_obstacles(const toml::table& root, Level& level, glm::vec3 default_col
             ctx.diag.error(item.source(), "each obstacle must be a table, not " + std::string(type_name(item)));
             continue;
         }
-        TableReader r(*t, "obstacle " + std::to_string(number), kObstacleKeys, ctx.diag);
+        TableReader r(*t, "obstacle " + std::to_string(number), kObstacleKeys, ctx.diag, root_keys());
         ObjectDesc o;
         o.pos = r.where();
         o.color = default_color;

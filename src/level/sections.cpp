@@ -61,7 +61,7 @@ const toml::array* table_array(const toml::table& root, std::string_view key, st
 void read_field(const toml::table& root, Level& level, glm::vec3& obstacle_color, Diagnostics& diag) {
     const toml::table* t = section(root, "field", diag);
     if (!t) return;
-    TableReader r(*t, "[field]", kFieldKeys, diag);
+    TableReader r(*t, "[field]", kFieldKeys, diag, kRootKeys);
     if (auto v = r.number("size", {kMinFieldSize, kMaxFieldSize})) level.field_size = *v;
     if (auto v = r.boolean("wrap")) level.wrap = *v;
     if (auto v = r.color("obstacle_color")) obstacle_color = *v;
@@ -70,7 +70,7 @@ void read_field(const toml::table& root, Level& level, glm::vec3& obstacle_color
 void read_player(const toml::table& root, Level& level, Diagnostics& diag) {
     const toml::table* t = section(root, "player", diag);
     if (!t) return;
-    TableReader r(*t, "[player]", kPlayerKeys, diag);
+    TableReader r(*t, "[player]", kPlayerKeys, diag, kRootKeys);
     const double half = level.field_size / 2.0;
     if (auto v = r.vec3("position", {Range{-half, half}, kHeightRange, Range{-half, half}})) {
         level.player_start = *v;
@@ -87,7 +87,7 @@ void read_enemies(const toml::table& root, Level& level, Diagnostics& diag) {
     e.spawn_min_distance = std::min(e.spawn_min_distance, e.spawn_max_distance);
     const toml::table* t = section(root, "enemies", diag);
     if (!t) return;
-    TableReader r(*t, "[enemies]", kEnemyKeys, diag);
+    TableReader r(*t, "[enemies]", kEnemyKeys, diag, kRootKeys);
     if (const toml::node* node = r.get("types")) {
         if (const auto* list = node->as_array()) {
             e.slow_tank = e.super_tank = e.missile = e.saucer = false;
@@ -143,7 +143,7 @@ void read_enemies(const toml::table& root, Level& level, Diagnostics& diag) {
 void read_render(const toml::table& root, Level& level, Diagnostics& diag) {
     const toml::table* t = section(root, "render", diag);
     if (!t) return;
-    TableReader r(*t, "[render]", kRenderKeys, diag);
+    TableReader r(*t, "[render]", kRenderKeys, diag, kRootKeys);
     RenderSettings& s = level.render;
     if (auto v = r.choice("style", kStyles)) s.style = *v;
     if (auto v = r.choice("preset", kPresets)) s.preset = *v;

@@ -71,12 +71,25 @@ std::optional<double> read_number(const toml::node& node, std::string_view name,
 }
 
 TableReader::TableReader(const toml::table& table, std::string what,
-                         std::span<const std::string_view> allowed, Diagnostics& diagnostics)
+                         std::span<const std::string_view> allowed, Diagnostics& diagnostics,
+                         std::span<const std::string_view> top_level)
     : table_(table), what_(std::move(what)), diag_(diagnostics) {
+    const auto contains = [](std::span<const std::string_view> keys, std::string_view k) {
+        for (const auto a : keys) {
+            if (a == k) return true;
+        }
+        return false;
+    };
     for (const auto& [key, value] : table_) {
-        bool known = false;
-        for (const auto a : allowed) known = known || a == key.str();
-        if (known) continue;
+        if (contains(allowed, key.str())) continue;
+        if (contains(top_level, key.str())) {
+            // TOML puts every key after a [header] into that table, a classic trap.
+            diag_.error(key.source(), "unknown key " + quote(key.str()) + " in " + what_ + "; '" +
+                                          std::string(key.str()) +
+                                          "' belongs at the top level: move it above the first "
+                                          "[table] header");
+            continue;
+        }
         diag_.error(key.source(), "unknown key " + quote(key.str()) + " in " + what_ +
                                       did_you_mean(key.str(), allowed));
     }

@@ -48,9 +48,10 @@ std::string number_text(double value);
 class TableReader {
 public:
     // `what` names the table in messages ("[field]", "obstacle 3"). Keys not in `allowed`
-    // are reported at once, with a suggestion.
+    // are reported at once, with a suggestion. A key from `top_level` found here was most
+    // likely written below a [table] header by mistake, and the message says so.
     TableReader(const toml::table& table, std::string what, std::span<const std::string_view> allowed,
-                Diagnostics& diagnostics);
+                Diagnostics& diagnostics, std::span<const std::string_view> top_level = {});
 
     const toml::node* get(std::string_view key) const { return table_.get(key); }
     bool has(std::string_view key) const { return table_.contains(key); }

@@ -156,6 +156,12 @@ TEST(LoaderSchema, UnknownKeyInObstacleSuggestsTheClosest) {
     EXPECT_TRUE(has_one_error(r, 6, 1, "unknown key 'headng' in obstacle 1; did you mean 'heading'?"));
 }
 
+TEST(LoaderSchema, TopLevelKeyBelowATableHeaderIsExplained) {
+    const auto r = load(level_text("[render]\nstyle = \"arcade\"\nauthor = \"me\"\n"));
+    EXPECT_TRUE(has_one_error(r, 5, 1, "unknown key 'author' in [render]; 'author' belongs at the top "
+                                       "level: move it above the first [table] header"));
+}
+
 TEST(LoaderSchema, UnknownKeyFarFromAllGetsNoSuggestion) {
     const auto r = load(level_text("[field]\nzzzzzzzz = 1\n"));
     ASSERT_TRUE(has_one_error(r, 4, 1, "unknown key 'zzzzzzzz'"));
