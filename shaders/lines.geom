@@ -7,11 +7,21 @@ layout(triangle_strip, max_vertices = 12) out;
 
 in VertexData {
     vec3 view_pos;
-    vec3 object_pos;
     flat uint vertex_id;
-    flat vec4 color;
-    flat float cos_crease;
+    flat uint instance;
 } v_in[];
+
+// Cosine of the dihedral angle of each triangle edge, precomputed from object-space normals
+// on the CPU (view-independent); 2.0 on edges without a usable neighbour.
+layout(std430, binding = 0) readonly buffer EdgeCosines { float edge_cos[]; };
+
+// The frame's per-instance data (render::InstanceData): 6 vec4 each, the model-view matrix in
+// the first four, then colour (rgb * intensity), then parameters (x: cos(crease angle)).
+layout(std430, binding = 1) readonly buffer Instances { vec4 instance_data[]; };
+vec4 instance_color(uint i) { return instance_data[i * 6u + 4u]; }
+vec4 instance_params(uint i) { return instance_data[i * 6u + 5u]; }
+
+uniform int u_edges_to_test;  // always 3; a uniform bound stops the compiler unrolling the loop
 
 uniform mat4 u_proj;
 uniform vec2 u_viewport;       // pixels
@@ -104,7 +114,7 @@ void emit_edge(int i0, int i1, int kind, vec4 face, vec4 other, vec3 opp) {
     g_p0 = s0;
     g_p1 = s1;
     g_inv_depth = vec2(1.0 / ca.w, 1.0 / cb.w);
-    g_color = v_in[0].color.rgb;
+    g_color = instance_color(v_in[0].instance).rgb;
     vec2 corners[4] = vec2[4](s0 - dir * h - nrm * h, s0 - dir * h + nrm * h,
                               s1 + dir * h - nrm * h, s1 + dir * h + nrm * h);
     for (int k = 0; k < 4; ++k) {
@@ -119,34 +129,28 @@ void main() {
     vec3 p0 = v_in[0].view_pos, p2 = v_in[2].view_pos, p4 = v_in[4].view_pos;
     vec3 n_view = face_normal(p0, p2, p4);
     bool front = dot(n_view, -p0) > 0.0;
-    vec3 n_obj = face_normal(v_in[0].object_pos, v_in[2].object_pos, v_in[4].object_pos);
-    float n_obj_len = length(n_obj);
-    n_obj = n_obj_len > 1e-30 ? n_obj / n_obj_len : vec3(0.0);
-    float cos_crease = v_in[0].cos_crease;
+    vec4 face = plane_of(n_view, p0);
+    float cos_crease = instance_params(v_in[0].instance).x;
+    int base = gl_PrimitiveIDIn * 3;
 
-    for (int e = 0; e < 3; ++e) {
+    for (int e = 0; e < u_edges_to_test; ++e) {
         int i0 = 2 * e, iadj = 2 * e + 1, i1 = (2 * e + 2) % 6, iopp = (2 * e + 4) % 6;
-        vec4 face = plane_of(n_view, p0);
-        vec3 opp = v_in[iopp].view_pos;
+        int kind = -1;  // 0 crease, 1 silhouette, 2 boundary-like
+        vec4 other = vec4(0.0);
         if (v_in[iadj].vertex_id == v_in[i0].vertex_id) {
-            // Boundary, non-manifold or inconsistently wound: always a feature edge.
-            emit_edge(i0, i1, 2, face, vec4(0.0), opp);
-            continue;
+            kind = 2;  // boundary, non-manifold or inconsistently wound: always a feature edge
+        } else {
+            vec3 a = v_in[i0].view_pos, q = v_in[iadj].view_pos, b = v_in[i1].view_pos;
+            vec3 n_nb = face_normal(a, q, b);
+            bool neighbour_front = dot(n_nb, -a) > 0.0;
+            if (front && !neighbour_front) {
+                kind = 1;  // silhouette, emitted by the front face
+            } else if (front == neighbour_front && v_in[i0].vertex_id < v_in[i1].vertex_id &&
+                       edge_cos[base + e] < cos_crease) {
+                kind = 0;  // crease, emitted once: by the face that sees the edge low -> high
+                other = plane_of(n_nb, q);
+            }
         }
-        vec3 q = v_in[iadj].view_pos;
-        bool neighbour_front = front_facing(v_in[i0].view_pos, q, v_in[i1].view_pos);
-        if (front && !neighbour_front) {
-            emit_edge(i0, i1, 1, face, vec4(0.0), opp);  // silhouette, emitted by the front face
-            continue;
-        }
-        if (front != neighbour_front) continue;  // silhouette owned by the other face
-        if (v_in[i0].vertex_id > v_in[i1].vertex_id) continue;  // each crease once
-        vec3 m_obj = face_normal(v_in[i0].object_pos, v_in[iadj].object_pos, v_in[i1].object_pos);
-        float m_len = length(m_obj);
-        if (m_len < 1e-30 || n_obj_len < 1e-30) continue;
-        if (dot(n_obj, m_obj / m_len) < cos_crease) {
-            vec4 other = plane_of(face_normal(v_in[i0].view_pos, q, v_in[i1].view_pos), q);
-            emit_edge(i0, i1, 0, face, other, opp);
-        }
+        if (kind >= 0) emit_edge(i0, i1, kind, face, other, v_in[iopp].view_pos);
     }
 }

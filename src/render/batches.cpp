@@ -27,11 +27,19 @@ bool outside_frustum(const glm::dvec3& c, double r, const CameraMatrices& cam) {
 
 }  // namespace
 
+// Below this projected radius (pixels) an object keeps only its strongest creases and is
+// drawn from its simplified mesh.
+constexpr double kFarRadiusPx = 40.0;
+
+int lod_level(const RenderSettings& s, double radius_px) {
+    return s.lod && radius_px < kFarRadiusPx ? 1 : 0;
+}
+
 float lod_cos_crease(const RenderSettings& s, double radius_px) {
     double angle = s.crease_angle_deg;
     if (s.lod) {
         if (radius_px < 6.0) return -2.0f;  // below any cosine: no creases at all
-        if (radius_px < 40.0) angle = std::max(angle, 80.0);
+        if (radius_px < kFarRadiusPx) angle = std::max(angle, 80.0);
     }
     return static_cast<float>(std::cos(glm::radians(angle)));
 }
@@ -42,6 +50,7 @@ FrameBatches build_batches(const scene::FrameList& frame, const scene::MeshLibra
     FrameBatches out;
     struct Visible {
         std::size_t item;
+        int lod;
         InstanceData data;
     };
     std::vector<Visible> visible;
@@ -63,25 +72,28 @@ FrameBatches build_batches(const scene::FrameList& frame, const scene::MeshLibra
         d.model_view = glm::mat4(mv);
         d.color = glm::vec4(item.color * item.intensity, 1.0f);
         d.params = glm::vec4(lod_cos_crease(settings, radius_px), 0.0f, 0.0f, 0.0f);
-        visible.push_back({i, d});
+        visible.push_back({i, lod_level(settings, radius_px), d});
     }
-    // Group by (mesh, occluder) so each group is one instanced draw; stable keeps the
+    // Group by (mesh, lod, occluder) so each group is one instanced draw; stable keeps the
     // frame list's order inside a group, which keeps results deterministic.
     std::stable_sort(visible.begin(), visible.end(), [&](const Visible& a, const Visible& b) {
         const auto& ia = frame.items[a.item];
         const auto& ib = frame.items[b.item];
         if (ia.mesh != ib.mesh) return ia.mesh < ib.mesh;
+        if (a.lod != b.lod) return a.lod < b.lod;
         return ia.occluder > ib.occluder;
     });
     out.instances.reserve(visible.size());
     for (const Visible& v : visible) {
         const auto& item = frame.items[v.item];
-        if (out.batches.empty() || out.batches.back().mesh != item.mesh ||
-            out.batches.back().occluder != item.occluder) {
-            out.batches.push_back({item.mesh, static_cast<GLuint>(out.instances.size()), 0, item.occluder});
+        if (out.batches.empty() || !settings.instancing || out.batches.back().mesh != item.mesh ||
+            out.batches.back().lod != v.lod || out.batches.back().occluder != item.occluder) {
+            out.batches.push_back(
+                {item.mesh, static_cast<GLuint>(out.instances.size()), 0, item.occluder, v.lod});
         }
         ++out.batches.back().instance_count;
         out.instances.push_back(v.data);
+        out.instances.back().params.y = static_cast<float>(out.instances.size() - 1);
         out.stats.triangles_submitted += meshes.mesh(item.mesh).triangle_count();
     }
     out.stats.objects_drawn = visible.size();

@@ -1,7 +1,8 @@
 #pragma once
 // Turns a frame list into instanced draws: culls objects outside the view frustum, computes
 // camera-relative model-view matrices in double, picks a per-instance crease threshold for
-// distance LOD, and groups instances by mesh so each mesh is one instanced draw.
+// distance LOD, and groups instances by mesh so each mesh is one instanced draw (unless
+// RenderSettings::instancing is off: then every object is its own draw).
 #include <vector>
 
 #include "render/camera_math.h"
@@ -15,6 +16,7 @@ struct Batch {
     GLuint first_instance = 0;
     GLsizei instance_count = 0;
     bool occluder = true;
+    int lod = 0;  // 1: the mesh's simplified version (MeshCache::get)
 };
 
 struct FrameBatches {
@@ -31,5 +33,7 @@ FrameBatches build_batches(const scene::FrameList& frame, const scene::MeshLibra
 // objects keep only their strongest creases, tiny ones only silhouettes (seed 000: far models
 // look cramped with constant-width lines).
 float lod_cos_crease(const RenderSettings& settings, double radius_px);
+// The mesh detail an object gets at that projected radius: 0 full, 1 simplified.
+int lod_level(const RenderSettings& settings, double radius_px);
 
 }  // namespace bz::render

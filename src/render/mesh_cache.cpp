@@ -2,6 +2,10 @@
 
 #include <memory>
 
+#include "geometry/dihedral.h"
+
+#include "geometry/simplify.h"
+
 namespace bz::render {
 
 namespace {
@@ -20,22 +24,35 @@ void instance_attributes(gl::VertexArray& vao, const gl::Buffer& instances, bool
 
 }  // namespace
 
-const GpuMesh& MeshCache::get(const scene::MeshLibrary& library, scene::MeshId id) {
+const GpuMesh& MeshCache::get(const scene::MeshLibrary& library, scene::MeshId id, int lod) {
     if (id >= meshes_.size()) meshes_.resize(id + 1);
-    auto& slot = meshes_[id];
+    Slot& slot = meshes_[id];
     const std::uint32_t version = library.version(id);
-    if (!slot || slot->version != version) {
-        slot = std::make_unique<GpuMesh>();
-        upload(*slot, library.mesh(id));
-        slot->version = version;
+    if (!slot.full || slot.full->version != version) {
+        slot = Slot{};
+        slot.full = std::make_unique<GpuMesh>();
+        upload(*slot.full, library.mesh(id));
+        slot.full->version = version;
     }
-    return *slot;
+    if (lod <= 0) return *slot.full;
+    if (!slot.simplify_tried) {
+        slot.simplify_tried = true;
+        if (auto reduced = geo::simplify_line_mesh(library.mesh(id))) {
+            slot.simplified = std::make_unique<GpuMesh>();
+            upload(*slot.simplified, *reduced);
+            slot.simplified->version = version;
+        }
+    }
+    return slot.simplified ? *slot.simplified : *slot.full;
 }
 
 void MeshCache::upload(GpuMesh& gpu, const geo::AdjacencyMesh& mesh) {
+    ++uploads_;
     gpu.positions.set(std::span<const glm::vec3>(mesh.positions), GL_STATIC_DRAW);
     gpu.adjacency.set(std::span<const std::uint32_t>(mesh.adjacency), GL_STATIC_DRAW);
     gpu.triangles.set(std::span<const std::uint32_t>(mesh.triangles), GL_STATIC_DRAW);
+    const std::vector<float> cosines = geo::edge_dihedral_cosines(mesh);
+    gpu.edge_cosines.set(std::span<const float>(cosines), GL_STATIC_DRAW);
     gpu.adjacency_count = static_cast<GLsizei>(mesh.adjacency.size());
     gpu.triangle_index_count = static_cast<GLsizei>(mesh.triangles.size());
 

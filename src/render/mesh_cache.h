@@ -2,6 +2,9 @@
 // One GPU mesh per scene::MeshId, shared by all its instances: welded positions, the
 // adjacency index buffer for the line pass and a plain triangle index buffer for the prepass.
 // Both vertex arrays read per-instance data from one shared instance buffer (binding 1).
+// Distance LOD: a mesh may also have a simplified GPU mesh (geo::simplify_line_mesh), built
+// the first time a far instance asks for it.
+#include <memory>
 #include <vector>
 
 #include "gl/buffer.h"
@@ -14,30 +17,41 @@ namespace bz::render {
 struct InstanceData {
     glm::mat4 model_view;
     glm::vec4 color;
-    glm::vec4 params;  // x: cos(crease angle)
+    glm::vec4 params;  // x: cos(crease angle), y: this instance's index in the buffer
 };
 
 struct GpuMesh {
     gl::Buffer positions;
     gl::Buffer adjacency;
     gl::Buffer triangles;
+    gl::Buffer edge_cosines;  // 3 per triangle, read by the geometry shader (binding 0)
     gl::VertexArray lines_vao;
     gl::VertexArray prepass_vao;
     std::uint32_t version = 0;
     GLsizei adjacency_count = 0;
     GLsizei triangle_index_count = 0;
+    std::size_t triangle_count() const { return static_cast<std::size_t>(triangle_index_count) / 3; }
 };
 
 class MeshCache {
 public:
     explicit MeshCache(const gl::Buffer& instances) : instances_(&instances) {}
-    // Uploads on first use and when the library's version for `id` changed.
-    const GpuMesh& get(const scene::MeshLibrary& library, scene::MeshId id);
+    // Uploads on first use and when the library's version for `id` changed. lod 1 is the
+    // simplified mesh when the mesh has one, else the mesh itself.
+    const GpuMesh& get(const scene::MeshLibrary& library, scene::MeshId id, int lod = 0);
+    // GPU meshes uploaded so far (each model once, plus its simplified version if used).
+    std::size_t uploads() const { return uploads_; }
 
 private:
+    struct Slot {
+        std::unique_ptr<GpuMesh> full;
+        std::unique_ptr<GpuMesh> simplified;  // null: none built yet, or none possible
+        bool simplify_tried = false;
+    };
     void upload(GpuMesh& gpu, const geo::AdjacencyMesh& mesh);
     const gl::Buffer* instances_;
-    std::vector<std::unique_ptr<GpuMesh>> meshes_;
+    std::vector<Slot> meshes_;
+    std::size_t uploads_ = 0;
 };
 
 }  // namespace bz::render

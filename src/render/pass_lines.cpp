@@ -13,6 +13,7 @@ void set_line_uniforms(const gl::Program& p, const PassContext& ctx, float half_
     p.set("u_far", ctx.cam.far);
     p.set("u_depth_bias", s.depth_bias);
     p.set("u_depth", 0);
+    p.set("u_edges_to_test", 3);  // a uniform loop bound: keeps one copy of the emit code
     p.set("u_occlusion", ctx.occlusion ? 1 : 0);
     p.set("u_spine_samples", s.spine_samples);
     p.set("u_proj_a", ctx.cam.proj_a);
@@ -38,8 +39,10 @@ void pass_lines(const PassContext& ctx, bool mask_mode) {
     // The mask needs only the pixels the spine crosses: a quad one pixel to each side.
     set_line_uniforms(program, ctx, mask_mode ? 1.0f : ctx.settings.line_half_width_px);
     ctx.targets.depth.bind(0);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, ctx.instances.id());
     for (const Batch& b : ctx.batches.batches) {
-        const GpuMesh& mesh = ctx.gpu_meshes.get(ctx.meshes, b.mesh);
+        const GpuMesh& mesh = ctx.gpu_meshes.get(ctx.meshes, b.mesh, b.lod);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, mesh.edge_cosines.id());
         mesh.lines_vao.bind();
         glDrawElementsInstancedBaseInstance(GL_TRIANGLES_ADJACENCY, mesh.adjacency_count,
                                             GL_UNSIGNED_INT, nullptr, b.instance_count, b.first_instance);

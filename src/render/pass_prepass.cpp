@@ -20,7 +20,7 @@ void pass_prepass(const PassContext& ctx) {
     ctx.programs.prepass.set("u_proj", ctx.cam.proj);
     for (const Batch& b : ctx.batches.batches) {
         if (!b.occluder) continue;
-        const GpuMesh& mesh = ctx.gpu_meshes.get(ctx.meshes, b.mesh);
+        const GpuMesh& mesh = ctx.gpu_meshes.get(ctx.meshes, b.mesh, b.lod);
         mesh.prepass_vao.bind();
         glDrawElementsInstancedBaseInstance(GL_TRIANGLES, mesh.triangle_index_count, GL_UNSIGNED_INT,
                                             nullptr, b.instance_count, b.first_instance);

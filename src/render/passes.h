@@ -21,6 +21,7 @@ struct PassContext {
     const RenderSettings& settings;
     bool occlusion;                       // false in the arcade style
     const gl::VertexArray& empty_vao;     // for full-screen triangles
+    const gl::Buffer& instances;          // the frame's InstanceData, also read as an SSBO
 };
 
 void pass_prepass(const PassContext& ctx);
@@ -29,5 +30,8 @@ void pass_lines(const PassContext& ctx, bool mask_mode);
 void pass_hud(const PassContext& ctx, const gl::VertexArray& hud_vao, GLsizei vertex_count);
 void pass_bloom(const PassContext& ctx);
 void pass_composite(const PassContext& ctx, GLuint target_fbo, int width, int height);
+// The image-space outline baseline (LineMethod::image_outline), in place of prepass + lines.
+void pass_outline_prepass(const PassContext& ctx);
+void pass_image_outline(const PassContext& ctx, bool mask_mode);
 
 }  // namespace bz::render

@@ -15,6 +15,9 @@ struct Programs {
     gl::Program bloom_down;
     gl::Program bloom_blur;
     gl::Program composite;
+    gl::Program outline_prepass;     // image-space baseline: depth + face normals
+    gl::Program image_outline;       // ... Sobel into the lines target
+    gl::Program image_outline_mask;  // ... Sobel into the mask
 };
 
 // Throws UserError naming file:line:col of every compile error. The bloom kernel is baked

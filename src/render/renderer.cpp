@@ -42,6 +42,12 @@ struct Renderer::Impl {
                          const CameraMatrices& cam) {
         FrameBatches b = build_batches(frame, meshes, cam, settings, height);
         instances.set(std::span<const InstanceData>(b.instances), GL_STREAM_DRAW);
+        // Far objects may draw a simplified mesh: count what is really submitted.
+        b.stats.triangles_submitted = 0;
+        for (const Batch& batch : b.batches) {
+            b.stats.triangles_submitted += gpu_meshes.get(meshes, batch.mesh, batch.lod).triangle_count() *
+                                           static_cast<std::size_t>(batch.instance_count);
+        }
         return b;
     }
 
@@ -73,7 +79,8 @@ void Renderer::resize(int width, int height) {
 
 void Renderer::set_settings(const RenderSettings& settings) {
     const bool remake = settings.depth != impl_->settings.depth ||
-                        settings.bloom_resolution != impl_->settings.bloom_resolution;
+                        settings.bloom_resolution != impl_->settings.bloom_resolution ||
+                        settings.method != impl_->settings.method;
     const bool new_kernel = settings.bloom_taps != impl_->settings.bloom_taps ||
                             settings.bloom_sigma_px != impl_->settings.bloom_sigma_px;
     if (new_kernel) impl_->programs.bloom_blur = load_bloom_blur(settings);
@@ -91,26 +98,36 @@ void Renderer::render(const scene::FrameList& frame, const scene::MeshLibrary& m
     const GLsizei hud_count = m.upload_hud(frame.hud);
     const bool occlusion = frame.style == scene::LineStyle::occluded;
     const PassContext ctx{m.programs, m.targets, m.gpu_meshes, meshes, batches,
-                          cam,        m.settings, occlusion, m.empty_vao};
+                          cam,        m.settings, occlusion, m.empty_vao, m.instances};
     m.stats = batches.stats;
     const GLuint target = target_fbo == kOffscreen ? m.targets.output_fbo.id() : target_fbo;
     m.last_target = target;
 
     m.timer.begin_frame();
-    m.timer.begin("prepass");
-    pass_prepass(ctx);
-    m.timer.end();
+    if (m.settings.method == LineMethod::image_outline) {
+        // The baseline finds no edges as such: feature_edges stays 0.
+        m.timer.begin("prepass");
+        pass_outline_prepass(ctx);
+        m.timer.end();
+        m.timer.begin("outline");
+        pass_image_outline(ctx, false);
+        m.timer.end();
+    } else {
+        m.timer.begin("prepass");
+        pass_prepass(ctx);
+        m.timer.end();
 
-    m.timer.begin("lines");
-    if (m.settings.count_edges) glBeginQuery(GL_PRIMITIVES_GENERATED, m.edge_query);
-    pass_lines(ctx, false);
-    if (m.settings.count_edges) {
-        glEndQuery(GL_PRIMITIVES_GENERATED);
-        GLuint64 prims = 0;
-        glGetQueryObjectui64v(m.edge_query, GL_QUERY_RESULT, &prims);
-        m.stats.feature_edges = static_cast<std::size_t>(prims / 2);  // two triangles per quad
+        m.timer.begin("lines");
+        if (m.settings.count_edges) glBeginQuery(GL_PRIMITIVES_GENERATED, m.edge_query);
+        pass_lines(ctx, false);
+        if (m.settings.count_edges) {
+            glEndQuery(GL_PRIMITIVES_GENERATED);
+            GLuint64 prims = 0;
+            glGetQueryObjectui64v(m.edge_query, GL_QUERY_RESULT, &prims);
+            m.stats.feature_edges = static_cast<std::size_t>(prims / 2);  // two triangles per quad
+        }
+        m.timer.end();
     }
-    m.timer.end();
 
     m.timer.begin("hud");
     pass_hud(ctx, m.hud_vao, hud_count);
@@ -133,9 +150,14 @@ std::vector<std::uint8_t> Renderer::render_mask(const scene::FrameList& frame,
     const FrameBatches batches = m.prepare(frame, meshes, cam);
     const bool occlusion = frame.style == scene::LineStyle::occluded;
     const PassContext ctx{m.programs, m.targets, m.gpu_meshes, meshes, batches,
-                          cam,        m.settings, occlusion, m.empty_vao};
-    pass_prepass(ctx);
-    pass_lines(ctx, true);
+                          cam,        m.settings, occlusion, m.empty_vao, m.instances};
+    if (m.settings.method == LineMethod::image_outline) {
+        pass_outline_prepass(ctx);
+        pass_image_outline(ctx, true);
+    } else {
+        pass_prepass(ctx);
+        pass_lines(ctx, true);
+    }
     std::vector<std::uint8_t> rows(static_cast<std::size_t>(m.width) * m.height);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     glGetTextureImage(m.targets.mask.id(), 0, GL_RED, GL_UNSIGNED_BYTE,
@@ -166,6 +188,21 @@ std::vector<std::uint8_t> Renderer::read_color() {
     return out;
 }
 
+std::vector<float> Renderer::read_lines_hdr() {
+    Impl& m = *impl_;
+    const std::size_t row = static_cast<std::size_t>(m.width) * 4;
+    std::vector<float> rows(row * static_cast<std::size_t>(m.height));
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glGetTextureImage(m.targets.lines.id(), 0, GL_RGBA, GL_FLOAT,
+                      static_cast<GLsizei>(rows.size() * sizeof(float)), rows.data());
+    std::vector<float> out(rows.size());
+    for (int y = 0; y < m.height; ++y) {
+        std::copy_n(rows.begin() + static_cast<std::ptrdiff_t>(static_cast<std::size_t>(y) * row), row,
+                    out.begin() + static_cast<std::ptrdiff_t>(static_cast<std::size_t>(m.height - 1 - y) * row));
+    }
+    return out;
+}
+
 bool Renderer::reload_shaders(std::string* error) {
     try {
         impl_->programs = load_programs(impl_->settings);
@@ -177,6 +214,9 @@ bool Renderer::reload_shaders(std::string* error) {
 }
 
 const std::vector<gl::PassTime>& Renderer::pass_times() const { return impl_->timer.last_results(); }
+int Renderer::pass_times_latency() const { return impl_->timer.latency(); }
+gl::TimingMethod Renderer::timing_method() const { return impl_->timer.method(); }
+std::size_t Renderer::gpu_mesh_uploads() const { return impl_->gpu_meshes.uploads(); }
 const FrameStats& Renderer::stats() const { return impl_->stats; }
 int Renderer::width() const { return impl_->width; }
 int Renderer::height() const { return impl_->height; }

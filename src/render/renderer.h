@@ -47,12 +47,21 @@ public:
     // The final composited colour of the last render(), RGBA8, row 0 at the top (works for
     // kOffscreen and, before the swap, for the window).
     std::vector<std::uint8_t> read_color();
+    // The HDR lines target (lines + HUD, before bloom) of the last render(): RGBA float,
+    // row 0 at the top. For checks such as "no NaN or Inf pixels".
+    std::vector<float> read_lines_hdr();
 
     // Recompiles every shader from shaders/. On error keeps the old programs and returns false
     // with the message (file:line:col) in *error.
     bool reload_shaders(std::string* error);
 
     const std::vector<gl::PassTime>& pass_times() const;
+    // How many frames old pass_times() is after a render() (0 for cpu_finish; the timer
+    // query read-back delay for gpu_queries).
+    int pass_times_latency() const;
+    gl::TimingMethod timing_method() const;
+    // GPU meshes uploaded so far: one per model used, plus simplified ones for distance LOD.
+    std::size_t gpu_mesh_uploads() const;
     const FrameStats& stats() const;
     int width() const;
     int height() const;

@@ -13,6 +13,12 @@ enum class DepthFormat {
 
 enum class BloomResolution { full = 1, half = 2, quarter = 4 };
 
+// How feature lines are found.
+enum class LineMethod {
+    geometry,       // the geometry shader on triangle adjacency, with the spine test (default)
+    image_outline,  // baseline: Sobel edges on the prepass depth and normals (pass_image_outline)
+};
+
 struct RenderSettings {
     std::string preset = "balanced";
     DepthFormat depth = DepthFormat::reversed_f32;
@@ -28,6 +34,10 @@ struct RenderSettings {
     bool frustum_culling = true;
     bool lod = true;                // raise the crease threshold / use simplified meshes far away
     bool count_edges = false;       // count emitted feature edges (costs a query per frame)
+    LineMethod method = LineMethod::geometry;
+    bool instancing = true;         // false: one draw call per object (for measuring batching)
+    // image_outline thresholds: relative depth step, and normal step as a crease angle.
+    float outline_depth_threshold = 0.1f;
 };
 
 // "fast", "balanced" or "high"; throws UserError naming the valid ones otherwise.

@@ -1,0 +1,54 @@
+#include <cmath>
+
+#include "render/passes.h"
+
+namespace bz::render {
+
+// The image-space baseline's prepass: every object (occluders or not, the method cannot tell)
+// into the depth target and a face-normal target.
+void pass_outline_prepass(const PassContext& ctx) {
+    const bool reversed = ctx.settings.depth == DepthFormat::reversed_f32;
+    ctx.targets.normals_fbo.bind();
+    gl::PipelineState state;
+    state.depth_test = reversed ? gl::DepthTest::greater : gl::DepthTest::less;
+    state.depth_write = true;
+    state.depth_zero_to_one = ctx.cam.zero_to_one;
+    gl::apply(state);
+    glClearDepth(reversed ? 0.0 : 1.0);
+    glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+    glClear(GL_DEPTH_BUFFER_BIT | GL_COLOR_BUFFER_BIT);
+    const gl::Program& p = ctx.programs.outline_prepass;
+    p.use();
+    p.set("u_proj", ctx.cam.proj);
+    for (const Batch& b : ctx.batches.batches) {
+        const GpuMesh& mesh = ctx.gpu_meshes.get(ctx.meshes, b.mesh, b.lod);
+        mesh.prepass_vao.bind();
+        glDrawElementsInstancedBaseInstance(GL_TRIANGLES, mesh.triangle_index_count, GL_UNSIGNED_INT,
+                                            nullptr, b.instance_count, b.first_instance);
+    }
+}
+
+// Sobel over depth and normals, into the HDR lines target (or the mask in mask mode).
+void pass_image_outline(const PassContext& ctx, bool mask_mode) {
+    const gl::Program& p = mask_mode ? ctx.programs.image_outline_mask : ctx.programs.image_outline;
+    (mask_mode ? ctx.targets.mask_fbo : ctx.targets.lines_fbo).bind();
+    gl::apply(gl::PipelineState{});
+    glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    p.use();
+    p.set("u_depth", 0);
+    p.set("u_normals", 1);
+    p.set("u_proj_a", ctx.cam.proj_a);
+    p.set("u_proj_b", ctx.cam.proj_b);
+    p.set("u_depth_zero_to_one", ctx.cam.zero_to_one ? 1 : 0);
+    p.set("u_depth_threshold", ctx.settings.outline_depth_threshold);
+    const double half = static_cast<double>(ctx.settings.crease_angle_deg) * 3.14159265358979323846 / 360.0;
+    p.set("u_normal_threshold", static_cast<float>(2.0 * std::sin(half)));
+    p.set("u_color", glm::vec3(0.25f, 1.0f, 0.35f));
+    ctx.targets.depth.bind(0);
+    ctx.targets.normals.bind(1);
+    ctx.empty_vao.bind();
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+}  // namespace bz::render

@@ -1,0 +1,58 @@
+#include "render/reference_frame.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "render/batches.h"
+
+namespace bz::render {
+
+std::vector<std::uint8_t> reference_frame_mask(const scene::FrameList& frame,
+                                               const scene::MeshLibrary& meshes, int width,
+                                               int height, const ReferenceFrameOptions& o,
+                                               geo::ReferenceStats* stats) {
+    const scene::Camera& c = frame.camera;
+    const glm::dmat4 view = glm::lookAt(c.eye, c.target, c.up);
+    RenderSettings lod_settings;
+    lod_settings.crease_angle_deg = static_cast<float>(o.crease_angle_deg);
+    lod_settings.lod = true;
+    const double cot = 1.0 / std::tan(glm::radians(c.fov_y_deg) * 0.5);
+
+    std::vector<geo::ReferenceInstance> instances;
+    instances.reserve(frame.items.size());
+    for (const scene::DrawItem& item : frame.items) {
+        if (item.mesh >= meshes.size()) continue;  // the renderer skips these too
+        geo::ReferenceInstance inst;
+        inst.mesh = &meshes.mesh(item.mesh);
+        inst.model_view = view * item.model;
+        inst.occluder = item.occluder;
+        inst.cos_crease = std::cos(glm::radians(o.crease_angle_deg));
+        if (o.mirror_lod_creases) {
+            // Same projected radius as build_batches computes.
+            const geo::Bounds& b = meshes.bounds(item.mesh);
+            const glm::dvec3 centre = glm::dvec3(inst.model_view * glm::dvec4(glm::dvec3(b.center()), 1.0));
+            const glm::dmat4& mv = inst.model_view;
+            const double scale = std::sqrt(std::max({glm::dot(glm::dvec3(mv[0]), glm::dvec3(mv[0])),
+                                                     glm::dot(glm::dvec3(mv[1]), glm::dvec3(mv[1])),
+                                                     glm::dot(glm::dvec3(mv[2]), glm::dvec3(mv[2]))}));
+            const double radius = static_cast<double>(b.radius()) * scale;
+            const double depth = std::max(-centre.z, c.near);
+            const double radius_px = radius * cot / depth * height * 0.5;
+            inst.cos_crease = static_cast<double>(lod_cos_crease(lod_settings, radius_px));
+        }
+        instances.push_back(inst);
+    }
+    geo::ReferenceView v;
+    v.width = width;
+    v.height = height;
+    v.fov_y_deg = c.fov_y_deg;
+    v.near = c.near;
+    v.far = c.far;
+    geo::ReferenceOptions sampling = o.sampling;
+    if (frame.style == scene::LineStyle::arcade) sampling.occlusion = false;
+    return geo::reference_mask(instances, v, sampling, stats);
+}
+
+}  // namespace bz::render

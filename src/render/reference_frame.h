@@ -1,0 +1,27 @@
+#pragma once
+// The CPU reference (geometry/reference.h) for a whole frame list: the same camera, the same
+// occluder flags and line style the renderer uses, at full detail.
+#include <cstdint>
+#include <vector>
+
+#include "geometry/reference.h"
+#include "render/settings.h"
+#include "scene/frame_list.h"
+#include "scene/mesh_library.h"
+
+namespace bz::render {
+
+struct ReferenceFrameOptions {
+    double crease_angle_deg = 60.0;
+    // Mirror the renderer's distance LOD crease threshold (lod_cos_crease) instead of using
+    // the full-detail crease angle everywhere. Off for the exact reference.
+    bool mirror_lod_creases = false;
+    geo::ReferenceOptions sampling;
+};
+
+std::vector<std::uint8_t> reference_frame_mask(const scene::FrameList& frame,
+                                               const scene::MeshLibrary& meshes, int width,
+                                               int height, const ReferenceFrameOptions& options = {},
+                                               geo::ReferenceStats* stats = nullptr);
+
+}  // namespace bz::render
