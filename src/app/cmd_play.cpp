@@ -98,10 +98,10 @@ struct Play {
                      std::string(platform::vsync_name(vsync)));
         }
 
-        int w = 0, h = 0;
-        context.drawable_size(w, h);
-        render::Renderer renderer(render_settings(settings.preset, lvl), std::max(w, 1), std::max(h, 1),
-                                  gl::TimingMethod::off);
+        const render::RenderSettings look = render_settings(settings.preset, lvl);
+        auto make_renderer = [&look](int w, int h) {
+            return std::make_unique<render::Renderer>(look, w, h, gl::TimingMethod::off);
+        };
 
         platform::Audio audio(log, settings.volume, settings.mute);
         platform::Gamepads gamepads(log, data_dir() / "gamecontrollerdb" / "gamecontrollerdb.txt",
@@ -116,6 +116,8 @@ struct Play {
         so.record = options.record;
         so.replay = options.replay;
         so.high_scores = paths.high_scores;
+        so.pause_on_focus_loss = settings.pause_on_focus_loss;
+        so.font = &font;
         std::unique_ptr<PlaySession> session = options.edit ? make_edit_session(so, log) : make_game_session(so, log);
 
         LoopConfig config;
@@ -124,7 +126,7 @@ struct Play {
         config.edit = options.edit;
         config.style = settings.style == "arcade" ? scene::LineStyle::arcade : scene::LineStyle::occluded;
         config.screenshots = paths.screenshots;
-        LoopParts parts{context, renderer, audio, input, gamepads, watcher.get(), overlay, log, settings};
+        LoopParts parts{context, make_renderer, audio, input, gamepads, watcher.get(), overlay, log, settings};
         const LoopResult result = run_play_loop(*session, parts, config);
         session.reset();  // flushes a recording before we report
 
@@ -138,7 +140,7 @@ struct Play {
         if (options.frames > 0) {
             std::printf("play: %d frames, %d ticks, %d GL errors\n", result.frames, result.ticks, result.gl_errors);
         }
-        return result.gl_errors > 0 ? 1 : 0;
+        return result.gl_errors > 0 || result.session_failed ? 1 : 0;
     }
 
     void save(const platform::Settings& s) {

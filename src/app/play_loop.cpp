@@ -24,6 +24,10 @@ public:
 
     LoopResult run() {
         if (p_.watcher) last_generation_ = p_.watcher->generation();
+        int w = 0, h = 0;
+        p_.context.drawable_size(w, h);
+        renderer_ = p_.make_renderer(std::max(w, 1), std::max(h, 1));
+        mesh_generation_ = session_.mesh_generation();
         std::uint64_t last_counter = SDL_GetPerformanceCounter();
         const double counter_hz = static_cast<double>(SDL_GetPerformanceFrequency());
         while (running_) {
@@ -48,6 +52,7 @@ public:
             if (session_.finished()) running_ = false;
         }
         p_.audio.set_engine(false, 0.0f);
+        result_.session_failed = session_.failed();
         return result_;
     }
 
@@ -60,10 +65,7 @@ private:
             switch (e.type) {
                 case SDL_QUIT: running_ = false; break;
                 case SDL_WINDOWEVENT:
-                    if (e.window.event == SDL_WINDOWEVENT_FOCUS_LOST && p_.settings.pause_on_focus_loss &&
-                        !config_.edit) {
-                        set_paused(true);
-                    }
+                    if (e.window.event == SDL_WINDOWEVENT_FOCUS_LOST) session_.on_focus_lost();
                     if (e.window.event == SDL_WINDOWEVENT_MINIMIZED) minimized_ = true;
                     if (e.window.event == SDL_WINDOWEVENT_RESTORED ||
                         e.window.event == SDL_WINDOWEVENT_SHOWN) {
@@ -87,18 +89,12 @@ private:
         }
     }
 
-    void set_paused(bool p) {
-        paused_ = p;
-        p_.overlay.set_paused(p);
-        step_.reset();  // no burst of catch-up ticks after a pause
-    }
-
     void on_action(platform::Action a) {
         using platform::Action;
         switch (a) {
             case Action::pause:
-                if (!config_.edit) set_paused(!paused_);
-                break;
+            case Action::start:
+            case Action::back: session_.on_action(a); break;
             case Action::fullscreen: {
                 p_.context.set_fullscreen(!p_.context.fullscreen());
                 p_.settings.fullscreen = p_.context.fullscreen();
@@ -133,7 +129,7 @@ private:
 
     void reload_shaders() {
         std::string error;
-        if (p_.renderer.reload_shaders(&error)) {
+        if (renderer_->reload_shaders(&error)) {
             shader_errors_.clear();
             p_.log.info("shaders reloaded");
             p_.overlay.notify("shaders reloaded");
@@ -191,11 +187,6 @@ private:
 
     void simulate(double dt) {
         session_.update(fly_controls(), dt);
-        if (paused_) {
-            p_.audio.set_engine(false, 0.0f);
-            session_.take_sounds();
-            return;
-        }
         const game::StepPlan plan = step_.advance(dt);
         const platform::InputState input = p_.input.state();
         for (int i = 0; i < plan.ticks; ++i) session_.tick(input);
@@ -209,14 +200,19 @@ private:
     void draw() {
         int w = 0, h = 0;
         p_.context.drawable_size(w, h);  // pixels, not window points: right on HiDPI screens
-        if (w > 0 && h > 0 && (w != p_.renderer.width() || h != p_.renderer.height())) {
-            p_.renderer.resize(w, h);
+        if (session_.mesh_generation() != mesh_generation_) {
+            mesh_generation_ = session_.mesh_generation();
+            renderer_.reset();  // its GL objects go before the new one allocates its own
+            renderer_ = p_.make_renderer(std::max(w, 1), std::max(h, 1));
         }
-        const double aspect = static_cast<double>(p_.renderer.width()) / std::max(1, p_.renderer.height());
+        if (w > 0 && h > 0 && (w != renderer_->width() || h != renderer_->height())) {
+            renderer_->resize(w, h);
+        }
+        const double aspect = static_cast<double>(renderer_->width()) / std::max(1, renderer_->height());
         scene::FrameList frame = session_.frame(alpha_, aspect);
         frame.style = config_.style;
         p_.overlay.draw(frame.hud, aspect);
-        p_.renderer.render(frame, session_.meshes(), 0);
+        renderer_->render(frame, session_.meshes(), 0);
         if (result_.frames + 1 == config_.screenshot_at) screenshot_requested_ = true;
         if (screenshot_requested_) {
             screenshot_requested_ = false;
@@ -228,8 +224,8 @@ private:
 
     void take_screenshot() {
         try {
-            const auto path = platform::save_screenshot(config_.screenshots, p_.renderer.width(),
-                                                        p_.renderer.height(), p_.renderer.read_color());
+            const auto path = platform::save_screenshot(config_.screenshots, renderer_->width(),
+                                                        renderer_->height(), renderer_->read_color());
             p_.log.info("screenshot saved: " + path.string());
             p_.overlay.notify("screenshot " + path.filename().string());
         } catch (const std::exception& e) {
@@ -250,9 +246,10 @@ private:
     LoopParts& p_;
     const LoopConfig& config_;
     game::FixedStep step_;
+    std::unique_ptr<render::Renderer> renderer_;
+    std::uint64_t mesh_generation_ = 0;
     LoopResult result_;
     bool running_ = true;
-    bool paused_ = false;
     bool minimized_ = false;
     bool screenshot_requested_ = false;
     double alpha_ = 1.0;

@@ -2,6 +2,8 @@
 // The interactive frame loop of `beamzone play`: events, fixed 60 Hz ticks with interpolated
 // drawing, hot reload, overlays, screenshots, sound and the window-level keys.
 #include <filesystem>
+#include <functional>
+#include <memory>
 #include <string>
 
 #include "app/play_overlay.h"
@@ -27,7 +29,9 @@ struct LoopConfig {
 
 struct LoopParts {
     platform::GlContext& context;
-    render::Renderer& renderer;
+    // Makes a renderer of the given size; called at the start and again whenever the session's
+    // meshes became a different library (its mesh cache is keyed by id and version).
+    std::function<std::unique_ptr<render::Renderer>(int width, int height)> make_renderer;
     platform::Audio& audio;
     platform::Input& input;
     platform::Gamepads& gamepads;
@@ -42,6 +46,7 @@ struct LoopResult {
     int ticks = 0;
     int gl_errors = 0;
     bool settings_changed = false;
+    bool session_failed = false;
 };
 
 LoopResult run_play_loop(PlaySession& session, LoopParts& parts, const LoopConfig& config);

@@ -80,11 +80,6 @@ void PlayOverlay::draw(std::vector<scene::HudLine>& out, double aspect) const {
             y += kNoticeHeight * kLineGap;
         }
     }
-    if (paused_) {
-        font_.draw(out, "PAUSED", {0.0f, 0.1f}, 0.12f, kNoticeColor, scene::TextAlign::center, 1.5f);
-        font_.draw(out, "P or Esc to resume - F10 to quit", {0.0f, -0.05f}, 0.045f, kNoticeColor,
-                   scene::TextAlign::center);
-    }
 }
 
 }  // namespace bz::app

@@ -1,6 +1,6 @@
 #pragma once
 // Text the play loop lays over the game's own HUD: level errors while a hot reload is broken,
-// short notices (screenshot saved, volume), and the pause banner. Drawn with the vector font
+// and short notices (screenshot saved, volume). Drawn with the vector font
 // so it glows like everything else.
 #include <string>
 #include <vector>
@@ -19,7 +19,6 @@ public:
     const std::vector<std::string>& errors() const { return errors_; }
     // Shown for `seconds`, newest at the bottom.
     void notify(std::string text, double seconds = 2.5);
-    void set_paused(bool p) { paused_ = p; }
     void advance(double seconds);  // ages the notices
 
     // Appends the overlay's lines (HUD units: y up, x in -aspect..aspect).
@@ -38,7 +37,6 @@ private:
     const scene::VectorFont& font_;
     std::vector<std::string> errors_;
     std::vector<Notice> notices_;
-    bool paused_ = false;
 };
 
 }  // namespace bz::app

@@ -1,15 +1,18 @@
 #include "app/play_sessions.h"
 
 #include <chrono>
-#include <cmath>
 #include <numbers>
+#include <utility>
 
+#include "core/error.h"
 #include "core/log.h"
 #include "game/assets.h"
 #include "game/backdrop.h"
 #include "game/default_level.h"
 #include "game/fixed_step.h"
-#include "game/world.h"
+#include "game/game.h"
+#include "game/highscores.h"
+#include "game/replay.h"
 #include "platform/free_fly.h"
 
 namespace bz::app {
@@ -19,16 +22,44 @@ namespace {
 constexpr double kRadToDeg = 180.0 / std::numbers::pi;
 
 std::uint64_t clock_seed() {
-    return static_cast<std::uint64_t>(std::chrono::steady_clock::now().time_since_epoch().count());
+    return static_cast<std::uint64_t>(std::chrono::system_clock::now().time_since_epoch().count());
 }
 
-// The game: World ticks from the player's input, sounds out, frames in.
+// The game: screens, world, HUD, high scores and replays all live in game::Game; this turns
+// input into its tick commands and its results into sounds and saved files.
 class GameSession final : public PlaySession {
 public:
-    GameSession(level::Level lvl, std::uint64_t seed, Log& log)
-        : level_(std::move(lvl)), seed_(seed), assets_(level_.backdrop), log_(log) {
-        world_ = std::make_unique<game::World>(level_, seed_, assets_.factories(), assets_.models());
-        log_.info("game seed " + std::to_string(seed_));
+    GameSession(level::Level lvl, const SessionOptions& o, Log& log)
+        : font_(o.font), high_scores_path_(o.high_scores), record_path_(o.record),
+          pause_on_focus_loss_(o.pause_on_focus_loss), log_(log) {
+        options_.seed = o.seed.value_or(clock_seed());
+        game::HighScoreLoad scores = game::load_highscores(high_scores_path_);
+        if (!scores.warning.empty()) log_.warn(scores.warning);
+        options_.highscores = std::move(scores.table);
+        options_.record = !record_path_.empty();
+        // Recording starts a game at once rather than recording the title screen's wait.
+        if (options_.record) options_.attract = false;
+        game_ = std::make_unique<game::Game>(std::move(lvl), options_, font_);
+        if (!o.replay.empty()) {
+            game_->start_replay(game::replay::load(o.replay));
+            log_.info("replaying " + o.replay);
+        } else {
+            log_.info("game seed " + std::to_string(options_.seed) + " (--seed repeats it)");
+        }
+    }
+
+    ~GameSession() override {
+        if (record_path_.empty()) return;
+        try {
+            if (const auto rec = game_->recording()) {
+                game::replay::save(record_path_, *rec);
+                log_.info("recorded " + std::to_string(rec->commands.size()) + " ticks to " + record_path_);
+            } else {
+                log_.warn("nothing to record in " + record_path_ + ": no game was started");
+            }
+        } catch (const std::exception& e) {
+            log_.error(std::string("cannot save the recording: ") + e.what());
+        }
     }
 
     void tick(const platform::InputState& in) override {
@@ -36,60 +67,117 @@ public:
         cmd.left_tread = in.left_tread;
         cmd.right_tread = in.right_tread;
         cmd.fire = in.fire;
-        world_->step(cmd);
-        ++ticks_;
-        for (const game::SoundEvent e : world_->events()) events_.push_back(e);
+        cmd.up = in.up;
+        cmd.down = in.down;
+        cmd.left = in.left;
+        cmd.right = in.right;
+        // Presses last one tick, so a tap between two ticks is never lost and the game sees
+        // the button go down and up again.
+        cmd.pause = std::exchange(pause_, false);
+        cmd.start = std::exchange(start_, false);
+        cmd.back = std::exchange(back_, false);
+        game_->tick(cmd);
+        const game::SoundFrame& s = game_->sounds();
+        engine_ = s.engine;
+        for (const game::SoundEvent e : s.events) sounds_.push_back(e);
+        if (game_->take_highscores_changed()) save_scores();
+        report_replay_end();
     }
 
     void update(const platform::FlyControls&, double) override {}
-
-    scene::FrameList frame(double alpha, double aspect) override {
-        (void)aspect;
-        scene::FrameList f = world_->interpolated_frame(alpha);
-        const double seconds = (static_cast<double>(ticks_) + alpha) * game::FixedStep::kTickSeconds;
-        game::backdrop::append_items(f.items, level_.backdrop, assets_.horizon(), f.camera.eye, seconds);
-        return f;
-    }
-
-    const scene::MeshLibrary& meshes() const override { return assets_.meshes(); }
+    scene::FrameList frame(double alpha, double aspect) override { return game_->frame(alpha, aspect); }
+    const scene::MeshLibrary& meshes() const override { return game_->meshes(); }
 
     SessionSounds take_sounds() override {
-        SessionSounds s;
-        s.engine_speed = world_->engine_level();
-        s.engine_on = s.engine_speed > 0.0f;
-        for (const game::SoundEvent e : events_) s.events.push_back(sound_cue(e));
-        events_.clear();
-        return s;
+        SessionSounds out;
+        const bool live = game_->screen() == game::Screen::playing;
+        out.engine_on = live && engine_ > 0.0f;
+        out.engine_speed = engine_;
+        for (const game::SoundEvent e : sounds_) out.events.push_back(sound_cue(e));
+        sounds_.clear();
+        return out;
+    }
+
+    void on_action(platform::Action a) override {
+        if (a == platform::Action::pause) pause_ = true;
+        if (a == platform::Action::start) start_ = true;
+        if (a == platform::Action::back) back_ = true;
+    }
+
+    void on_focus_lost() override {
+        if (pause_on_focus_loss_ && game_->screen() == game::Screen::playing) pause_ = true;
     }
 
     void level_changed(const level::Level& lvl) override {
-        // Same assets (so mesh ids stay valid for the renderer's cache), a new world from the
-        // new level, with the tank where it was.
+        if (game_->replaying()) {
+            log_.warn("level changed during a replay; the replay keeps the level it started with");
+            return;
+        }
+        // A new game on the new level, with the tank where it was and the game in the same
+        // mode (playing stays playing). Score and lives start over: a level edit is a test run.
         level::Level next = lvl;
-        const scene::Transform& t = world_->state().player.body.transform;
-        next.player_start = {t.position.x, 0.0, t.position.z};
-        next.player_heading_deg = t.yaw * kRadToDeg;
-        auto world = std::make_unique<game::World>(next, seed_, assets_.factories(), assets_.models());
-        world_ = std::move(world);
-        level_ = std::move(next);
+        game::GameOptions o = options_;
+        o.highscores = game_->highscores();
+        const bool in_play = game_->world() && (game_->screen() == game::Screen::playing ||
+                                                game_->screen() == game::Screen::paused);
+        if (in_play) {
+            const scene::Transform& t = game_->world()->state().player.body.transform;
+            next.player_start = {t.position.x, 0.0, t.position.z};
+            next.player_heading_deg = t.yaw * kRadToDeg;
+            o.attract = false;
+        }
+        auto rebuilt = std::make_unique<game::Game>(std::move(next), o, font_);
+        if (game_->take_highscores_changed()) save_scores();
+        game_ = std::move(rebuilt);
+        ++mesh_generation_;
     }
 
+    bool finished() const override { return game_->replay_finished(); }
+    bool failed() const override { return game_->replay_mismatch().has_value(); }
+    std::uint64_t mesh_generation() const override { return mesh_generation_; }
+
 private:
-    level::Level level_;
-    std::uint64_t seed_;
-    game::Assets assets_;
+    void save_scores() {
+        try {
+            game::save_highscores(high_scores_path_, game_->highscores());
+            log_.info("high scores saved: " + high_scores_path_.string());
+        } catch (const UserError& e) {
+            log_.warn(std::string("cannot save high scores: ") + e.what());
+        }
+    }
+
+    void report_replay_end() {
+        if (!game_->replaying() || replay_reported_) return;
+        if (const auto& m = game_->replay_mismatch()) {
+            log_.error("replay diverged at tick " + std::to_string(m->tick) + " (state hash " +
+                       std::to_string(m->actual) + ", recorded " + std::to_string(m->expected) + ")");
+            replay_reported_ = true;
+        } else if (game_->replay_finished()) {
+            log_.info("replay finished; every recorded state hash matched");
+            replay_reported_ = true;
+        }
+    }
+
+    const scene::VectorFont* font_;
+    std::filesystem::path high_scores_path_;
+    std::string record_path_;
+    bool pause_on_focus_loss_;
     Log& log_;
-    std::unique_ptr<game::World> world_;
-    std::vector<game::SoundEvent> events_;
-    std::uint64_t ticks_ = 0;
+    game::GameOptions options_;
+    std::unique_ptr<game::Game> game_;
+    std::vector<game::SoundEvent> sounds_;
+    float engine_ = 0.0f;
+    bool pause_ = false, start_ = false, back_ = false;
+    bool replay_reported_ = false;
+    std::uint64_t mesh_generation_ = 0;
 };
 
-// --edit: the level's objects and horizon from a free-flying camera; nothing moves.
+// --edit: the level's objects and horizon from a free-flying camera; nothing moves but the
+// volcano.
 class EditSession final : public PlaySession {
 public:
     explicit EditSession(level::Level lvl)
         : level_(std::move(lvl)),
-          assets_(level_.backdrop),
           camera_(level_.player_start + glm::dvec3(0.0, 6.0, 0.0), level_.player_heading_deg, -10.0) {
         rebuild();
     }
@@ -112,30 +200,42 @@ public:
             f.items.push_back(item);
         }
         const double seconds = (static_cast<double>(ticks_) + alpha) * game::FixedStep::kTickSeconds;
-        game::backdrop::append_items(f.items, level_.backdrop, assets_.horizon(), f.camera.eye, seconds);
+        game::backdrop::append_items(f.items, level_.backdrop, assets_->horizon(), f.camera.eye, seconds);
         return f;
     }
 
-    const scene::MeshLibrary& meshes() const override { return assets_.meshes(); }
+    const scene::MeshLibrary& meshes() const override { return assets_->meshes(); }
     SessionSounds take_sounds() override { return {}; }
 
     void level_changed(const level::Level& lvl) override {
+        level::Level previous = std::move(level_);
         level_ = lvl;
-        rebuild();
+        try {
+            rebuild();
+        } catch (...) {
+            level_ = std::move(previous);
+            throw;
+        }
     }
+    std::uint64_t mesh_generation() const override { return mesh_generation_; }
 
 private:
     void rebuild() {
-        // The world builds the obstacles through the factory table; its simulation never runs.
-        const game::World world(level_, 0, assets_.factories(), assets_.models());
+        // Fresh assets, so a changed horizon or model file is rebuilt too. A world builds the
+        // obstacles through the factory table; its simulation never runs.
+        auto assets = std::make_unique<game::Assets>(level_.backdrop);
+        const game::World world(level_, 0, assets->factories(), assets->models());
         obstacles_ = world.obstacles();
+        assets_ = std::move(assets);
+        ++mesh_generation_;
     }
 
     level::Level level_;
-    game::Assets assets_;
+    std::unique_ptr<game::Assets> assets_;
     platform::FreeFlyCamera camera_;
     std::vector<scene::Entity> obstacles_;
     std::uint64_t ticks_ = 0;
+    std::uint64_t mesh_generation_ = 0;
 };
 
 level::Level chosen_level(const SessionOptions& o) { return o.level ? *o.level : game::default_level(); }
@@ -160,7 +260,7 @@ SoundCue sound_cue(game::SoundEvent e) {
 }
 
 std::unique_ptr<PlaySession> make_game_session(const SessionOptions& o, Log& log) {
-    return std::make_unique<GameSession>(chosen_level(o), o.seed.value_or(clock_seed()), log);
+    return std::make_unique<GameSession>(chosen_level(o), o, log);
 }
 
 std::unique_ptr<PlaySession> make_edit_session(const SessionOptions& o, Log&) {

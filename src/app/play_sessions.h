@@ -8,6 +8,7 @@
 
 #include "app/play_session.h"
 #include "game/events.h"
+#include "scene/vector_font.h"
 
 namespace bz {
 class Log;
@@ -18,11 +19,14 @@ namespace bz::app {
 struct SessionOptions {
     const level::Level* level = nullptr;  // nullptr: the game's built-in level
     std::optional<std::uint64_t> seed;    // none: from the clock
-    std::string record;                   // replay file to write, or empty
+    std::string record;                   // replay file to write at exit, or empty
     std::string replay;                   // replay file to play back, or empty
     std::filesystem::path high_scores;
+    bool pause_on_focus_loss = true;
+    const scene::VectorFont* font = nullptr;  // must outlive the session
 };
 
+// Throws UserError for a level the game cannot build or an unreadable replay.
 std::unique_ptr<PlaySession> make_game_session(const SessionOptions& options, Log& log);
 std::unique_ptr<PlaySession> make_edit_session(const SessionOptions& options, Log& log);
 

@@ -19,17 +19,27 @@ kind = "pyramid"
 position = [0, 0, -30]
 LVL
 
-# Game, built-in level (no levels/classic.toml needed), screenshot on frame 20.
-"$bin" play --headless-test --frames 30 --seed 7 --screenshot-at 20 >"$work/out" 2>"$work/err" || fail "game run exit $?"
+# Game on the built-in level: a project root with shaders and data but no levels/ folder.
+src=${BEAMZONE_ROOT:-$(cd "$(dirname "$0")/../.." && pwd)}
+mkdir "$work/root"
+ln -s "$src/shaders" "$work/root/shaders"
+ln -s "$src/data" "$work/root/data"
+BEAMZONE_ROOT=$work/root "$bin" play --headless-test --frames 30 --seed 7 --screenshot-at 20 >"$work/out" 2>"$work/err" || fail "game run exit $?"
 grep -q "^play: 30 frames, 30 ticks, 0 GL errors$" "$work/out" || fail "game run summary: $(cat "$work/out")"
 [ -s "$work/pref/screenshots/screenshot-0001.png" ] || fail "no screenshot"
 grep -q "screenshot saved: $work/pref/screenshots/screenshot-0001.png" "$work/pref/beamzone.log" || fail "screenshot not logged"
 grep -q "settings: $work/pref/settings.toml" "$work/err" || fail "settings path not printed at start"
 grep -q "high scores: $work/pref/highscores.toml" "$work/err" || fail "high-score path not printed at start"
 [ -s "$work/pref/settings.toml" ] || fail "no settings file written on first start"
+grep -q "playing the built-in level" "$work/err" || fail "did not fall back to the built-in level"
 ok "game on the built-in level"
 
-# Same through the environment switch, on a level file, arcade style; a second screenshot.
+# The default level, levels/classic.toml.
+"$bin" play --headless-test --frames 5 >"$work/out" 2>"$work/err" || fail "default level run exit $?"
+grep -q "level: .*levels/classic.toml" "$work/err" || fail "default level not levels/classic.toml"
+ok "game on levels/classic.toml"
+
+# Through the environment switch, on a level file, arcade style; a second screenshot.
 BEAMZONE_ALLOW_OFFSCREEN=1 "$bin" play "$work/level.toml" --frames 10 --style arcade --preset fast \
   --screenshot-at 5 >"$work/out" 2>"$work/err" || fail "level run exit $?"
 grep -q "0 GL errors" "$work/out" || fail "level run: $(cat "$work/out")"
