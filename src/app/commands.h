@@ -22,5 +22,8 @@ int cmd_render(Args args);
 int cmd_check(Args args);
 int cmd_replay(Args args);
 int cmd_play(Args args);
+int cmd_bench(Args args);
+int cmd_reference(Args args);
+int cmd_compare(Args args);
 
 }  // namespace bz::app

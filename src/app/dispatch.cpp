@@ -15,6 +15,9 @@ constexpr Command kCommands[] = {
     {"render", "render a model file headless to PNG (and a line mask)", cmd_render},
     {"check", "validate level files (file:line:col errors), no window needed", cmd_check},
     {"replay", "inspect a replay file, or --verify it headless against its state hashes", cmd_replay},
+    {"bench", "frame-time benchmark of a level offscreen; --sweep: speed vs accuracy", cmd_bench},
+    {"reference", "exact CPU line mask of a model or a level frame (same format as render --mask)", cmd_reference},
+    {"compare", "precision, recall and F1 of a line mask against a reference mask", cmd_compare},
 };
 
 void print_usage(std::FILE* out) {

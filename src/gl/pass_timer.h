@@ -27,6 +27,9 @@ public:
     PassTimer& operator=(const PassTimer&) = delete;
 
     TimingMethod method() const { return method_; }
+    // Frames between a frame's end_frame() and its times showing in last_results(): 0 for
+    // cpu_finish; for gpu_queries the read-back delay (and the very first frame is dropped).
+    int latency() const { return method_ == TimingMethod::gpu_queries ? kLatency : 0; }
     void begin_frame();
     void end_frame();
     void begin(const char* name);

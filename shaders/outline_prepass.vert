@@ -1,0 +1,14 @@
+#version 450 core
+// Image-space outline baseline: depth prepass that also writes face normals.
+layout(location = 0) in vec3 a_position;
+layout(location = 1) in mat4 a_model_view;  // locations 1-4
+
+uniform mat4 u_proj;
+
+out vec3 v_view_pos;
+
+void main() {
+    vec4 view = a_model_view * vec4(a_position, 1.0);
+    v_view_pos = view.xyz;
+    gl_Position = u_proj * view;
+}

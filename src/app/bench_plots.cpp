@@ -1,0 +1,96 @@
+#include "app/bench_plots.h"
+
+#include <algorithm>
+#include <cstdio>
+
+#include "app/plot_chart.h"
+
+namespace bz::app {
+
+void plot_frame_times(const RunResult& run, const std::string& title, const scene::VectorFont* font,
+                      const std::filesystem::path& out) {
+    Canvas canvas(1200, 600, kPaper, font);
+    const double n = static_cast<double>(std::max<std::size_t>(run.frames.size(), 1));
+    double top = 0.0;
+    for (const FrameRecord& f : run.frames) {
+        double sum = 0.0;
+        for (double ms : f.pass_ms) sum += std::max(ms, 0.0);
+        top = std::max({top, sum, f.ms_between});
+    }
+    Chart chart(canvas, nice_axis(0.0, n, "frame"), nice_axis(0.0, top * 1.05, "milliseconds"), title);
+    chart.draw_frame();
+    const glm::vec3 other{0.8f, 0.8f, 0.8f};
+    for (std::size_t i = 0; i < run.frames.size(); ++i) {
+        const FrameRecord& f = run.frames[i];
+        const auto x0 = static_cast<double>(i), x1 = x0 + 1.0;
+        double base = 0.0;
+        for (std::size_t p = 0; p < f.pass_ms.size(); ++p) {
+            const double ms = std::max(f.pass_ms[p], 0.0);
+            canvas.fill_rect(chart.map(x0, base), chart.map(x1, base + ms), series_color(p));
+            base += ms;
+        }
+        if (f.ms_between > base) canvas.fill_rect(chart.map(x0, base), chart.map(x1, f.ms_between), other);
+    }
+    for (std::size_t i = 1; i < run.frames.size(); ++i) {
+        canvas.line(chart.map(static_cast<double>(i) - 0.5, run.frames[i - 1].ms_between),
+                    chart.map(static_cast<double>(i) + 0.5, run.frames[i].ms_between), kInk, 1.0f);
+    }
+    int row = 0;
+    chart.legend_entry(row++, "whole frame (line)", kInk);
+    chart.legend_entry(row++, "outside passes", other);
+    for (std::size_t p = run.pass_names.size(); p-- > 0;) chart.legend_entry(row++, run.pass_names[p], series_color(p));
+    canvas.save(out);
+}
+
+void plot_tradeoff(const std::vector<TradeoffPoint>& points, const std::string& title,
+                   const scene::VectorFont* font, const std::filesystem::path& out) {
+    Canvas canvas(1000, 700, kPaper, font);
+    double xmax = 0.0, ymin = 1.0;
+    for (const TradeoffPoint& p : points) {
+        xmax = std::max(xmax, p.p50_ms);
+        ymin = std::min(ymin, p.min_f1);
+    }
+    Chart chart(canvas, nice_axis(0.0, xmax * 1.15, "p50 frame time (ms)"),
+                nice_axis(std::max(0.0, ymin - 0.05), 1.0, "F1 against the exact reference (mean, bar to min)"),
+                title);
+    chart.draw_frame();
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const TradeoffPoint& p = points[i];
+        const glm::vec3 c = series_color(i);
+        canvas.line(chart.map(p.p50_ms, p.min_f1), chart.map(p.p50_ms, p.mean_f1), c, 2.0f);
+        const glm::vec2 at = chart.map(p.p50_ms, p.mean_f1);
+        canvas.disc(at, 5.0f, c);
+        // Labels alternate above and below so neighbours do not print over each other.
+        const float dy = i % 2 == 0 ? 10.0f : -22.0f;
+        canvas.text(p.label, at + glm::vec2(8.0f, dy), 11.0f, c);
+    }
+    canvas.save(out);
+}
+
+void plot_scaling(const std::vector<ScalingPoint>& points, const LineFit& fit, const std::string& title,
+                  const scene::VectorFont* font, const std::filesystem::path& out) {
+    Canvas canvas(1000, 700, kPaper, font);
+    double xmax = 0.0, ymax = 0.0;
+    for (const ScalingPoint& p : points) {
+        xmax = std::max(xmax, p.triangles / 1e6);
+        ymax = std::max(ymax, p.p50_ms);
+    }
+    Chart chart(canvas, nice_axis(0.0, xmax * 1.1, "triangles submitted per frame (millions)"),
+                nice_axis(0.0, ymax * 1.15, "p50 frame time (ms)"), title);
+    chart.draw_frame();
+    const double x_end = xmax * 1.05;
+    canvas.line(chart.map(0.0, fit.intercept), chart.map(x_end, fit.intercept + fit.slope * x_end * 1e6),
+                series_color(1), 1.5f);
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const glm::vec2 at = chart.map(points[i].triangles / 1e6, points[i].p50_ms);
+        canvas.disc(at, 5.0f, series_color(0));
+        canvas.text(points[i].label, at + glm::vec2(-10.0f, 12.0f), 11.0f, kInk, scene::TextAlign::right);
+    }
+    char buf[128];
+    std::snprintf(buf, sizeof buf, "fit: %.2f ms per 100k triangles + %.1f ms (r2 %.3f)", fit.slope * 1e5,
+                  fit.intercept, fit.r2);
+    chart.legend_entry(0, buf, series_color(1));
+    canvas.save(out);
+}
+
+}  // namespace bz::app

@@ -1,0 +1,89 @@
+#include "app/bench_scaling.h"
+
+#include <cstdio>
+
+#include "core/error.h"
+#include "geometry/subdivide.h"
+
+namespace bz::app {
+
+namespace {
+
+std::size_t library_triangles(const scene::MeshLibrary& lib) {
+    std::size_t n = 0;
+    for (scene::MeshId id = 0; id < lib.size(); ++id) n += lib.mesh(id).triangle_count();
+    return n;
+}
+
+// The same ids with every mesh subdivided.
+scene::MeshLibrary subdivided(const scene::MeshLibrary& src, int levels) {
+    scene::MeshLibrary out;
+    for (scene::MeshId id = 0; id < src.size(); ++id) {
+        const scene::MeshId added = out.add(src.name(id), geo::subdivide_flat(src.mesh(id), levels));
+        if (added != id) throw std::logic_error("subdivided library: mesh ids moved");
+    }
+    return out;
+}
+
+}  // namespace
+
+ScalingResult run_scaling(render::Renderer& renderer, const BenchFrames& bf, const scene::MeshLibrary& meshes,
+                          const render::RenderSettings& settings, std::size_t max_tris, bool show_progress) {
+    ScalingResult r;
+    const std::size_t base = library_triangles(meshes);
+    std::vector<double> xs, ys;
+    for (int level = 0; level <= 3; ++level) {
+        const std::size_t factor = std::size_t{1} << (2 * level);
+        const std::string label = std::to_string(factor) + "x";
+        if (base * factor > max_tris) {
+            r.skipped.push_back(label + ": " + std::to_string(base * factor) + " triangles in the library, over the " +
+                                std::to_string(max_tris) + " cap");
+            continue;
+        }
+        // A fresh renderer per library: GPU meshes are cached by id, and the ids repeat.
+        const scene::MeshLibrary lib = level == 0 ? scene::MeshLibrary{} : subdivided(meshes, level);
+        const scene::MeshLibrary& use = level == 0 ? meshes : lib;
+        render::Renderer fresh(settings, renderer.width(), renderer.height(), renderer.timing_method());
+        ProgressBar bar("scaling " + label);
+        Progress progress;
+        if (show_progress) progress = [&bar](int d, int t) { bar(d, t); };
+        RunResult run = run_frames(fresh, bf, use, "scaling-" + label, settings, progress);
+        double tris = 0.0;
+        for (const FrameRecord& f : run.frames) tris += static_cast<double>(f.stats.triangles_submitted);
+        tris /= static_cast<double>(std::max<std::size_t>(run.frames.size(), 1));
+        r.points.push_back({label, tris, run.stats.p50_ms});
+        xs.push_back(tris);
+        ys.push_back(run.stats.p50_ms);
+        r.runs.push_back(std::move(run));
+    }
+    r.fit = fit_line(xs, ys);
+    return r;
+}
+
+std::string scaling_json(const BenchMeta& meta, const ScalingResult& r) {
+    JsonWriter j;
+    j.begin_object();
+    write_meta(j, meta);
+    j.field("method", "every mesh flat-subdivided 1 -> 4 per level: same surfaces and feature lines");
+    j.key("points").begin_array();
+    for (std::size_t i = 0; i < r.points.size(); ++i) {
+        j.begin_object();
+        j.field("factor", r.points[i].label);
+        j.field("triangles_submitted_mean", r.points[i].triangles);
+        write_run(j, r.runs[i]);
+        j.end_object();
+    }
+    j.end_array();
+    j.key("fit").begin_object();
+    j.field("ms_per_100k_triangles", r.fit.slope * 1e5);
+    j.field("intercept_ms", r.fit.intercept);
+    j.field("r2", r.fit.r2);
+    j.end_object();
+    j.key("skipped").begin_array();
+    for (const std::string& s : r.skipped) j.value(s);
+    j.end_array();
+    j.end_object();
+    return j.str();
+}
+
+}  // namespace bz::app

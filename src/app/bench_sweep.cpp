@@ -1,0 +1,201 @@
+#include "app/bench_sweep.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+
+#include "core/image_io.h"
+#include "render/reference_frame.h"
+
+namespace bz::app {
+
+namespace {
+
+const SweepRow* find_row(const std::vector<SweepRow>& rows, const std::string& label) {
+    for (const SweepRow& r : rows) {
+        if (r.config.label == label) return &r;
+    }
+    return nullptr;
+}
+
+std::string fmt(const char* f, double a, double b = 0.0, double c = 0.0, double d = 0.0) {
+    char buf[256];
+    std::snprintf(buf, sizeof buf, f, a, b, c, d);
+    return buf;
+}
+
+SweepScore summarise(std::vector<geo::MaskScore> scores) {
+    SweepScore s;
+    if (scores.empty()) return s;
+    for (const geo::MaskScore& m : scores) {
+        s.mean_f1 += m.f1;
+        s.mean_precision += m.precision;
+        s.mean_recall += m.recall;
+        s.min_f1 = std::min(s.min_f1, m.f1);
+    }
+    const auto n = static_cast<double>(scores.size());
+    s.mean_f1 /= n;
+    s.mean_precision /= n;
+    s.mean_recall /= n;
+    s.per_sample = std::move(scores);
+    return s;
+}
+
+}  // namespace
+
+std::vector<SweepConfig> sweep_configs() {
+    std::vector<SweepConfig> out;
+    for (const std::string& name : render::preset_names()) {
+        out.push_back({name, "preset " + name, render::preset(name)});
+    }
+    SweepConfig outline{"image-outline", "baseline: Sobel on prepass depth + normals, balanced bloom",
+                        render::preset("balanced")};
+    outline.settings.method = render::LineMethod::image_outline;
+    out.push_back(outline);
+    SweepConfig no_cull{"balanced-no-culling", "balanced, frustum culling off", render::preset("balanced")};
+    no_cull.settings.frustum_culling = false;
+    out.push_back(no_cull);
+    SweepConfig no_lod{"balanced-no-lod", "balanced, distance LOD off (no simplified meshes, one crease angle)",
+                       render::preset("balanced")};
+    no_lod.settings.lod = false;
+    out.push_back(no_lod);
+    SweepConfig no_inst{"balanced-no-instancing", "balanced, one draw call per object instead of per model",
+                        render::preset("balanced")};
+    no_inst.settings.instancing = false;
+    out.push_back(no_inst);
+    for (SweepConfig& c : out) c.settings.count_edges = true;
+    return out;
+}
+
+std::vector<int> sampled_frames(int timed, int samples) {
+    std::vector<int> out;
+    if (timed <= 0 || samples <= 0) return out;
+    samples = std::min(samples, timed);
+    for (int i = 0; i < samples; ++i) {
+        // Centres of equal stretches, so neither the first nor the last frame dominates.
+        out.push_back(static_cast<int>((static_cast<double>(i) + 0.5) * timed / samples));
+    }
+    return out;
+}
+
+SweepResult run_sweep(render::Renderer& renderer, const BenchFrames& bf, const scene::MeshLibrary& meshes, int width,
+                      int height, const SweepOptions& o) {
+    SweepResult result;
+    const int timed = static_cast<int>(bf.frames.size()) - bf.warmup;
+    result.sampled = sampled_frames(timed, o.samples);
+    auto frame_of = [&](int timed_frame) -> const scene::FrameList& {
+        return bf.frames[static_cast<std::size_t>(timed_frame + bf.warmup)];
+    };
+    auto mask_path = [&](const std::string& label, int frame) {
+        char name[96];
+        std::snprintf(name, sizeof name, "%s_frame%04d.png", label.c_str(), frame);
+        return o.masks_dir / name;
+    };
+
+    std::vector<std::vector<std::uint8_t>> refs;
+    const auto t0 = std::chrono::steady_clock::now();
+    ProgressBar ref_bar("reference (CPU)");
+    for (std::size_t k = 0; k < result.sampled.size(); ++k) {
+        geo::ReferenceStats st;
+        refs.push_back(render::reference_frame_mask(frame_of(result.sampled[k]), meshes, width, height, {}, &st));
+        result.reference_rays += st.rays;
+        if (!o.masks_dir.empty()) write_png(mask_path("reference", result.sampled[k]), Image{width, height, 1, refs.back()});
+        if (o.progress) ref_bar(static_cast<int>(k + 1), static_cast<int>(result.sampled.size()));
+    }
+    result.reference_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+
+    for (const SweepConfig& c : sweep_configs()) {
+        ProgressBar bar(c.label);
+        Progress progress;
+        if (o.progress) progress = [&bar](int d, int t) { bar(d, t); };
+        SweepRow row{c, run_frames(renderer, bf, meshes, c.label, c.settings, progress), {}};
+        std::vector<geo::MaskScore> scores;
+        for (std::size_t k = 0; k < result.sampled.size(); ++k) {
+            const std::vector<std::uint8_t> mask = renderer.render_mask(frame_of(result.sampled[k]), meshes);
+            scores.push_back(geo::score_masks(mask, refs[k], width, height, 1));
+            if (!o.masks_dir.empty()) write_png(mask_path(c.label, result.sampled[k]), Image{width, height, 1, mask});
+        }
+        row.score = summarise(std::move(scores));
+        result.rows.push_back(std::move(row));
+    }
+    return result;
+}
+
+std::vector<Goal> judge_goals(const std::vector<SweepRow>& rows) {
+    std::vector<Goal> goals;
+    const SweepRow* fast = find_row(rows, "fast");
+    const SweepRow* balanced = find_row(rows, "balanced");
+    const SweepRow* high = find_row(rows, "high");
+    const SweepRow* outline = find_row(rows, "image-outline");
+    if (high) {
+        goals.push_back({"high: mean F1 >= 0.97", high->score.mean_f1 >= 0.97,
+                         fmt("mean F1 %.4f (min %.4f)", high->score.mean_f1, high->score.min_f1)});
+    }
+    if (fast && high) {
+        const double ratio = fast->run.stats.p50_ms / std::max(high->run.stats.p50_ms, 1e-9);
+        goals.push_back({"fast: p50 <= 0.6 x p50 of high", ratio <= 0.6,
+                         fmt("fast p50 %.2f ms, high p50 %.2f ms: %.2fx", fast->run.stats.p50_ms,
+                             high->run.stats.p50_ms, ratio)});
+    }
+    if (balanced && outline) {
+        const double ratio = balanced->run.stats.p50_ms / std::max(outline->run.stats.p50_ms, 1e-9);
+        goals.push_back({"balanced: F1 above the image-space baseline", balanced->score.mean_f1 > outline->score.mean_f1,
+                         fmt("balanced mean F1 %.4f, baseline %.4f", balanced->score.mean_f1, outline->score.mean_f1)});
+        goals.push_back({"balanced: p50 <= 1.5 x p50 of the baseline", ratio <= 1.5,
+                         fmt("balanced p50 %.2f ms, baseline p50 %.2f ms: %.2fx", balanced->run.stats.p50_ms,
+                             outline->run.stats.p50_ms, ratio)});
+    }
+    return goals;
+}
+
+std::string sweep_json(const BenchMeta& meta, const SweepResult& r, const std::vector<Goal>& goals) {
+    JsonWriter j;
+    j.begin_object();
+    write_meta(j, meta);
+    j.key("scored_frames").begin_array();
+    for (int f : r.sampled) j.value(f);
+    j.end_array();
+    j.field("score_tolerance_px", 1);
+    j.field("reference_cpu_ms", r.reference_ms);
+    j.field("reference_rays", r.reference_rays);
+    j.key("configs").begin_array();
+    for (const SweepRow& row : r.rows) {
+        j.begin_object();
+        j.field("what", row.config.what);
+        write_run(j, row.run);
+        j.key("f1").begin_object();
+        j.field("mean", row.score.mean_f1).field("min", row.score.min_f1);
+        j.field("precision_mean", row.score.mean_precision).field("recall_mean", row.score.mean_recall);
+        j.key("per_frame").begin_array();
+        for (const geo::MaskScore& s : row.score.per_sample) j.value(s.f1);
+        j.end_array();
+        j.end_object();
+        j.end_object();
+    }
+    j.end_array();
+    j.key("goals").begin_array();
+    for (const Goal& g : goals) {
+        j.begin_object().field("goal", g.name).field("met", g.met).field("measured", g.detail).end_object();
+    }
+    j.end_array();
+    j.end_object();
+    return j.str();
+}
+
+void print_sweep_table(std::FILE* out, const SweepResult& r, const std::vector<Goal>& goals) {
+    std::fprintf(out, "\n%-24s %8s %8s %8s %8s %8s %8s %8s %10s\n", "config", "p50 ms", "p95", "p99", "mean", "F1",
+                 "min F1", "prec", "recall");
+    for (const SweepRow& row : r.rows) {
+        const FrameTimeStats& t = row.run.stats;
+        std::fprintf(out, "%-24s %8.2f %8.2f %8.2f %8.2f %8.4f %8.4f %8.4f %10.4f\n", row.config.label.c_str(),
+                     t.p50_ms, t.p95_ms, t.p99_ms, t.mean_ms, row.score.mean_f1, row.score.min_f1,
+                     row.score.mean_precision, row.score.mean_recall);
+    }
+    std::fprintf(out, "F1 at 1 px tolerance over %zu frames; reference masks took %.1f s of CPU\n", r.sampled.size(),
+                 r.reference_ms / 1000.0);
+    for (const Goal& g : goals) {
+        std::fprintf(out, "goal %-46s %-6s %s\n", g.name.c_str(), g.met ? "MET" : "MISSED", g.detail.c_str());
+    }
+}
+
+}  // namespace bz::app

@@ -1,0 +1,73 @@
+#pragma once
+// The speed-accuracy sweep: every preset, the image-space outline baseline and the scene
+// modelling switches (frustum culling, distance LOD, instancing) on the same frames, each
+// timed and, at sampled frames, scored against the exact CPU reference.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "app/bench_plots.h"
+#include "app/bench_report.h"
+#include "app/bench_run.h"
+#include "geometry/mask_score.h"
+#include "scene/mesh_library.h"
+
+namespace bz::app {
+
+struct SweepConfig {
+    std::string label;
+    std::string what;  // one line: what differs
+    render::RenderSettings settings;
+};
+
+// fast, balanced, high, image-outline, and balanced with culling / LOD / instancing off.
+std::vector<SweepConfig> sweep_configs();
+
+struct SweepScore {
+    double mean_f1 = 0.0;
+    double min_f1 = 1.0;
+    double mean_precision = 0.0;
+    double mean_recall = 0.0;
+    std::vector<geo::MaskScore> per_sample;
+};
+
+struct SweepRow {
+    SweepConfig config;
+    RunResult run;
+    SweepScore score;
+};
+
+struct Goal {
+    std::string name;
+    bool met = false;
+    std::string detail;  // the measured numbers
+};
+
+// The goals, judged on the measured rows (missing rows make a goal unmet).
+std::vector<Goal> judge_goals(const std::vector<SweepRow>& rows);
+
+struct SweepOptions {
+    int samples = 6;                  // frames scored against the reference
+    std::filesystem::path masks_dir;  // where sampled masks are written; empty = nowhere
+    bool progress = true;
+};
+
+struct SweepResult {
+    std::vector<SweepRow> rows;
+    std::vector<int> sampled;         // timed-frame numbers scored
+    double reference_ms = 0.0;        // CPU time of all reference masks
+    std::size_t reference_rays = 0;
+};
+
+// Runs every configuration on `frames` (already simulated). Reference masks are computed once
+// per sampled frame.
+SweepResult run_sweep(render::Renderer& renderer, const BenchFrames& frames, const scene::MeshLibrary& meshes,
+                      int width, int height, const SweepOptions& options);
+
+std::string sweep_json(const BenchMeta& meta, const SweepResult& result, const std::vector<Goal>& goals);
+void print_sweep_table(std::FILE* out, const SweepResult& result, const std::vector<Goal>& goals);
+
+// The frames (timed-frame numbers) a sweep scores: `samples` spread evenly.
+std::vector<int> sampled_frames(int timed_frames, int samples);
+
+}  // namespace bz::app

@@ -1,0 +1,258 @@
+// beamzone bench LEVEL: frame-time benchmark along the level's camera path (or a replay),
+// offscreen, at a fixed simulated step; --sweep adds the speed-accuracy trade-off against the
+// exact CPU reference, --scaling the cost per triangle.
+#include <cstdio>
+#include <filesystem>
+#include <string>
+
+#include "app/bench_plots.h"
+#include "app/bench_report.h"
+#include "app/bench_run.h"
+#include "app/bench_scaling.h"
+#include "app/bench_scene.h"
+#include "app/bench_sweep.h"
+#include "app/cli_args.h"
+#include "app/commands.h"
+#include "app/headless_gl.h"
+#include "core/error.h"
+#include "core/file_io.h"
+#include "level/loader.h"
+
+namespace bz::app {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr const char* kUsage =
+    "usage: beamzone bench LEVEL [--frames N] [--warmup N] [--size WxH]\n"
+    "                      [--preset fast|balanced|high | --sweep | --scaling]\n"
+    "                      [--out DIR] [--replay FILE] [--samples N] [--timing auto|cpu|gpu]\n"
+    "Renders the level offscreen along its benchmark camera path ([[camera_key]]; without one\n"
+    "the autopilot's own view), one simulation tick (1/60 s) per frame, so every machine draws\n"
+    "the same frames. --replay FILE plays a recorded game instead, seen by the player.\n"
+    "Warm-up frames (default 30) are drawn but not counted; --frames (default 300) are timed.\n"
+    "Every pass is timed by name: GL timer queries on a hardware GPU, glFinish + CPU clock on a\n"
+    "software rasteriser (--timing overrides). Writes to --out (default bench-out):\n"
+    "  summary.json  frame-time mean/p50/p95/p99/max, 1% low FPS, per-pass means, scene stats\n"
+    "  frames.csv    one row per frame (MsBetweenPresents, MsCPUBusy, MsPass_<pass>, stats)\n"
+    "  frametime.png frame time per frame, stacked by pass\n"
+    "--sweep runs every preset, the image-space outline baseline and balanced with culling,\n"
+    "LOD and instancing off on the same frames, scores --samples frames (default 6) against\n"
+    "the exact CPU reference (F1 at 1 px) and adds sweep.json, tradeoff.png and masks/.\n"
+    "--scaling draws the frames from meshes subdivided to 1x, 4x, 16x and 64x the triangles\n"
+    "and writes scaling.json and scaling.png (default 40 frames).\n";
+
+enum class Mode { single, sweep, scaling };
+
+struct Options {
+    std::string level;
+    int frames = 300;
+    bool frames_given = false;
+    int warmup = 30;
+    glm::ivec2 size{1280, 720};
+    std::string preset;
+    Mode mode = Mode::single;
+    std::string out = "bench-out";
+    std::string replay;
+    int samples = 6;
+    std::string timing = "auto";
+};
+
+Options parse(Args args) {
+    Options o;
+    ArgCursor cur(static_cast<int>(args.size()), args.data());
+    bool preset_given = false;
+    while (!cur.done()) {
+        const std::string_view a = cur.next();
+        if (a == "--frames") {
+            o.frames = parse_int(a, cur.value(a), 1, 1000000);
+            o.frames_given = true;
+        } else if (a == "--warmup") {
+            o.warmup = parse_int(a, cur.value(a), 0, 100000);
+        } else if (a == "--size") {
+            o.size = parse_size(a, cur.value(a));
+        } else if (a == "--preset") {
+            o.preset = cur.value(a);
+            preset_given = true;
+        } else if (a == "--sweep" || a == "--scaling") {
+            const Mode m = a == "--sweep" ? Mode::sweep : Mode::scaling;
+            if (o.mode != Mode::single && o.mode != m) throw UsageError("--sweep and --scaling exclude each other");
+            o.mode = m;
+        } else if (a == "--out") {
+            o.out = cur.value(a);
+        } else if (a == "--replay") {
+            o.replay = cur.value(a);
+        } else if (a == "--samples") {
+            o.samples = parse_int(a, cur.value(a), 1, 1000);
+        } else if (a == "--timing") {
+            o.timing = cur.value(a);
+            if (o.timing != "auto" && o.timing != "cpu" && o.timing != "gpu") {
+                throw UsageError("--timing: expected auto, cpu or gpu");
+            }
+        } else if (!a.empty() && a[0] == '-') {
+            throw UsageError("unknown option " + std::string(a));
+        } else if (o.level.empty()) {
+            o.level = a;
+        } else {
+            throw UsageError("more than one LEVEL given");
+        }
+    }
+    if (o.level.empty()) throw UsageError("no LEVEL given");
+    if (preset_given && o.mode == Mode::sweep) throw UsageError("--preset and --sweep exclude each other (the sweep runs every preset)");
+    if (o.mode == Mode::scaling && !o.frames_given) o.frames = 40;
+    if (o.out.empty()) throw UsageError("--out needs a directory");
+    return o;
+}
+
+gl::TimingMethod pick_timing(const std::string& wanted, const platform::GlContext& ctx) {
+    if (wanted == "cpu") return gl::TimingMethod::cpu_finish;
+    if (wanted == "gpu") return gl::TimingMethod::gpu_queries;
+    // llvmpipe's GL_TIME_ELAPSED leaves out vertex and geometry work.
+    return ctx.is_software() ? gl::TimingMethod::cpu_finish : gl::TimingMethod::gpu_queries;
+}
+
+BenchFrames simulate(BenchScene& scene, const Options& o, double aspect) {
+    BenchFrames bf;
+    bf.warmup = o.warmup;
+    const int total = o.warmup + o.frames;
+    bf.frames.reserve(static_cast<std::size_t>(total));
+    scene::FrameList f;
+    for (int i = 0; i < total; ++i) {
+        if (!scene.next(f, aspect)) break;
+        bf.frames.push_back(f);
+        bf.seconds.push_back(scene.seconds());
+    }
+    if (static_cast<int>(bf.frames.size()) <= o.warmup) {
+        throw UserError(o.replay + ": the replay has " + std::to_string(bf.frames.size()) + " ticks, not more than the " +
+                        std::to_string(o.warmup) + " warm-up frames");
+    }
+    return bf;
+}
+
+void write_text(const fs::path& p, const std::string& s) { write_file_atomic(p, s); }
+
+int run(const Options& o) {
+    level::LoadResult loaded = level::load_level_file(o.level);
+    if (!loaded.ok()) {
+        for (const level::Diagnostic& d : loaded.errors) std::fprintf(stderr, "%s\n", level::format(d).c_str());
+        return 1;
+    }
+    const std::string preset_name = o.preset.empty() ? loaded.level->render.preset : o.preset;
+    render::RenderSettings settings = render::preset(preset_name.empty() ? "balanced" : preset_name);
+    settings.count_edges = true;
+    std::optional<game::replay::Replay> replay;
+    if (!o.replay.empty()) replay = game::replay::load(o.replay);
+
+    const double aspect = static_cast<double>(o.size.x) / o.size.y;
+    BenchScene scene(std::move(*loaded.level), std::move(replay));
+    std::fprintf(stderr, "simulating %d frames of %s ...\n", o.warmup + o.frames, o.level.c_str());
+    const BenchFrames frames = simulate(scene, o, aspect);
+
+    std::error_code ec;
+    fs::create_directories(o.out, ec);
+    if (ec) throw UserError(o.out + ": cannot create the output directory: " + ec.message());
+
+    auto context = make_headless_context();
+    const gl::TimingMethod timing = pick_timing(o.timing, *context);
+    render::Renderer renderer(settings, o.size.x, o.size.y, timing);
+    const scene::VectorFont* font = nullptr;
+    std::unique_ptr<scene::VectorFont> font_storage;
+    try {
+        font_storage = std::make_unique<scene::VectorFont>(scene::VectorFont::load_default());
+        font = font_storage.get();
+    } catch (const UserError& e) {
+        std::fprintf(stderr, "beamzone bench: warning: plots without labels: %s\n", e.what());
+    }
+
+    BenchMeta meta;
+    meta.level = o.level;
+    meta.camera = scene.camera_description();
+    meta.width = o.size.x;
+    meta.height = o.size.y;
+    meta.frames = static_cast<int>(frames.frames.size()) - frames.warmup;
+    meta.warmup = frames.warmup;
+    meta.gl_renderer = context->renderer_name();
+    meta.software = context->is_software();
+    meta.timing = timing;
+    meta.load_before = load_average();
+    const fs::path out(o.out);
+
+    std::vector<RunResult> runs;
+    if (o.mode == Mode::sweep) {
+        SweepOptions so;
+        so.samples = o.samples;
+        so.masks_dir = out / "masks";
+        fs::create_directories(so.masks_dir, ec);
+        if (ec) throw UserError(so.masks_dir.string() + ": cannot create: " + ec.message());
+        const SweepResult result = run_sweep(renderer, frames, scene.meshes(), o.size.x, o.size.y, so);
+        meta.load_after = load_average();
+        const std::vector<Goal> goals = judge_goals(result.rows);
+        std::vector<TradeoffPoint> points;
+        for (const SweepRow& r : result.rows) {
+            runs.push_back(r.run);
+            points.push_back({r.config.label, r.run.stats.p50_ms, r.score.mean_f1, r.score.min_f1});
+            plot_frame_times(r.run, r.config.label + ": frame time by pass", font,
+                             out / ("frametime_" + r.config.label + ".png"));
+        }
+        write_text(out / "sweep.json", sweep_json(meta, result, goals));
+        plot_tradeoff(points, "speed vs accuracy, " + fs::path(o.level).filename().string(), font, out / "tradeoff.png");
+        for (const SweepRow& r : result.rows) {
+            if (r.config.label == "balanced") plot_frame_times(r.run, "balanced: frame time by pass", font, out / "frametime.png");
+        }
+        print_summary_table(stdout, meta, runs);
+        print_sweep_table(stdout, result, goals);
+    } else if (o.mode == Mode::scaling) {
+        const ScalingResult result = run_scaling(renderer, frames, scene.meshes(), settings, 60'000'000, true);
+        meta.load_after = load_average();
+        runs = result.runs;
+        write_text(out / "scaling.json", scaling_json(meta, result));
+        plot_scaling(result.points, result.fit, "frame time against triangles, " + fs::path(o.level).filename().string(),
+                     font, out / "scaling.png");
+        if (!runs.empty()) plot_frame_times(runs.front(), "1x: frame time by pass", font, out / "frametime.png");
+        print_summary_table(stdout, meta, runs);
+        std::printf("growth: %.2f ms per 100k triangles submitted (fit intercept %.2f ms, r2 %.3f)\n",
+                    result.fit.slope * 1e5, result.fit.intercept, result.fit.r2);
+        for (const std::string& s : result.skipped) std::printf("skipped %s\n", s.c_str());
+    } else {
+        ProgressBar bar(settings.preset);
+        runs.push_back(run_frames(renderer, frames, scene.meshes(), settings.preset, settings,
+                                  [&bar](int d, int t) { bar(d, t); }));
+        meta.load_after = load_average();
+        plot_frame_times(runs.front(), settings.preset + ": frame time by pass", font, out / "frametime.png");
+        print_summary_table(stdout, meta, runs);
+    }
+    write_text(out / "summary.json", summary_json(meta, runs));
+    write_text(out / "frames.csv", frames_csv(runs));
+    std::printf("wrote %s/\n", o.out.c_str());
+    if (context->debug().error_count() > 0) {
+        std::fprintf(stderr, "beamzone bench: %d OpenGL error(s) reported\n", context->debug().error_count());
+        return 1;
+    }
+    return 0;
+}
+
+}  // namespace
+
+int cmd_bench(Args args) {
+    for (const char* a : args) {
+        if (std::string_view(a) == "--help" || std::string_view(a) == "-h") {
+            std::fputs(kUsage, stdout);
+            return 0;
+        }
+    }
+    Options o;
+    try {
+        o = parse(args);
+        if (!o.preset.empty()) render::preset(o.preset);
+    } catch (const UsageError& e) {
+        std::fprintf(stderr, "beamzone bench: %s\n%s", e.what(), kUsage);
+        return 2;
+    } catch (const UserError& e) {
+        std::fprintf(stderr, "beamzone bench: %s\n", e.what());
+        return 2;
+    }
+    return run(o);
+}
+
+}  // namespace bz::app
