@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <filesystem>
 
+#include "core/file_io.h"
 #include "level/loader.h"
 
 namespace bz::level {
@@ -63,6 +64,31 @@ TEST(ShippedLevels, EachHasItsOwnCharacter) {
     EXPECT_TRUE(night.backdrop.volcano);
     EXPECT_GE(load_shipped("plains.toml").field_size, 1000.0);
     EXPECT_GE(load_shipped("plains.toml").obstacles.size(), 100u);
+}
+
+}  // namespace
+}  // namespace bz::level
+
+namespace bz::level {
+namespace {
+
+// The complete example in levels/README.md must stay a valid level.
+TEST(ShippedLevels, ReadmeExampleIsValid) {
+    const std::string readme =
+        read_file(std::filesystem::path(BEAMZONE_SOURCE_DIR) / "levels" / "README.md");
+    const auto heading = readme.find("## Example");
+    ASSERT_NE(heading, std::string::npos);
+    const auto begin = readme.find("```toml\n", heading);
+    ASSERT_NE(begin, std::string::npos);
+    const auto end = readme.find("```", begin + 8);
+    ASSERT_NE(end, std::string::npos);
+    const std::string example = readme.substr(begin + 8, end - begin - 8);
+    const LoadResult r = load_level_string(
+        example, std::filesystem::path(BEAMZONE_SOURCE_DIR) / "levels" / "readme-example.toml");
+    for (const auto& e : r.errors) ADD_FAILURE() << format(e);
+    ASSERT_TRUE(r.ok());
+    EXPECT_EQ(r.level->name, "Two Towers");
+    EXPECT_EQ(r.level->obstacles.size(), 4u);
 }
 
 }  // namespace
