@@ -9,7 +9,7 @@
 //  - An edge whose neighbour slot marks it non-interior (a_i == v_i) is always a feature edge.
 //  - Otherwise, with neighbour U = (v_i, a_i, v_{i+1}): a silhouette iff T is front and U is
 //    not; nothing if their facing differs the other way; else a crease iff the object-space unit
-//    normals have dot < cos_crease (emitted once).
+//    normals have dot < cos_crease (emitted once, by the face that sees the edge low -> high).
 //  - A point of an edge is visible iff the segment eye -> point hits no occluder triangle,
 //    other than the faces on that edge, whose hit lies at or beyond the near plane and before
 //    the point by more than a relative epsilon.

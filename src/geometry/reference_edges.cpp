@@ -17,6 +17,12 @@ bool front_facing(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c)
     return glm::dot(face_normal(a, b, c), -a) > 0.0;
 }
 
+// A zero normal (a degenerate face) stays zero, as in geometry/dihedral.cpp.
+glm::dvec3 unit(const glm::dvec3& n) {
+    const double len = glm::length(n);
+    return len > 0.0 ? n / len : glm::dvec3(0.0);
+}
+
 glm::dvec3 object_pos(const AdjacencyMesh& m, std::uint32_t i) { return glm::dvec3(m.positions[i]); }
 
 std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) {
@@ -35,9 +41,7 @@ void find_feature_edges(const ReferenceInstance& inst, std::uint32_t instance_in
         const std::uint32_t* adj = &m.adjacency[t * 6];
         const glm::dvec3 n_view = face_normal(vp[adj[0]], vp[adj[2]], vp[adj[4]]);
         const bool front = glm::dot(n_view, -vp[adj[0]]) > 0.0;
-        glm::dvec3 n_obj = face_normal(object_pos(m, adj[0]), object_pos(m, adj[2]), object_pos(m, adj[4]));
-        const double n_obj_len = glm::length(n_obj);
-        n_obj = n_obj_len > 1e-30 ? n_obj / n_obj_len : glm::dvec3(0.0);
+        const glm::dvec3 n_obj = unit(face_normal(object_pos(m, adj[0]), object_pos(m, adj[2]), object_pos(m, adj[4])));
         for (int e = 0; e < 3; ++e) {
             const std::uint32_t v0 = adj[2 * e], va = adj[2 * e + 1], v1 = adj[(2 * e + 2) % 6];
             FeatureEdge fe{vp[v0], vp[v1], instance_index, v0, v1, FeatureKind::boundary};
@@ -53,10 +57,9 @@ void find_feature_edges(const ReferenceInstance& inst, std::uint32_t instance_in
             }
             if (front != neighbour_front) continue;  // the other face owns this silhouette
             if (v0 > v1) continue;                    // each crease once
-            const glm::dvec3 m_obj = face_normal(object_pos(m, v0), object_pos(m, va), object_pos(m, v1));
-            const double m_len = glm::length(m_obj);
-            if (m_len < 1e-30 || n_obj_len < 1e-30) continue;
-            if (glm::dot(n_obj, m_obj / m_len) < inst.cos_crease) {
+            // geometry/dihedral.cpp's cosine, kept in double.
+            const glm::dvec3 m_obj = unit(face_normal(object_pos(m, v0), object_pos(m, va), object_pos(m, v1)));
+            if (glm::dot(n_obj, m_obj) < inst.cos_crease) {
                 fe.kind = FeatureKind::crease;
                 out.push_back(fe);
             }
