@@ -31,9 +31,12 @@ bool offscreen_allowed(const PlayOptions& o) {
 render::RenderSettings render_settings(const std::string& preset, const level::Level* lvl) {
     render::RenderSettings r = render::preset(preset);
     if (!lvl) return r;
-    if (lvl->render.line_width_px) r.line_half_width_px = static_cast<float>(*lvl->render.line_width_px * 0.5);
-    if (lvl->render.crease_angle_deg) r.crease_angle_deg = static_cast<float>(*lvl->render.crease_angle_deg);
-    if (lvl->render.bloom_strength) r.bloom_strength = static_cast<float>(*lvl->render.bloom_strength);
+    if (lvl->render.line_width_px)
+        r.line_half_width_px = static_cast<float>(*lvl->render.line_width_px * 0.5);
+    if (lvl->render.crease_angle_deg)
+        r.crease_angle_deg = static_cast<float>(*lvl->render.crease_angle_deg);
+    if (lvl->render.bloom_strength)
+        r.bloom_strength = static_cast<float>(*lvl->render.bloom_strength);
     return r;
 }
 
@@ -47,7 +50,8 @@ struct Play {
         log.info("high scores: " + paths.high_scores.string());
         log.info("log: " + paths.log.string());
 
-        platform::SettingsLoad loaded = platform::load_settings(paths.settings, render::preset_names());
+        platform::SettingsLoad loaded =
+            platform::load_settings(paths.settings, render::preset_names());
         for (const auto& e : loaded.errors) log.warn(e);
         platform::Settings& settings = loaded.settings;
         if (!loaded.file_existed) save(settings);  // a commented file to edit, on first start
@@ -58,8 +62,9 @@ struct Play {
 
         // The level before the window, so a broken level file fails fast and plainly.
         std::unique_ptr<level::LevelWatcher> watcher;
-        const std::filesystem::path level_path =
-            options.level.empty() ? level::default_level_path() : std::filesystem::path(options.level);
+        const std::filesystem::path level_path = options.level.empty()
+                                                     ? level::default_level_path()
+                                                     : std::filesystem::path(options.level);
         std::error_code ec;
         if (!options.level.empty() || std::filesystem::exists(level_path, ec)) {
             watcher = std::make_unique<level::LevelWatcher>(level_path);
@@ -94,8 +99,8 @@ struct Play {
         log.info("OpenGL renderer: " + context.renderer_name());
         const platform::Vsync vsync = context.set_vsync(settings.vsync);
         if (vsync != settings.vsync) {
-            log.info("vsync " + std::string(platform::vsync_name(settings.vsync)) + " is not available; using " +
-                     std::string(platform::vsync_name(vsync)));
+            log.info("vsync " + std::string(platform::vsync_name(settings.vsync)) +
+                     " is not available; using " + std::string(platform::vsync_name(vsync)));
         }
 
         const render::RenderSettings look = render_settings(settings.preset, lvl);
@@ -118,15 +123,18 @@ struct Play {
         so.high_scores = paths.high_scores;
         so.pause_on_focus_loss = settings.pause_on_focus_loss;
         so.font = &font;
-        std::unique_ptr<PlaySession> session = options.edit ? make_edit_session(so, log) : make_game_session(so, log);
+        std::unique_ptr<PlaySession> session =
+            options.edit ? make_edit_session(so, log) : make_game_session(so, log);
 
         LoopConfig config;
         config.frames = options.frames;
         config.screenshot_at = options.screenshot_at;
         config.edit = options.edit;
-        config.style = settings.style == "arcade" ? scene::LineStyle::arcade : scene::LineStyle::occluded;
+        config.style =
+            settings.style == "arcade" ? scene::LineStyle::arcade : scene::LineStyle::occluded;
         config.screenshots = paths.screenshots;
-        LoopParts parts{context, make_renderer, audio, input, gamepads, watcher.get(), overlay, log, settings};
+        LoopParts parts{context,       make_renderer, audio, input,   gamepads,
+                        watcher.get(), overlay,       log,   settings};
         const LoopResult result = run_play_loop(*session, parts, config);
         session.reset();  // flushes a recording before we report
 
@@ -134,11 +142,13 @@ struct Play {
             if (loaded.may_save()) {
                 save(settings);
             } else {
-                log.warn("not saving settings: " + paths.settings.string() + " has errors to fix first");
+                log.warn("not saving settings: " + paths.settings.string() +
+                         " has errors to fix first");
             }
         }
         if (options.frames > 0) {
-            std::printf("play: %d frames, %d ticks, %d GL errors\n", result.frames, result.ticks, result.gl_errors);
+            std::printf("play: %d frames, %d ticks, %d GL errors\n", result.frames, result.ticks,
+                        result.gl_errors);
         }
         return result.gl_errors > 0 || result.session_failed ? 1 : 0;
     }
@@ -171,9 +181,10 @@ int cmd_play(Args args) {
     std::string why;
     if (!platform::display_available(&why)) {
         if (!offscreen_allowed(options)) {
-            std::fprintf(stderr,
-                         "beamzone: no display available (%s); try `beamzone render` for headless images\n",
-                         why.c_str());
+            std::fprintf(
+                stderr,
+                "beamzone: no display available (%s); try `beamzone render` for headless images\n",
+                why.c_str());
             return 1;
         }
         setenv("SDL_VIDEODRIVER", "offscreen", 0);  // a test run: a hidden window is enough

@@ -18,7 +18,7 @@ constexpr double kReloadPollSeconds = 0.25;
 constexpr float kVolumeStep = 0.1f;
 
 class Loop {
-public:
+  public:
     Loop(PlaySession& session, LoopParts& parts, const LoopConfig& config)
         : session_(session), p_(parts), config_(config) {}
 
@@ -56,14 +56,16 @@ public:
         return result_;
     }
 
-private:
+  private:
     void pump_events() {
         SDL_Event e;
         while (SDL_PollEvent(&e)) {
             p_.gamepads.handle_event(e);
             p_.input.handle_event(e);
             switch (e.type) {
-                case SDL_QUIT: running_ = false; break;
+                case SDL_QUIT:
+                    running_ = false;
+                    break;
                 case SDL_WINDOWEVENT:
                     if (e.window.event == SDL_WINDOWEVENT_FOCUS_LOST) session_.on_focus_lost();
                     if (e.window.event == SDL_WINDOWEVENT_MINIMIZED) minimized_ = true;
@@ -73,10 +75,12 @@ private:
                     }
                     break;
                 case SDL_MOUSEBUTTONDOWN:
-                    if (config_.edit && e.button.button == SDL_BUTTON_RIGHT) SDL_SetRelativeMouseMode(SDL_TRUE);
+                    if (config_.edit && e.button.button == SDL_BUTTON_RIGHT)
+                        SDL_SetRelativeMouseMode(SDL_TRUE);
                     break;
                 case SDL_MOUSEBUTTONUP:
-                    if (config_.edit && e.button.button == SDL_BUTTON_RIGHT) SDL_SetRelativeMouseMode(SDL_FALSE);
+                    if (config_.edit && e.button.button == SDL_BUTTON_RIGHT)
+                        SDL_SetRelativeMouseMode(SDL_FALSE);
                     break;
                 case SDL_MOUSEMOTION:
                     if (config_.edit && (e.motion.state & SDL_BUTTON_RMASK)) {
@@ -84,7 +88,8 @@ private:
                         mouse_dy_ += static_cast<float>(e.motion.yrel);
                     }
                     break;
-                default: break;
+                default:
+                    break;
             }
         }
     }
@@ -94,15 +99,21 @@ private:
         switch (a) {
             case Action::pause:
             case Action::start:
-            case Action::back: session_.on_action(a); break;
+            case Action::back:
+                session_.on_action(a);
+                break;
             case Action::fullscreen: {
                 p_.context.set_fullscreen(!p_.context.fullscreen());
                 p_.settings.fullscreen = p_.context.fullscreen();
                 result_.settings_changed = true;
                 break;
             }
-            case Action::screenshot: screenshot_requested_ = true; break;
-            case Action::reload_shaders: reload_shaders(); break;
+            case Action::screenshot:
+                screenshot_requested_ = true;
+                break;
+            case Action::reload_shaders:
+                reload_shaders();
+                break;
             case Action::mute: {
                 p_.settings.mute = !p_.settings.mute;
                 p_.audio.set_mute(p_.settings.mute);
@@ -117,13 +128,18 @@ private:
                 const float v = std::round((p_.settings.volume + step) / kVolumeStep) * kVolumeStep;
                 p_.settings.volume = std::clamp(v, 0.0f, 1.0f);
                 p_.audio.set_volume(p_.settings.volume);
-                p_.overlay.notify("volume " + std::to_string(static_cast<int>(std::lround(p_.settings.volume * 100))) +
-                                  "%" + (p_.settings.mute ? " (muted: M)" : ""));
+                p_.overlay.notify(
+                    "volume " +
+                    std::to_string(static_cast<int>(std::lround(p_.settings.volume * 100))) + "%" +
+                    (p_.settings.mute ? " (muted: M)" : ""));
                 result_.settings_changed = true;
                 break;
             }
-            case Action::quit: running_ = false; break;
-            default: break;
+            case Action::quit:
+                running_ = false;
+                break;
+            default:
+                break;
         }
     }
 
@@ -176,7 +192,8 @@ private:
         auto key = [this](SDL_Scancode s) { return p_.input.key_held(s) ? 1.0f : 0.0f; };
         c.forward = key(SDL_SCANCODE_W) - key(SDL_SCANCODE_S);
         c.right = key(SDL_SCANCODE_D) - key(SDL_SCANCODE_A);
-        c.up = key(SDL_SCANCODE_R) + key(SDL_SCANCODE_E) - key(SDL_SCANCODE_F) - key(SDL_SCANCODE_Q);
+        c.up =
+            key(SDL_SCANCODE_R) + key(SDL_SCANCODE_E) - key(SDL_SCANCODE_F) - key(SDL_SCANCODE_Q);
         c.yaw = key(SDL_SCANCODE_LEFT) - key(SDL_SCANCODE_RIGHT);
         c.pitch = key(SDL_SCANCODE_UP) - key(SDL_SCANCODE_DOWN);
         c.fast = p_.input.key_held(SDL_SCANCODE_LSHIFT) || p_.input.key_held(SDL_SCANCODE_RSHIFT);
@@ -208,7 +225,8 @@ private:
         if (w > 0 && h > 0 && (w != renderer_->width() || h != renderer_->height())) {
             renderer_->resize(w, h);
         }
-        const double aspect = static_cast<double>(renderer_->width()) / std::max(1, renderer_->height());
+        const double aspect =
+            static_cast<double>(renderer_->width()) / std::max(1, renderer_->height());
         scene::FrameList frame = session_.frame(alpha_, aspect);
         frame.style = config_.style;
         p_.overlay.draw(frame.hud, aspect);
@@ -224,8 +242,9 @@ private:
 
     void take_screenshot() {
         try {
-            const auto path = platform::save_screenshot(config_.screenshots, renderer_->width(),
-                                                        renderer_->height(), renderer_->read_color());
+            const auto path =
+                platform::save_screenshot(config_.screenshots, renderer_->width(),
+                                          renderer_->height(), renderer_->read_color());
             p_.log.info("screenshot saved: " + path.string());
             p_.overlay.notify("screenshot " + path.filename().string());
         } catch (const std::exception& e) {

@@ -20,9 +20,9 @@
 namespace bz::app {
 
 struct LoopConfig {
-    int frames = 0;       // > 0: stop after this many frames, each exactly one tick long
+    int frames = 0;         // > 0: stop after this many frames, each exactly one tick long
     int screenshot_at = 0;  // > 0: take a screenshot on this frame (1-based)
-    bool edit = false;    // free-fly camera controls instead of tank controls
+    bool edit = false;      // free-fly camera controls instead of tank controls
     scene::LineStyle style = scene::LineStyle::occluded;
     std::filesystem::path screenshots;
 };

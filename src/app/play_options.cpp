@@ -56,7 +56,8 @@ PlayOptions parse_play_options(int argc, char* const* argv) {
             const std::string_view v = cur.value(a);
             platform::Vsync mode{};
             if (!platform::parse_vsync(v, &mode)) {
-                throw UsageError("--vsync: expected off, on or adaptive, not '" + std::string(v) + "'");
+                throw UsageError("--vsync: expected off, on or adaptive, not '" + std::string(v) +
+                                 "'");
             }
             o.vsync = mode;
         } else if (a == "--record") {
@@ -110,8 +111,11 @@ std::string play_usage(const std::string& settings_path, const std::string& high
            "Game controllers: sticks drive the treads (or the left stick alone: gamepad =\n"
            "\"drive\" in the settings), triggers, A or R1 fire, Start pauses or starts, B back.\n"
            "\n"
-           "settings:    " + settings_path + "\n"
-           "high scores: " + high_scores_path + "\n";
+           "settings:    " +
+           settings_path +
+           "\n"
+           "high scores: " +
+           high_scores_path + "\n";
 }
 
 }  // namespace bz::app

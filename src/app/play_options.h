@@ -18,8 +18,8 @@ struct PlayOptions {
     std::string record;
     std::string replay;
     std::optional<std::uint64_t> seed;
-    int frames = 0;            // > 0: run this many frames (one tick each) and exit
-    int screenshot_at = 0;     // > 0: take a screenshot after this frame, as F12 would
+    int frames = 0;              // > 0: run this many frames (one tick each) and exit
+    int screenshot_at = 0;       // > 0: take a screenshot after this frame, as F12 would
     bool headless_test = false;  // run in a hidden window under SDL's offscreen driver
     bool help = false;
 };

@@ -37,7 +37,8 @@ std::vector<std::string> PlayOverlay::wrap(const std::string& text, float height
         }
         // Longest prefix that fits, then back off to the last space in it.
         std::size_t fit = 1;
-        while (fit < rest.size() && font_.width(std::string_view(rest).substr(0, fit + 1), height) <= max_width) {
+        while (fit < rest.size() &&
+               font_.width(std::string_view(rest).substr(0, fit + 1), height) <= max_width) {
             ++fit;
         }
         const std::size_t space = rest.rfind(' ', fit);
@@ -76,7 +77,8 @@ void PlayOverlay::draw(std::vector<scene::HudLine>& out, double aspect) const {
         const float fade = static_cast<float>(std::clamp(it->seconds_left / 0.5, 0.0, 1.0));
         const auto lines = wrap(it->text, kNoticeHeight, max_width);
         for (auto l = lines.rbegin(); l != lines.rend(); ++l) {  // drawn bottom-up
-            font_.draw(out, *l, {-a + kMargin, y}, kNoticeHeight, kNoticeColor, scene::TextAlign::left, fade);
+            font_.draw(out, *l, {-a + kMargin, y}, kNoticeHeight, kNoticeColor,
+                       scene::TextAlign::left, fade);
             y += kNoticeHeight * kLineGap;
         }
     }

@@ -11,7 +11,7 @@
 namespace bz::app {
 
 class PlayOverlay {
-public:
+  public:
     explicit PlayOverlay(const scene::VectorFont& font) : font_(font) {}
 
     // Shown until replaced; an empty list clears it.
@@ -25,7 +25,7 @@ public:
     void draw(std::vector<scene::HudLine>& out, double aspect) const;
     std::size_t notice_count() const { return notices_.size(); }
 
-private:
+  private:
     struct Notice {
         std::string text;
         double seconds_left;

@@ -25,7 +25,7 @@ struct SessionSounds {
 };
 
 class PlaySession {
-public:
+  public:
     virtual ~PlaySession() = default;
     // One fixed 60 Hz step.
     virtual void tick(const platform::InputState& input) = 0;

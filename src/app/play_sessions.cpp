@@ -28,10 +28,13 @@ std::uint64_t clock_seed() {
 // The game: screens, world, HUD, high scores and replays all live in game::Game; this turns
 // input into its tick commands and its results into sounds and saved files.
 class GameSession final : public PlaySession {
-public:
+  public:
     GameSession(level::Level lvl, const SessionOptions& o, Log& log)
-        : font_(o.font), high_scores_path_(o.high_scores), record_path_(o.record),
-          pause_on_focus_loss_(o.pause_on_focus_loss), log_(log) {
+        : font_(o.font),
+          high_scores_path_(o.high_scores),
+          record_path_(o.record),
+          pause_on_focus_loss_(o.pause_on_focus_loss),
+          log_(log) {
         options_.seed = o.seed.value_or(clock_seed());
         game::HighScoreLoad scores = game::load_highscores(high_scores_path_);
         if (!scores.warning.empty()) log_.warn(scores.warning);
@@ -53,7 +56,8 @@ public:
         try {
             if (const auto rec = game_->recording()) {
                 game::replay::save(record_path_, *rec);
-                log_.info("recorded " + std::to_string(rec->commands.size()) + " ticks to " + record_path_);
+                log_.info("recorded " + std::to_string(rec->commands.size()) + " ticks to " +
+                          record_path_);
             } else {
                 log_.warn("nothing to record in " + record_path_ + ": no game was started");
             }
@@ -85,7 +89,9 @@ public:
     }
 
     void update(const platform::FlyControls&, double) override {}
-    scene::FrameList frame(double alpha, double aspect) override { return game_->frame(alpha, aspect); }
+    scene::FrameList frame(double alpha, double aspect) override {
+        return game_->frame(alpha, aspect);
+    }
     const scene::MeshLibrary& meshes() const override { return game_->meshes(); }
 
     SessionSounds take_sounds() override {
@@ -136,7 +142,7 @@ public:
     bool failed() const override { return game_->replay_mismatch().has_value(); }
     std::uint64_t mesh_generation() const override { return mesh_generation_; }
 
-private:
+  private:
     void save_scores() {
         try {
             game::save_highscores(high_scores_path_, game_->highscores());
@@ -150,7 +156,8 @@ private:
         if (!game_->replaying() || replay_reported_) return;
         if (const auto& m = game_->replay_mismatch()) {
             log_.error("replay diverged at tick " + std::to_string(m->tick) + " (state hash " +
-                       std::to_string(m->actual) + ", recorded " + std::to_string(m->expected) + ")");
+                       std::to_string(m->actual) + ", recorded " + std::to_string(m->expected) +
+                       ")");
             replay_reported_ = true;
         } else if (game_->replay_finished()) {
             log_.info("replay finished; every recorded state hash matched");
@@ -175,10 +182,11 @@ private:
 // --edit: the level's objects and horizon from a free-flying camera; nothing moves but the
 // volcano.
 class EditSession final : public PlaySession {
-public:
+  public:
     explicit EditSession(level::Level lvl)
         : level_(std::move(lvl)),
-          camera_(level_.player_start + glm::dvec3(0.0, 6.0, 0.0), level_.player_heading_deg, -10.0) {
+          camera_(level_.player_start + glm::dvec3(0.0, 6.0, 0.0), level_.player_heading_deg,
+                  -10.0) {
         rebuild();
     }
 
@@ -199,8 +207,10 @@ public:
             item.color = e.color;
             f.items.push_back(item);
         }
-        const double seconds = (static_cast<double>(ticks_) + alpha) * game::FixedStep::kTickSeconds;
-        game::backdrop::append_items(f.items, level_.backdrop, assets_->horizon(), f.camera.eye, seconds);
+        const double seconds =
+            (static_cast<double>(ticks_) + alpha) * game::FixedStep::kTickSeconds;
+        game::backdrop::append_items(f.items, level_.backdrop, assets_->horizon(), f.camera.eye,
+                                     seconds);
         return f;
     }
 
@@ -219,7 +229,7 @@ public:
     }
     std::uint64_t mesh_generation() const override { return mesh_generation_; }
 
-private:
+  private:
     void rebuild() {
         // Fresh assets, so a changed horizon or model file is rebuilt too. A world builds the
         // obstacles through the factory table; its simulation never runs.
@@ -238,7 +248,9 @@ private:
     std::uint64_t mesh_generation_ = 0;
 };
 
-level::Level chosen_level(const SessionOptions& o) { return o.level ? *o.level : game::default_level(); }
+level::Level chosen_level(const SessionOptions& o) {
+    return o.level ? *o.level : game::default_level();
+}
 
 }  // namespace
 
@@ -246,15 +258,24 @@ SoundCue sound_cue(game::SoundEvent e) {
     using game::SoundEvent;
     using platform::Sound;
     switch (e) {
-        case SoundEvent::shot: return {Sound::shot, 1.0f};
-        case SoundEvent::enemy_shot: return {Sound::shot, 0.6f};
-        case SoundEvent::explosion: return {Sound::explosion, 0.9f};
-        case SoundEvent::shell_impact: return {Sound::explosion, 0.35f};
-        case SoundEvent::player_death: return {Sound::explosion, 1.0f};
-        case SoundEvent::radar_blip: return {Sound::radar_blip, 0.8f};
-        case SoundEvent::warning: return {Sound::warning, 0.8f};
-        case SoundEvent::bonus_life: return {Sound::radar_blip, 1.0f};
-        case SoundEvent::blocked: return {Sound::warning, 0.3f};
+        case SoundEvent::shot:
+            return {Sound::shot, 1.0f};
+        case SoundEvent::enemy_shot:
+            return {Sound::shot, 0.6f};
+        case SoundEvent::explosion:
+            return {Sound::explosion, 0.9f};
+        case SoundEvent::shell_impact:
+            return {Sound::explosion, 0.35f};
+        case SoundEvent::player_death:
+            return {Sound::explosion, 1.0f};
+        case SoundEvent::radar_blip:
+            return {Sound::radar_blip, 0.8f};
+        case SoundEvent::warning:
+            return {Sound::warning, 0.8f};
+        case SoundEvent::bonus_life:
+            return {Sound::radar_blip, 1.0f};
+        case SoundEvent::blocked:
+            return {Sound::warning, 0.3f};
     }
     return {Sound::radar_blip, 0.0f};
 }

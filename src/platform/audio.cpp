@@ -13,7 +13,8 @@ namespace {
 
 void fill(void* user, Uint8* stream, int bytes) {
     auto* synth = static_cast<Synth*>(user);
-    synth->render(reinterpret_cast<float*>(stream), static_cast<std::size_t>(bytes) / sizeof(float));
+    synth->render(reinterpret_cast<float*>(stream),
+                  static_cast<std::size_t>(bytes) / sizeof(float));
 }
 
 }  // namespace
@@ -36,7 +37,8 @@ Audio::Audio(Log& log, float volume, bool mute) : volume_(volume), mute_(mute) {
     want.userdata = synth_.get();
     device_ = SDL_OpenAudioDevice(nullptr, 0, &want, &have, SDL_AUDIO_ALLOW_FREQUENCY_CHANGE);
     if (device_ == 0) {
-        log.warn(std::string("cannot open an audio device (") + SDL_GetError() + "); playing silently");
+        log.warn(std::string("cannot open an audio device (") + SDL_GetError() +
+                 "); playing silently");
         synth_.reset();
         return;
     }
@@ -44,7 +46,8 @@ Audio::Audio(Log& log, float volume, bool mute) : volume_(volume), mute_(mute) {
     synth_->set_volume(volume);
     synth_->set_mute(mute);
     SDL_PauseAudioDevice(device_, 0);
-    log.info("audio: " + std::string(SDL_GetCurrentAudioDriver()) + ", " + std::to_string(have.freq) + " Hz");
+    log.info("audio: " + std::string(SDL_GetCurrentAudioDriver()) + ", " +
+             std::to_string(have.freq) + " Hz");
 }
 
 Audio::~Audio() {

@@ -12,7 +12,7 @@ class Log;
 namespace bz::platform {
 
 class Audio {
-public:
+  public:
     Audio(Log& log, float volume, bool mute);
     ~Audio();
     Audio(const Audio&) = delete;
@@ -26,7 +26,7 @@ public:
     float volume() const { return volume_; }
     bool muted() const { return mute_; }
 
-private:
+  private:
     template <class F>
     void with_synth(F&& f);
 

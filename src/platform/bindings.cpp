@@ -9,11 +9,25 @@ namespace bz::platform {
 namespace {
 
 constexpr std::array<std::string_view, kActionCount> kNames = {
-    "left_tread_forward", "left_tread_back", "right_tread_forward", "right_tread_back",
-    "drive_forward",      "drive_back",      "turn_left",           "turn_right",
-    "fire",               "pause",           "fullscreen",          "screenshot",
-    "reload_shaders",     "mute",            "volume_up",           "volume_down",
-    "quit",               "start",           "back",
+    "left_tread_forward",
+    "left_tread_back",
+    "right_tread_forward",
+    "right_tread_back",
+    "drive_forward",
+    "drive_back",
+    "turn_left",
+    "turn_right",
+    "fire",
+    "pause",
+    "fullscreen",
+    "screenshot",
+    "reload_shaders",
+    "mute",
+    "volume_up",
+    "volume_down",
+    "quit",
+    "start",
+    "back",
 };
 
 struct ModifierName {
@@ -39,7 +53,9 @@ KeyBinding key(const char* name, std::uint8_t mods = kModNone) {
 
 }  // namespace
 
-std::string_view action_name(Action a) { return kNames.at(static_cast<std::size_t>(a)); }
+std::string_view action_name(Action a) {
+    return kNames.at(static_cast<std::size_t>(a));
+}
 
 std::optional<Action> action_from_name(std::string_view name) {
     for (std::size_t i = 0; i < kActionCount; ++i) {
@@ -67,7 +83,8 @@ std::optional<KeyBinding> parse_key(std::string_view text, std::string* error) {
         }
     }
     const std::string name(rest);
-    const SDL_Scancode sc = name.empty() ? SDL_SCANCODE_UNKNOWN : SDL_GetScancodeFromName(name.c_str());
+    const SDL_Scancode sc =
+        name.empty() ? SDL_SCANCODE_UNKNOWN : SDL_GetScancodeFromName(name.c_str());
     if (sc == SDL_SCANCODE_UNKNOWN) {
         if (error) {
             *error = "unknown key '" + std::string(text) +

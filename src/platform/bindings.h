@@ -37,7 +37,9 @@ enum class Action : std::uint8_t {
 };
 constexpr std::size_t kActionCount = static_cast<std::size_t>(Action::count);
 
-constexpr bool is_held_action(Action a) { return a <= Action::fire; }
+constexpr bool is_held_action(Action a) {
+    return a <= Action::fire;
+}
 std::string_view action_name(Action a);  // "left_tread_forward", as in the settings file
 std::optional<Action> action_from_name(std::string_view name);
 

@@ -6,7 +6,9 @@
 namespace bz::platform {
 
 FreeFlyCamera::FreeFlyCamera(glm::dvec3 position, double yaw_deg, double pitch_deg)
-    : position_(position), yaw_deg_(yaw_deg), pitch_deg_(std::clamp(pitch_deg, -kMaxPitch, kMaxPitch)) {}
+    : position_(position),
+      yaw_deg_(yaw_deg),
+      pitch_deg_(std::clamp(pitch_deg, -kMaxPitch, kMaxPitch)) {}
 
 glm::dvec3 FreeFlyCamera::forward() const {
     const double yaw = glm::radians(yaw_deg_);
@@ -26,8 +28,9 @@ void FreeFlyCamera::update(const FlyControls& c, double dt) {
     const glm::dvec3 ahead{-std::sin(yaw), 0.0, -std::cos(yaw)};
     const glm::dvec3 right{std::cos(yaw), 0.0, -std::sin(yaw)};
     const double speed = kSpeed * (c.fast ? kFastFactor : 1.0) * dt;
-    position_ += speed * (static_cast<double>(c.forward) * ahead + static_cast<double>(c.right) * right +
-                          glm::dvec3(0.0, static_cast<double>(c.up), 0.0));
+    position_ +=
+        speed * (static_cast<double>(c.forward) * ahead + static_cast<double>(c.right) * right +
+                 glm::dvec3(0.0, static_cast<double>(c.up), 0.0));
 }
 
 }  // namespace bz::platform

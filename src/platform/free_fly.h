@@ -6,18 +6,18 @@
 namespace bz::platform {
 
 struct FlyControls {
-    float forward = 0.0f;  // -1..1 (S..W)
-    float right = 0.0f;    // -1..1 (A..D)
-    float up = 0.0f;       // -1..1 (F..R, Q..E)
-    float yaw = 0.0f;      // -1..1 from keys: + turns left (Left arrow)
-    float pitch = 0.0f;    // -1..1 from keys: + looks up (Up arrow)
-    float mouse_dx = 0.0f; // pixels moved since the last update
+    float forward = 0.0f;   // -1..1 (S..W)
+    float right = 0.0f;     // -1..1 (A..D)
+    float up = 0.0f;        // -1..1 (F..R, Q..E)
+    float yaw = 0.0f;       // -1..1 from keys: + turns left (Left arrow)
+    float pitch = 0.0f;     // -1..1 from keys: + looks up (Up arrow)
+    float mouse_dx = 0.0f;  // pixels moved since the last update
     float mouse_dy = 0.0f;
-    bool fast = false;     // Shift
+    bool fast = false;  // Shift
 };
 
 class FreeFlyCamera {
-public:
+  public:
     FreeFlyCamera(glm::dvec3 position, double yaw_deg, double pitch_deg = 0.0);
 
     void update(const FlyControls& c, double dt);
@@ -29,13 +29,13 @@ public:
     double yaw_deg() const { return yaw_deg_; }
     double pitch_deg() const { return pitch_deg_; }
 
-    static constexpr double kSpeed = 20.0;          // world units per second
+    static constexpr double kSpeed = 20.0;  // world units per second
     static constexpr double kFastFactor = 5.0;
-    static constexpr double kTurnRate = 90.0;       // degrees per second from keys
+    static constexpr double kTurnRate = 90.0;  // degrees per second from keys
     static constexpr double kMouseDegPerPx = 0.15;
-    static constexpr double kMaxPitch = 89.0;       // never straight up: keeps `up` valid
+    static constexpr double kMaxPitch = 89.0;  // never straight up: keeps `up` valid
 
-private:
+  private:
     glm::dvec3 position_;
     double yaw_deg_;
     double pitch_deg_;

@@ -34,7 +34,8 @@ Gamepads::Gamepads(Log& log, const std::filesystem::path& bundled_db,
             log_.warn("cannot load controller mappings " + user_db.string() + ": " + error);
         } else {
             mappings_ += user;
-            log_.info("loaded " + std::to_string(user) + " controller mappings from " + user_db.string());
+            log_.info("loaded " + std::to_string(user) + " controller mappings from " +
+                      user_db.string());
         }
     }
     // Pads already plugged in arrive as SDL_CONTROLLERDEVICEADDED events on the first poll.

@@ -16,10 +16,11 @@ class Log;
 namespace bz::platform {
 
 class Gamepads {
-public:
+  public:
     // Starts SDL's game-controller subsystem (a failure is logged; there are then no pads).
     // `user_db` is loaded after `bundled_db` when it exists, so its lines win.
-    Gamepads(Log& log, const std::filesystem::path& bundled_db, const std::filesystem::path& user_db);
+    Gamepads(Log& log, const std::filesystem::path& bundled_db,
+             const std::filesystem::path& user_db);
     ~Gamepads();
     Gamepads(const Gamepads&) = delete;
     Gamepads& operator=(const Gamepads&) = delete;
@@ -29,7 +30,7 @@ public:
     std::size_t count() const { return open_.size(); }
     int mappings_loaded() const { return mappings_; }
 
-private:
+  private:
     Log& log_;
     bool started_ = false;
     int mappings_ = 0;

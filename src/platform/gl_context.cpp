@@ -66,9 +66,13 @@ bool GlContext::is_software() const {
            r.find("Software") != std::string::npos;
 }
 
-void GlContext::drawable_size(int& w, int& h) const { SDL_GL_GetDrawableSize(window_, &w, &h); }
+void GlContext::drawable_size(int& w, int& h) const {
+    SDL_GL_GetDrawableSize(window_, &w, &h);
+}
 
-void GlContext::swap() { SDL_GL_SwapWindow(window_); }
+void GlContext::swap() {
+    SDL_GL_SwapWindow(window_);
+}
 
 Vsync GlContext::set_vsync(Vsync v) {
     if (v == Vsync::adaptive) {

@@ -22,7 +22,7 @@ struct ContextOptions {
 };
 
 class GlContext {
-public:
+  public:
     // Throws UserError with a one-line reason when no GL 4.5 context can be had.
     explicit GlContext(const ContextOptions& options);
     ~GlContext();
@@ -40,7 +40,7 @@ public:
     void set_fullscreen(bool on);
     bool fullscreen() const;
 
-private:
+  private:
     SDL_Window* window_ = nullptr;
     void* context_ = nullptr;
     std::unique_ptr<gl::DebugSink> debug_;

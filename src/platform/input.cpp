@@ -29,7 +29,9 @@ void dead_zone(float& x, float& y) {
     y *= k;
 }
 
-float axis_value(Sint16 v) { return std::max(-1.0f, static_cast<float>(v) / 32767.0f); }
+float axis_value(Sint16 v) {
+    return std::max(-1.0f, static_cast<float>(v) / 32767.0f);
+}
 
 }  // namespace
 
@@ -99,7 +101,8 @@ void Input::handle_event(const SDL_Event& e) {
             break;
         case SDL_KEYUP: {
             const int sc = static_cast<int>(e.key.keysym.scancode);
-            if (sc >= 0 && sc < static_cast<int>(keys_.size())) keys_[static_cast<std::size_t>(sc)] = false;
+            if (sc >= 0 && sc < static_cast<int>(keys_.size()))
+                keys_[static_cast<std::size_t>(sc)] = false;
             mods_ = modifiers_from_sdl(e.key.keysym.mod);
             break;
         }
@@ -107,13 +110,26 @@ void Input::handle_event(const SDL_Event& e) {
             PadAxes& a = pads_[e.caxis.which].axes;
             const float v = axis_value(e.caxis.value);
             switch (e.caxis.axis) {
-                case SDL_CONTROLLER_AXIS_LEFTX: a.left_x = v; break;
-                case SDL_CONTROLLER_AXIS_LEFTY: a.left_y = v; break;
-                case SDL_CONTROLLER_AXIS_RIGHTX: a.right_x = v; break;
-                case SDL_CONTROLLER_AXIS_RIGHTY: a.right_y = v; break;
-                case SDL_CONTROLLER_AXIS_TRIGGERLEFT: a.trigger_left = std::max(0.0f, v); break;
-                case SDL_CONTROLLER_AXIS_TRIGGERRIGHT: a.trigger_right = std::max(0.0f, v); break;
-                default: break;
+                case SDL_CONTROLLER_AXIS_LEFTX:
+                    a.left_x = v;
+                    break;
+                case SDL_CONTROLLER_AXIS_LEFTY:
+                    a.left_y = v;
+                    break;
+                case SDL_CONTROLLER_AXIS_RIGHTX:
+                    a.right_x = v;
+                    break;
+                case SDL_CONTROLLER_AXIS_RIGHTY:
+                    a.right_y = v;
+                    break;
+                case SDL_CONTROLLER_AXIS_TRIGGERLEFT:
+                    a.trigger_left = std::max(0.0f, v);
+                    break;
+                case SDL_CONTROLLER_AXIS_TRIGGERRIGHT:
+                    a.trigger_right = std::max(0.0f, v);
+                    break;
+                default:
+                    break;
             }
             break;
         }

@@ -18,7 +18,7 @@ enum class GamepadMode {
 };
 
 struct InputState {
-    float left_tread = 0.0f;   // -1 (full back) .. +1 (full forward)
+    float left_tread = 0.0f;  // -1 (full back) .. +1 (full forward)
     float right_tread = 0.0f;
     bool fire = false;
     // Menu directions (held): the drive keys and a pad's d-pad.
@@ -34,7 +34,7 @@ struct PadAxes {
 InputState pad_to_treads(const PadAxes& axes, GamepadMode mode);
 
 class Input {
-public:
+  public:
     explicit Input(Bindings bindings = default_bindings(), GamepadMode mode = GamepadMode::tank);
 
     // Feeds one event; one-shot actions it triggers are queued for take_pressed().
@@ -49,7 +49,7 @@ public:
     // Forgets held keys and buttons, e.g. when the window loses focus (no stuck keys).
     void release_all();
 
-private:
+  private:
     struct Pad {
         PadAxes axes;
         std::array<bool, 32> buttons{};

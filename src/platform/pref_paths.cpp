@@ -27,13 +27,15 @@ PrefPaths pref_paths() {
         std::error_code ec;
         std::filesystem::create_directories(env, ec);
         if (ec) {
-            throw UserError(std::string("cannot create BEAMZONE_PREF_DIR ") + env + ": " + ec.message());
+            throw UserError(std::string("cannot create BEAMZONE_PREF_DIR ") + env + ": " +
+                            ec.message());
         }
         return pref_paths_in(env);
     }
     char* sdl = SDL_GetPrefPath("beamzone", "beamzone");  // creates the folder
     if (!sdl) {
-        throw UserError(std::string("no folder for settings (set BEAMZONE_PREF_DIR): ") + SDL_GetError());
+        throw UserError(std::string("no folder for settings (set BEAMZONE_PREF_DIR): ") +
+                        SDL_GetError());
     }
     const std::filesystem::path dir(sdl);
     SDL_free(sdl);

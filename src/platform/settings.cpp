@@ -1,9 +1,10 @@
 #include "platform/settings.h"
 
+#include <toml++/toml.h>
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
-#include <toml++/toml.h>
 
 #include "core/error.h"
 #include "core/file_io.h"
@@ -16,7 +17,7 @@ namespace {
 constexpr std::size_t kMaxSettingsBytes = 1u << 20;
 
 class Reader {
-public:
+  public:
     Reader(const std::string& source, SettingsLoad& out) : source_(source), out_(out) {}
 
     void error(const toml::node* at, const std::string& message) {
@@ -42,7 +43,8 @@ public:
         if (const auto v = n->value_exact<bool>()) {
             dst = *v;
         } else {
-            error(n, std::string(key) + " must be true or false; keeping " + (dst ? "true" : "false"));
+            error(n,
+                  std::string(key) + " must be true or false; keeping " + (dst ? "true" : "false"));
         }
     }
 
@@ -70,7 +72,8 @@ public:
         }
         std::string list;
         for (const auto& a : allowed) list += (list.empty() ? "\"" : ", \"") + a + "\"";
-        error(n, std::string(key) + " must be one of " + list + "; keeping \"" + std::string(current) + "\"");
+        error(n, std::string(key) + " must be one of " + list + "; keeping \"" +
+                     std::string(current) + "\"");
         return -1;
     }
 
@@ -79,7 +82,8 @@ public:
         if (!n) return;
         const toml::table* keys = n->as_table();
         if (!keys) {
-            error(n, "keys must be a table such as [keys] fire = [\"Space\"]; keeping the defaults");
+            error(n,
+                  "keys must be a table such as [keys] fire = [\"Space\"]; keeping the defaults");
             return;
         }
         for (const auto& [name, value] : *keys) {
@@ -89,7 +93,8 @@ public:
                 for (std::size_t i = 0; i < kActionCount; ++i) {
                     list += (i ? ", " : "") + std::string(action_name(static_cast<Action>(i)));
                 }
-                error_at(name.source().begin, "unknown action '" + std::string(name.str()) + "' (actions: " + list + ")");
+                error_at(name.source().begin, "unknown action '" + std::string(name.str()) +
+                                                  "' (actions: " + list + ")");
                 continue;
             }
             std::vector<const toml::node*> items;
@@ -106,7 +111,8 @@ public:
                 const auto key = text ? parse_key(*text, &why) : std::nullopt;
                 if (!text) why = "a key must be a string such as \"Space\"";
                 if (!key) {
-                    error(item, std::string(name.str()) + ": " + why + "; keeping the default keys");
+                    error(item,
+                          std::string(name.str()) + ": " + why + "; keeping the default keys");
                     ok = false;
                     break;
                 }
@@ -117,9 +123,9 @@ public:
     }
 
     void unknown_keys(const toml::table& t) {
-        static constexpr std::string_view kKnown[] = {
-            "keys",   "volume", "mute",  "vsync",  "fullscreen", "pause_on_focus_loss",
-            "preset", "style",  "gamepad"};
+        static constexpr std::string_view kKnown[] = {"keys",   "volume",     "mute",
+                                                      "vsync",  "fullscreen", "pause_on_focus_loss",
+                                                      "preset", "style",      "gamepad"};
         for (const auto& [name, value] : t) {
             if (std::find(std::begin(kKnown), std::end(kKnown), name.str()) == std::end(kKnown)) {
                 error_at(name.source().begin, "unknown setting '" + std::string(name.str()) + "'");
@@ -127,7 +133,7 @@ public:
         }
     }
 
-private:
+  private:
     struct Found {
         toml::source_index line, column;
         std::string text;
@@ -150,9 +156,12 @@ std::string quoted(std::string_view s) {
 
 std::string_view vsync_name(Vsync v) {
     switch (v) {
-        case Vsync::off: return "off";
-        case Vsync::on: return "on";
-        case Vsync::adaptive: return "adaptive";
+        case Vsync::off:
+            return "off";
+        case Vsync::on:
+            return "on";
+        case Vsync::adaptive:
+            return "adaptive";
     }
     return "on";
 }
@@ -176,8 +185,8 @@ SettingsLoad parse_settings(std::string_view text, const std::string& source,
         t = toml::parse(text, source);
     } catch (const toml::parse_error& e) {
         const auto& b = e.source().begin;
-        out.errors.push_back(source + ":" + std::to_string(b.line) + ":" + std::to_string(b.column) +
-                             ": error: " + std::string(e.description()) +
+        out.errors.push_back(source + ":" + std::to_string(b.line) + ":" +
+                             std::to_string(b.column) + ": error: " + std::string(e.description()) +
                              "; using default settings");
         return out;
     }
@@ -192,7 +201,8 @@ SettingsLoad parse_settings(std::string_view text, const std::string& source,
     if (const int i = r.choice(t, "vsync", vsyncs, vsync_name(s.vsync)); i >= 0) {
         parse_vsync(vsyncs[i], &s.vsync);
     }
-    if (const int i = r.choice(t, "preset", presets, s.preset); i >= 0) s.preset = presets[static_cast<std::size_t>(i)];
+    if (const int i = r.choice(t, "preset", presets, s.preset); i >= 0)
+        s.preset = presets[static_cast<std::size_t>(i)];
     const std::string styles[] = {"occluded", "arcade"};
     if (const int i = r.choice(t, "style", styles, s.style); i >= 0) s.style = styles[i];
     const std::string modes[] = {"tank", "drive"};
@@ -205,7 +215,8 @@ SettingsLoad parse_settings(std::string_view text, const std::string& source,
     return out;
 }
 
-SettingsLoad load_settings(const std::filesystem::path& file, std::span<const std::string> presets) {
+SettingsLoad load_settings(const std::filesystem::path& file,
+                           std::span<const std::string> presets) {
     std::error_code ec;
     if (!std::filesystem::exists(file, ec)) return {};
     std::string text;
@@ -226,14 +237,19 @@ std::string format_settings(const Settings& s) {
          "# default; the game rewrites this file only while it has no errors.\n"
       << "volume = " << s.volume << "               # 0.0 .. 1.0\n"
       << "mute = " << (s.mute ? "true" : "false") << "\n"
-      << "vsync = " << quoted(vsync_name(s.vsync)) << "             # \"off\", \"on\" or \"adaptive\"\n"
-      << "fullscreen = " << (s.fullscreen ? "true" : "false") << "        # borderless desktop fullscreen\n"
+      << "vsync = " << quoted(vsync_name(s.vsync))
+      << "             # \"off\", \"on\" or \"adaptive\"\n"
+      << "fullscreen = " << (s.fullscreen ? "true" : "false")
+      << "        # borderless desktop fullscreen\n"
       << "pause_on_focus_loss = " << (s.pause_on_focus_loss ? "true" : "false") << "\n"
-      << "preset = " << quoted(s.preset) << "     # render preset: \"fast\", \"balanced\" or \"high\"\n"
-      << "style = " << quoted(s.style) << "      # \"occluded\" or \"arcade\" (no hidden-line removal)\n"
+      << "preset = " << quoted(s.preset)
+      << "     # render preset: \"fast\", \"balanced\" or \"high\"\n"
+      << "style = " << quoted(s.style)
+      << "      # \"occluded\" or \"arcade\" (no hidden-line removal)\n"
       << "gamepad = " << quoted(s.gamepad == GamepadMode::tank ? "tank" : "drive")
       << "          # \"tank\" (two sticks, one per tread) or \"drive\" (left stick)\n"
-      << "\n# Keys per action, as SDL scancode names (\"Q\", \"Space\", \"Left Ctrl\", \"Alt+Return\").\n"
+      << "\n# Keys per action, as SDL scancode names (\"Q\", \"Space\", \"Left Ctrl\", "
+         "\"Alt+Return\").\n"
       << "[keys]\n";
     for (std::size_t i = 0; i < kActionCount; ++i) {
         o << action_name(static_cast<Action>(i)) << " = [";

@@ -11,17 +11,27 @@ constexpr float kTwoPi = 6.28318530718f;
 
 float seconds_of(Sound s) {
     switch (s) {
-        case Sound::shot: return 0.35f;
-        case Sound::explosion: return 1.6f;
-        case Sound::radar_blip: return 0.07f;
-        case Sound::warning: return 0.5f;
+        case Sound::shot:
+            return 0.35f;
+        case Sound::explosion:
+            return 1.6f;
+        case Sound::radar_blip:
+            return 0.07f;
+        case Sound::warning:
+            return 0.5f;
     }
     return 0.1f;
 }
 
-float wrap(float phase) { return phase - std::floor(phase); }
-float square(float phase) { return phase < 0.5f ? 1.0f : -1.0f; }
-float saw(float phase) { return 2.0f * phase - 1.0f; }
+float wrap(float phase) {
+    return phase - std::floor(phase);
+}
+float square(float phase) {
+    return phase < 0.5f ? 1.0f : -1.0f;
+}
+float saw(float phase) {
+    return 2.0f * phase - 1.0f;
+}
 
 }  // namespace
 
@@ -35,7 +45,9 @@ float soft_clip(float x) {
 Synth::Synth(int sample_rate, std::uint64_t seed)
     : rate_(std::max(1, sample_rate)), dt_(1.0f / static_cast<float>(rate_)), rng_(seed) {}
 
-void Synth::set_volume(float v) { volume_ = std::clamp(std::isfinite(v) ? v : 0.0f, 0.0f, 1.0f); }
+void Synth::set_volume(float v) {
+    volume_ = std::clamp(std::isfinite(v) ? v : 0.0f, 0.0f, 1.0f);
+}
 
 void Synth::set_engine(bool on, float speed) {
     engine_on_ = on;

@@ -12,7 +12,7 @@ namespace bz::platform {
 enum class Sound : std::uint8_t { shot, explosion, radar_blip, warning };
 
 class Synth {
-public:
+  public:
     explicit Synth(int sample_rate, std::uint64_t seed = 1);
 
     void play(Sound s, float gain = 1.0f);
@@ -29,15 +29,15 @@ public:
     // Mono samples in -1..1. Muted output is exact zeros (time still passes for the voices).
     void render(float* out, std::size_t frames);
 
-private:
+  private:
     struct Voice {
         Sound sound = Sound::shot;
         bool active = false;
         std::uint32_t t = 0;       // samples since start
         std::uint32_t length = 0;  // samples
         float gain = 1.0f;
-        float phase = 0.0f;        // 0..1
-        float low = 0.0f;          // one-pole low-pass state for noise
+        float phase = 0.0f;  // 0..1
+        float low = 0.0f;    // one-pole low-pass state for noise
     };
     float voice_sample(Voice& v);
     float engine_sample();

@@ -48,7 +48,9 @@ int parse_count(std::string_view field) {
     return value;
 }
 
-bool valid_coordinate(char c) { return c >= ' ' && c <= '~'; }
+bool valid_coordinate(char c) {
+    return c >= ' ' && c <= '~';
+}
 
 }  // namespace
 
@@ -99,7 +101,8 @@ VectorFont::VectorFont(const std::filesystem::path& jhf_file) {
         g.left = static_cast<float>(pairs[0] - kOrigin);
         g.right = static_cast<float>(pairs[1] - kOrigin);
         if (g.right < g.left) {
-            fail(jhf_file, first_line, kHeaderChars + 1, "glyph's right margin is left of its left");
+            fail(jhf_file, first_line, kHeaderChars + 1,
+                 "glyph's right margin is left of its left");
         }
         std::vector<glm::vec2> stroke;
         for (std::size_t i = 2; i < pairs.size(); i += 2) {
@@ -133,7 +136,9 @@ VectorFont::VectorFont(const std::filesystem::path& jhf_file) {
     }
 }
 
-VectorFont VectorFont::load_default() { return VectorFont(data_dir() / "fonts" / "futural.jhf"); }
+VectorFont VectorFont::load_default() {
+    return VectorFont(data_dir() / "fonts" / "futural.jhf");
+}
 
 const VectorFont::Glyph* VectorFont::glyph(unsigned char c) const {
     const std::size_t index = c >= 32 ? c - 32u : glyphs_.size();
@@ -172,8 +177,10 @@ void VectorFont::draw(std::vector<HudLine>& out, std::string_view text, glm::vec
                 for (std::size_t i = 1; i < stroke.size(); ++i) {
                     HudLine l;
                     // File y grows downward; HUD y grows upward from the baseline.
-                    l.a = {pen + (stroke[i - 1].x - g->left) * k, origin.y + (baseline_ - stroke[i - 1].y) * k};
-                    l.b = {pen + (stroke[i].x - g->left) * k, origin.y + (baseline_ - stroke[i].y) * k};
+                    l.a = {pen + (stroke[i - 1].x - g->left) * k,
+                           origin.y + (baseline_ - stroke[i - 1].y) * k};
+                    l.b = {pen + (stroke[i].x - g->left) * k,
+                           origin.y + (baseline_ - stroke[i].y) * k};
                     l.color = color;
                     l.intensity = intensity;
                     out.push_back(l);

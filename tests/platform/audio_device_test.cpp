@@ -1,14 +1,12 @@
 // Opening audio must never be fatal: with SDL's dummy driver, or with no usable driver at all,
 // the game carries on (silently in the second case).
-#include "platform/audio.h"
-
-#include <gtest/gtest.h>
-
 #include <SDL.h>
+#include <gtest/gtest.h>
 
 #include <cstdlib>
 
 #include "core/log.h"
+#include "platform/audio.h"
 
 namespace bz::platform {
 namespace {

@@ -1,8 +1,7 @@
 #include "platform/bindings.h"
 
-#include <gtest/gtest.h>
-
 #include <SDL_scancode.h>
+#include <gtest/gtest.h>
 
 namespace bz::platform {
 namespace {

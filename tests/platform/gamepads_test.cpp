@@ -1,10 +1,9 @@
 #include "platform/gamepads.h"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <fstream>
-
-#include <unistd.h>
 
 #include "core/log.h"
 #include "core/paths.h"
@@ -15,7 +14,8 @@ namespace {
 namespace fs = std::filesystem;
 
 TEST(Gamepads, BundledDatabaseLoadsAndUserFileOverrides) {
-    const fs::path user = fs::temp_directory_path() / ("bz_pads_" + std::to_string(::getpid()) + ".txt");
+    const fs::path user =
+        fs::temp_directory_path() / ("bz_pads_" + std::to_string(::getpid()) + ".txt");
     // One made-up Linux pad in SDL's mapping format.
     std::ofstream(user) << "030000000000000000000000beef0000,beamzone test pad,a:b0,b:b1,"
                            "leftx:a0,lefty:a1,platform:Linux,\n";

@@ -1,8 +1,7 @@
 #include "platform/input.h"
 
-#include <gtest/gtest.h>
-
 #include <SDL_events.h>
+#include <gtest/gtest.h>
 
 namespace bz::platform {
 namespace {
@@ -52,7 +51,7 @@ TEST(Input, DriveKeysMixIntoTreadsAndClamp) {
     EXPECT_EQ(in.state().left_tread, 1.0f);
     EXPECT_EQ(in.state().right_tread, 1.0f);
     in.handle_event(key(SDL_KEYDOWN, SDL_SCANCODE_RIGHT));  // forward + right: pivot on right tread
-    EXPECT_EQ(in.state().left_tread, 1.0f);  // 2 clamped to 1
+    EXPECT_EQ(in.state().left_tread, 1.0f);                 // 2 clamped to 1
     EXPECT_EQ(in.state().right_tread, 0.0f);
     in.handle_event(key(SDL_KEYUP, SDL_SCANCODE_UP));
     EXPECT_EQ(in.state().left_tread, 1.0f);  // turning in place
@@ -63,7 +62,7 @@ TEST(Input, FireIsHeldAndPausePressedOnce) {
     Input in;
     in.handle_event(key(SDL_KEYDOWN, SDL_SCANCODE_LCTRL, KMOD_LCTRL));
     EXPECT_TRUE(in.state().fire);
-    in.handle_event(key(SDL_KEYDOWN, SDL_SCANCODE_P, KMOD_LCTRL));  // extra modifiers allowed
+    in.handle_event(key(SDL_KEYDOWN, SDL_SCANCODE_P, KMOD_LCTRL));        // extra modifiers allowed
     in.handle_event(key(SDL_KEYDOWN, SDL_SCANCODE_P, KMOD_LCTRL, true));  // auto-repeat: ignored
     EXPECT_EQ(in.take_pressed(), std::vector<Action>{Action::pause});
     EXPECT_TRUE(in.take_pressed().empty());

@@ -1,10 +1,9 @@
 #include "platform/pref_paths.h"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cstdlib>
-
-#include <unistd.h>
 
 namespace bz::platform {
 namespace {
@@ -12,7 +11,8 @@ namespace {
 namespace fs = std::filesystem;
 
 TEST(PrefPaths, EnvironmentOverrideIsCreatedAndUsed) {
-    const fs::path dir = fs::temp_directory_path() / ("bz_pref_" + std::to_string(::getpid())) / "nested";
+    const fs::path dir =
+        fs::temp_directory_path() / ("bz_pref_" + std::to_string(::getpid())) / "nested";
     ::setenv("BEAMZONE_PREF_DIR", dir.c_str(), 1);
     const PrefPaths p = pref_paths();
     ::unsetenv("BEAMZONE_PREF_DIR");

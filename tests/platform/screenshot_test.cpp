@@ -1,10 +1,9 @@
 #include "platform/screenshot.h"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <fstream>
-
-#include <unistd.h>
 
 #include "core/error.h"
 #include "core/image_io.h"
@@ -15,7 +14,7 @@ namespace {
 namespace fs = std::filesystem;
 
 class Screenshots : public ::testing::Test {
-protected:
+  protected:
     void TearDown() override { fs::remove_all(dir_); }
     fs::path dir_ = fs::temp_directory_path() / ("bz_shots_" + std::to_string(::getpid()));
 };
@@ -24,7 +23,8 @@ std::vector<std::uint8_t> gradient(int w, int h) {
     std::vector<std::uint8_t> p;
     for (int y = 0; y < h; ++y) {
         for (int x = 0; x < w; ++x) {
-            p.insert(p.end(), {static_cast<std::uint8_t>(x * 10), static_cast<std::uint8_t>(y * 10), 7, 255});
+            p.insert(p.end(), {static_cast<std::uint8_t>(x * 10), static_cast<std::uint8_t>(y * 10),
+                               7, 255});
         }
     }
     return p;

@@ -1,13 +1,11 @@
 #include "platform/settings.h"
 
-#include <gtest/gtest.h>
-
 #include <SDL_scancode.h>
+#include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
-
-#include <unistd.h>
 
 namespace bz::platform {
 namespace {
@@ -16,7 +14,9 @@ namespace fs = std::filesystem;
 
 const std::vector<std::string> kPresets = {"fast", "balanced", "high"};
 
-SettingsLoad parse(const std::string& text) { return parse_settings(text, "settings.toml", kPresets); }
+SettingsLoad parse(const std::string& text) {
+    return parse_settings(text, "settings.toml", kPresets);
+}
 
 bool any_error_contains(const SettingsLoad& r, const std::string& needle) {
     for (const auto& e : r.errors) {
@@ -90,7 +90,8 @@ TEST(Settings, BadValuesReportPositionAndKeepDefaults) {
     EXPECT_EQ(r.settings.style, d.style);
     EXPECT_EQ(r.settings.keys, default_bindings());
     EXPECT_EQ(r.errors.size(), 9u);
-    EXPECT_TRUE(any_error_contains(r, "settings.toml:1:10: error: volume must be a number from 0 to 1"));
+    EXPECT_TRUE(
+        any_error_contains(r, "settings.toml:1:10: error: volume must be a number from 0 to 1"));
     EXPECT_TRUE(any_error_contains(r, "settings.toml:2:8: error: mute must be true or false"));
     EXPECT_TRUE(any_error_contains(r, "settings.toml:3:"));
     EXPECT_TRUE(any_error_contains(r, "\"fast\", \"balanced\", \"high\""));
@@ -113,9 +114,16 @@ TEST(Settings, SyntaxErrorKeepsEverythingDefault) {
 }
 
 TEST(Settings, HostileInputDoesNotCrash) {
-    const std::vector<std::string> texts = {std::string("\x00\x01\x02", 3), "[[[[", "volume = nan", "volume = inf", "keys = 3",
-                             "[keys]\nfire = \"\"", "[keys]\nfire = [[\"Q\"]]",
-                             "vsync = [\"on\"]", "= = =", "\xff\xfe"};
+    const std::vector<std::string> texts = {std::string("\x00\x01\x02", 3),
+                                            "[[[[",
+                                            "volume = nan",
+                                            "volume = inf",
+                                            "keys = 3",
+                                            "[keys]\nfire = \"\"",
+                                            "[keys]\nfire = [[\"Q\"]]",
+                                            "vsync = [\"on\"]",
+                                            "= = =",
+                                            "\xff\xfe"};
     for (const std::string& text : texts) {
         const SettingsLoad r = parse(text);
         EXPECT_FALSE(r.errors.empty()) << text;

@@ -1,14 +1,13 @@
 #include "scene/vector_font.h"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
-
-#include <unistd.h>
 
 #include "core/error.h"
 
@@ -35,7 +34,7 @@ Box bounds(const std::vector<HudLine>& lines) {
 
 // Font files made by a test live in a folder of their own, removed afterwards.
 class FontFiles : public ::testing::Test {
-protected:
+  protected:
     void TearDown() override { fs::remove_all(dir_); }
     fs::path write_temp(const std::string& name, const std::string& content) {
         fs::create_directories(dir_);
@@ -44,7 +43,7 @@ protected:
         return p;
     }
 
-private:
+  private:
     fs::path dir_ = fs::temp_directory_path() /
                     ("bz_font_test_" + std::to_string(::getpid()) + "_" +
                      ::testing::UnitTest::GetInstance()->current_test_info()->name());
