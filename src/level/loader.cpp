@@ -90,7 +90,9 @@ LoadResult load_level_string(std::string_view text, const fs::path& file_for_mes
         // The root table's own position is the whole document; "missing name" belongs at the top.
         read_identity(top, level);
         glm::vec3 obstacle_color = ObjectDesc{}.color;
-        detail::ReadContext ctx{diag, options, file_for_messages.parent_path(), result.dependencies};
+        detail::ReadContext ctx{diag, options,
+                                model_roots(file_for_messages.parent_path(), options.data_root),
+                                result.dependencies};
         detail::read_field(root, level, obstacle_color, diag);
         detail::read_player(root, level, diag);
         detail::read_enemies(root, level, diag);

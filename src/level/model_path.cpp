@@ -47,8 +47,11 @@ bool is_inside(const fs::path& path, const fs::path& folder) {
     return true;
 }
 
-ModelPath resolve_model_path(std::string_view text, const fs::path& level_dir,
-                             const fs::path& data_root) {
+ModelRoots model_roots(const fs::path& level_dir, const fs::path& data_root) {
+    return {canonical_folder(level_dir), canonical_folder(data_root)};
+}
+
+ModelPath resolve_model_path(std::string_view text, const ModelRoots& roots) {
     ModelPath out;
     const std::string shown = quote(text, 80);
     if (text.empty()) {
@@ -66,8 +69,8 @@ ModelPath resolve_model_path(std::string_view text, const fs::path& level_dir,
                     "'../data/models/pylon.obj')";
         return out;
     }
-    const fs::path level_folder = canonical_folder(level_dir);
-    const fs::path data_folder = canonical_folder(data_root);
+    const fs::path& level_folder = roots.level_folder;
+    const fs::path& data_folder = roots.data_folder;
     std::error_code ec;
     const fs::path resolved = fs::weakly_canonical(level_folder / written, ec);
     if (ec || level_folder.empty()) {

@@ -15,8 +15,15 @@ struct ModelPath {
     bool watchable = false;          // inside an allowed folder (exists or not): worth watching
 };
 
-ModelPath resolve_model_path(std::string_view text, const std::filesystem::path& level_dir,
-                             const std::filesystem::path& data_root);
+// The two folders models may come from, made canonical once per level (a big level names
+// hundreds of models, and canonicalising costs a system call per path component).
+struct ModelRoots {
+    std::filesystem::path level_folder;
+    std::filesystem::path data_folder;
+};
+ModelRoots model_roots(const std::filesystem::path& level_dir, const std::filesystem::path& data_root);
+
+ModelPath resolve_model_path(std::string_view text, const ModelRoots& roots);
 
 // True when `path` is `folder` or lies below it; both must already be canonical.
 bool is_inside(const std::filesystem::path& path, const std::filesystem::path& folder);

@@ -29,7 +29,7 @@ bool read_model(TableReader& r, ObjectDesc& o, ReadContext& ctx) {
     }
     const auto text = r.text("model", 1024);
     if (!text) return false;
-    const ModelPath path = resolve_model_path(*text, ctx.level_dir, ctx.options.data_root);
+    const ModelPath path = resolve_model_path(*text, ctx.model_roots);
     if (path.watchable) ctx.dependencies.push_back(path.resolved);
     if (!path.error.empty()) {
         ctx.diag.error(r.get("model")->source(), path.error);

@@ -9,6 +9,7 @@
 
 #include "level/level.h"
 #include "level/loader.h"
+#include "level/model_path.h"
 #include "level/table_reader.h"
 
 namespace bz::level::detail {
@@ -16,7 +17,7 @@ namespace bz::level::detail {
 struct ReadContext {
     Diagnostics& diag;
     const LoadOptions& options;
-    std::filesystem::path level_dir;
+    ModelRoots model_roots;
     std::vector<std::filesystem::path>& dependencies;
 };
 
