@@ -180,7 +180,8 @@ int run(const Options& o) {
                      hex(v.mismatch->expected).c_str(), hex(v.mismatch->actual).c_str(), v.checks_passed);
         return 1;
     }
-    std::printf("%s: ok: %" PRIu64 " ticks (%.1f s of play), %zu state hashes match (verified in %.1f ms)\n",
+    std::printf("%s: ok: %" PRIu64 " ticks (%.1f s of play), %zu state hashes match (verified in "
+                "%.1f ms, building the level included)\n",
                 o.file.c_str(), v.ticks, seconds, v.checks_passed, ms);
     return 0;
 }

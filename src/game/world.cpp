@@ -75,6 +75,7 @@ World::World(const level::Level& level, std::uint64_t seed, const scene::Factory
             throw UserError(where(o.pos) + "error: " + err.what());
         }
     }
+    grid_ = ObstacleGrid(obstacles_, field_);
     style_ = level.render.style == "arcade" ? scene::LineStyle::arcade : scene::LineStyle::occluded;
 
     cur_.rng = Rng(seed);
@@ -247,12 +248,14 @@ std::uint64_t World::state_hash() const {
 }
 
 const scene::Entity* World::obstacle_at(glm::dvec2 p, double radius, double base_height) const {
-    for (const scene::Entity& o : obstacles_) {
+    // The grid lists candidates in index order, so the first hit is the same one a scan over
+    // every obstacle would find.
+    grid_.near(p, radius, nearby_);
+    for (const std::uint32_t k : nearby_) {
+        const scene::Entity& o = obstacles_[k];
         const scene::Transform& t = o.transform;
         if (o.collider.height * t.scale + t.position.y <= base_height) continue;
         const glm::dvec2 off = field_.delta(ground(t.position), p);
-        const double reach = bounding_radius(o.collider) * t.scale + radius;
-        if (std::abs(off.x) > reach || std::abs(off.y) > reach) continue;
         if (circle_hits(o.collider, t.yaw, t.scale, off, radius)) return &o;
     }
     return nullptr;

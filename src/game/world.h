@@ -6,6 +6,7 @@
 
 #include "game/events.h"
 #include "game/field.h"
+#include "game/obstacle_grid.h"
 #include "game/tick_command.h"
 #include "game/world_state.h"
 #include "level/level.h"
@@ -114,6 +115,8 @@ private:
     level::EnemyRules rules_;
     ModelIds models_;
     std::vector<scene::Entity> obstacles_;
+    ObstacleGrid grid_;
+    mutable std::vector<std::uint32_t> nearby_;  // scratch for obstacle_at
     glm::vec3 enemy_color_{0.2f, 1.0f, 0.3f};
     scene::LineStyle style_ = scene::LineStyle::occluded;
     std::uint64_t seed_ = 0;
