@@ -72,7 +72,7 @@ TEST(Input, FireIsHeldAndPausePressedOnce) {
 
 TEST(Input, MostSpecificBindingWins) {
     Bindings b = default_bindings();
-    b[static_cast<std::size_t>(Action::screenshot)] = {*parse_key("Return", nullptr)};
+    b[static_cast<std::size_t>(Action::screenshot)] = {parse_key("Return", nullptr).value()};
     Input in(b);
     in.handle_event(key(SDL_KEYDOWN, SDL_SCANCODE_RETURN, KMOD_LALT));
     EXPECT_EQ(in.take_pressed(), std::vector<Action>{Action::fullscreen});
@@ -99,7 +99,7 @@ TEST(Input, MenuKeys) {
 
 TEST(Input, RemappedKeys) {
     Bindings b = default_bindings();
-    b[static_cast<std::size_t>(Action::fire)] = {*parse_key("F", nullptr)};
+    b[static_cast<std::size_t>(Action::fire)] = {parse_key("F", nullptr).value()};
     Input in(b);
     in.handle_event(key(SDL_KEYDOWN, SDL_SCANCODE_SPACE));
     EXPECT_FALSE(in.state().fire);

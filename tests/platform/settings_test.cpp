@@ -139,8 +139,11 @@ TEST(Settings, FormatRoundTripsAndSavesAtomically) {
     s.preset = "fast";
     s.style = "arcade";
     s.gamepad = GamepadMode::drive;
-    s.keys[static_cast<std::size_t>(Action::fire)] = {*parse_key("Backslash", nullptr),
-                                                      *parse_key("'", nullptr)};
+    // Key names that need escaping in TOML strings: a backslash and a quote.
+    const auto backslash = parse_key("\\", nullptr);
+    const auto quote = parse_key("'", nullptr);
+    ASSERT_TRUE(backslash && quote);
+    s.keys[static_cast<std::size_t>(Action::fire)] = {*backslash, *quote};
     const fs::path dir = fs::temp_directory_path() / ("bz_settings_" + std::to_string(::getpid()));
     fs::create_directories(dir);
     const fs::path file = dir / "settings.toml";
