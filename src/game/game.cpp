@@ -236,7 +236,9 @@ scene::FrameList Game::frame(double alpha, double aspect) const {
     scene::FrameList f = shown.interpolated_frame(a, options_.fov_y_deg);
     const double seconds = (static_cast<double>(ticks_) + a) / tuning::kTicksPerSecond;
     backdrop::append_items(f.items, level_.backdrop, assets_->horizon(), f.camera.eye, seconds);
-    if (!live) {
+    if (screen_ == Screen::enter_initials || screen_ == Screen::high_scores) {
+        f.items.clear();  // text only: the table must be readable
+    } else if (!live) {
         for (scene::DrawItem& item : f.items) item.intensity *= 0.55f;
     }
 

@@ -15,17 +15,17 @@ bool blink(std::uint64_t tick, std::uint64_t period = 40) { return (tick / (peri
 
 void title(std::vector<scene::HudLine>& out, const scene::VectorFont* font, double aspect,
            std::uint64_t tick, int high_score) {
-    hud::text(out, font, "BEAMZONE", {0.0f, 0.3f}, 0.2f, hud::kGreen, TextAlign::center, 1.4f);
-    hud::text(out, font, "A VECTOR TANK BATTLE", {0.0f, 0.16f}, 0.05f, hud::kGreen, TextAlign::center);
+    hud::text(out, font, "BEAMZONE", {0.0f, 0.42f}, 0.2f, hud::kGreen, TextAlign::center, 1.4f);
+    hud::text(out, font, "A VECTOR TANK BATTLE", {0.0f, 0.28f}, 0.05f, hud::kGreen, TextAlign::center);
     if (blink(tick, 60)) {
-        hud::text(out, font, "PRESS START", {0.0f, -0.45f}, 0.07f, hud::kRed, TextAlign::center, 1.2f);
+        hud::text(out, font, "PRESS START", {0.0f, -0.55f}, 0.07f, hud::kRed, TextAlign::center, 1.2f);
     }
     hud::text(out, font, "HIGH SCORE " + std::to_string(high_score),
               {static_cast<float>(aspect) - hud::kMargin, hud::kTopLine}, hud::kTextHeight, hud::kRed,
               TextAlign::right);
     // A row of tanks under the title, as on the arcade's attract screen.
     for (int i = -2; i <= 2; ++i) {
-        hud::tank_icon(out, {0.22f * static_cast<float>(i), -0.05f}, 0.12f, hud::kGreen);
+        hud::tank_icon(out, {0.22f * static_cast<float>(i), -0.3f}, 0.12f, hud::kGreen);
     }
 }
 
@@ -50,14 +50,14 @@ void high_scores(std::vector<scene::HudLine>& out, const scene::VectorFont* font
 }
 
 void paused(std::vector<scene::HudLine>& out, const scene::VectorFont* font) {
-    hud::text(out, font, "PAUSED", {0.0f, 0.25f}, 0.12f, hud::kWhite, TextAlign::center, 1.3f);
-    hud::text(out, font, "PAUSE TO CONTINUE   BACK TO QUIT", {0.0f, 0.1f}, 0.045f, hud::kWhite,
+    hud::text(out, font, "PAUSED", {0.0f, -0.35f}, 0.12f, hud::kWhite, TextAlign::center, 1.3f);
+    hud::text(out, font, "PAUSE TO CONTINUE   BACK TO QUIT", {0.0f, -0.5f}, 0.045f, hud::kWhite,
               TextAlign::center);
 }
 
 void game_over(std::vector<scene::HudLine>& out, const scene::VectorFont* font, int score) {
-    hud::text(out, font, "GAME OVER", {0.0f, 0.2f}, 0.14f, hud::kRed, TextAlign::center, 1.4f);
-    hud::text(out, font, "SCORE " + std::to_string(score), {0.0f, 0.02f}, 0.06f, hud::kRed,
+    hud::text(out, font, "GAME OVER", {0.0f, -0.35f}, 0.14f, hud::kRed, TextAlign::center, 1.4f);
+    hud::text(out, font, "SCORE " + std::to_string(score), {0.0f, -0.52f}, 0.06f, hud::kRed,
               TextAlign::center);
 }
 
