@@ -42,6 +42,49 @@ void plot_frame_times(const RunResult& run, const std::string& title, const scen
     canvas.save(out);
 }
 
+namespace {
+
+struct Box {
+    glm::vec2 lo, hi;
+    bool overlaps(const Box& o) const {
+        return lo.x < o.hi.x && o.lo.x < hi.x && lo.y < o.hi.y && o.lo.y < hi.y;
+    }
+};
+
+// Puts each label next to its point where it covers no other label or point: tries places
+// around the point, then further out, and keeps the first free one.
+std::vector<glm::vec2> place_labels(const Canvas& canvas, const std::vector<glm::vec2>& points,
+                                    const std::vector<std::string>& labels, float height) {
+    std::vector<Box> taken;
+    for (const glm::vec2& p : points) taken.push_back({p - 6.0f, p + 6.0f});
+    std::vector<glm::vec2> out;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const float w = canvas.text_width(labels[i], height);
+        glm::vec2 best = points[i] + glm::vec2(9.0f, 6.0f);
+        bool found = false;
+        for (float ring = 1.0f; ring <= 6.0f && !found; ring += 1.0f) {
+            const float dy = (height + 4.0f) * ring;
+            const glm::vec2 offsets[] = {{9.0f, dy - height - 2.0f}, {9.0f, -dy + 2.0f},
+                                         {-9.0f - w, dy - height - 2.0f}, {-9.0f - w, -dy + 2.0f},
+                                         {-w * 0.5f, dy + 4.0f}, {-w * 0.5f, -dy - height}};
+            for (const glm::vec2& o : offsets) {
+                const glm::vec2 at = points[i] + o;
+                const Box b{at - glm::vec2(2.0f), at + glm::vec2(w + 2.0f, height + 2.0f)};
+                if (b.lo.x < 0.0f || b.hi.x > static_cast<float>(canvas.width())) continue;
+                if (std::any_of(taken.begin(), taken.end(), [&](const Box& t) { return t.overlaps(b); })) continue;
+                best = at;
+                taken.push_back(b);
+                found = true;
+                break;
+            }
+        }
+        out.push_back(best);
+    }
+    return out;
+}
+
+}  // namespace
+
 void plot_tradeoff(const std::vector<TradeoffPoint>& points, const std::string& title,
                    const scene::VectorFont* font, const std::filesystem::path& out) {
     Canvas canvas(1000, 700, kPaper, font);
@@ -50,19 +93,25 @@ void plot_tradeoff(const std::vector<TradeoffPoint>& points, const std::string& 
         xmax = std::max(xmax, p.p50_ms);
         ymin = std::min(ymin, p.min_f1);
     }
+    const double pad = std::max((1.0 - ymin) * 0.25, 0.002);
     Chart chart(canvas, nice_axis(0.0, xmax * 1.15, "p50 frame time (ms)"),
-                nice_axis(std::max(0.0, ymin - 0.05), 1.0, "F1 against the exact reference (mean, bar to min)"),
+                nice_axis(std::max(0.0, ymin - pad), 1.0, "F1 against the exact reference (mean, bar to min)"),
                 title);
     chart.draw_frame();
+    std::vector<glm::vec2> at;
+    std::vector<std::string> labels;
     for (std::size_t i = 0; i < points.size(); ++i) {
         const TradeoffPoint& p = points[i];
         const glm::vec3 c = series_color(i);
         canvas.line(chart.map(p.p50_ms, p.min_f1), chart.map(p.p50_ms, p.mean_f1), c, 2.0f);
-        const glm::vec2 at = chart.map(p.p50_ms, p.mean_f1);
-        canvas.disc(at, 5.0f, c);
-        // Labels alternate above and below so neighbours do not print over each other.
-        const float dy = i % 2 == 0 ? 10.0f : -22.0f;
-        canvas.text(p.label, at + glm::vec2(8.0f, dy), 11.0f, c);
+        at.push_back(chart.map(p.p50_ms, p.mean_f1));
+        canvas.disc(at.back(), 5.0f, c);
+        labels.push_back(p.label);
+    }
+    constexpr float kLabel = 11.0f;
+    const std::vector<glm::vec2> where = place_labels(canvas, at, labels, kLabel);
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        canvas.text(labels[i], where[i], kLabel, series_color(i));
     }
     canvas.save(out);
 }

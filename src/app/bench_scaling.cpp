@@ -27,8 +27,9 @@ scene::MeshLibrary subdivided(const scene::MeshLibrary& src, int levels) {
 
 }  // namespace
 
-ScalingResult run_scaling(render::Renderer& renderer, const BenchFrames& bf, const scene::MeshLibrary& meshes,
-                          const render::RenderSettings& settings, std::size_t max_tris, bool show_progress) {
+ScalingResult run_scaling(const BenchFrames& bf, const scene::MeshLibrary& meshes,
+                          const render::RenderSettings& settings, int width, int height, gl::TimingMethod timing,
+                          std::size_t max_tris, bool show_progress) {
     ScalingResult r;
     const std::size_t base = library_triangles(meshes);
     std::vector<double> xs, ys;
@@ -43,10 +44,10 @@ ScalingResult run_scaling(render::Renderer& renderer, const BenchFrames& bf, con
         // A fresh renderer per library: GPU meshes are cached by id, and the ids repeat.
         const scene::MeshLibrary lib = level == 0 ? scene::MeshLibrary{} : subdivided(meshes, level);
         const scene::MeshLibrary& use = level == 0 ? meshes : lib;
-        render::Renderer fresh(settings, renderer.width(), renderer.height(), renderer.timing_method());
-        ProgressBar bar("scaling " + label);
+        render::Renderer fresh(settings, width, height, timing);
+        ProgressBar bar("scaling " + label, static_cast<int>(bf.frames.size()) - bf.warmup);
         Progress progress;
-        if (show_progress) progress = [&bar](int d, int t) { bar(d, t); };
+        if (show_progress) progress = [&bar] { bar(); };
         RunResult run = run_frames(fresh, bf, use, "scaling-" + label, settings, progress);
         double tris = 0.0;
         for (const FrameRecord& f : run.frames) tris += static_cast<double>(f.stats.triangles_submitted);

@@ -19,9 +19,9 @@ struct ScalingResult {
 
 // `max_library_triangles` caps the subdivided library's size (memory): larger factors are
 // skipped and named in `skipped`.
-ScalingResult run_scaling(render::Renderer& renderer, const BenchFrames& frames, const scene::MeshLibrary& meshes,
-                          const render::RenderSettings& settings, std::size_t max_library_triangles,
-                          bool show_progress);
+ScalingResult run_scaling(const BenchFrames& frames, const scene::MeshLibrary& meshes,
+                          const render::RenderSettings& settings, int width, int height, gl::TimingMethod timing,
+                          std::size_t max_library_triangles, bool show_progress);
 
 std::string scaling_json(const BenchMeta& meta, const ScalingResult& result);
 

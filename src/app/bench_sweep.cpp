@@ -78,8 +78,8 @@ std::vector<int> sampled_frames(int timed, int samples) {
     return out;
 }
 
-SweepResult run_sweep(render::Renderer& renderer, const BenchFrames& bf, const scene::MeshLibrary& meshes, int width,
-                      int height, const SweepOptions& o) {
+SweepResult run_sweep(const BenchFrames& bf, const scene::MeshLibrary& meshes, int width, int height,
+                      gl::TimingMethod timing, const SweepOptions& o) {
     SweepResult result;
     const int timed = static_cast<int>(bf.frames.size()) - bf.warmup;
     result.sampled = sampled_frames(timed, o.samples);
@@ -94,29 +94,48 @@ SweepResult run_sweep(render::Renderer& renderer, const BenchFrames& bf, const s
 
     std::vector<std::vector<std::uint8_t>> refs;
     const auto t0 = std::chrono::steady_clock::now();
-    ProgressBar ref_bar("reference (CPU)");
+    ProgressBar ref_bar("reference masks (CPU)", static_cast<int>(result.sampled.size()));
     for (std::size_t k = 0; k < result.sampled.size(); ++k) {
         geo::ReferenceStats st;
         refs.push_back(render::reference_frame_mask(frame_of(result.sampled[k]), meshes, width, height, {}, &st));
         result.reference_rays += st.rays;
         if (!o.masks_dir.empty()) write_png(mask_path("reference", result.sampled[k]), Image{width, height, 1, refs.back()});
-        if (o.progress) ref_bar(static_cast<int>(k + 1), static_cast<int>(result.sampled.size()));
+        if (o.progress) ref_bar();
     }
     result.reference_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 
-    for (const SweepConfig& c : sweep_configs()) {
-        ProgressBar bar(c.label);
-        Progress progress;
-        if (o.progress) progress = [&bar](int d, int t) { bar(d, t); };
-        SweepRow row{c, run_frames(renderer, bf, meshes, c.label, c.settings, progress), {}};
+    const std::vector<SweepConfig> configs = sweep_configs();
+    std::vector<std::unique_ptr<render::Renderer>> renderers;
+    std::vector<RunResult> runs;
+    for (const SweepConfig& c : configs) {
+        renderers.push_back(std::make_unique<render::Renderer>(c.settings, width, height, timing));
+        runs.push_back(start_run(bf, c.label, c.settings));
+    }
+    ProgressBar bar("sweep (" + std::to_string(configs.size()) + " configs)",
+                    timed * static_cast<int>(configs.size()));
+    Progress progress;
+    if (o.progress) progress = [&bar] { bar(); };
+    const int rounds = std::clamp(o.rounds, 1, std::max(timed, 1));
+    for (int r = 0; r < rounds; ++r) {
+        const int first = timed * r / rounds, last = timed * (r + 1) / rounds;
+        for (std::size_t c = 0; c < configs.size(); ++c) {
+            // The first stretch of each configuration gets the full warm-up (shader
+            // compilation, first uploads); later ones only lead in.
+            const int warm = r == 0 ? bf.warmup : o.warm_per_stretch;
+            run_chunk(*renderers[c], bf, meshes, first, last - first, warm, runs[c], progress);
+        }
+    }
+    for (std::size_t c = 0; c < configs.size(); ++c) {
+        finish_run(runs[c]);
         std::vector<geo::MaskScore> scores;
         for (std::size_t k = 0; k < result.sampled.size(); ++k) {
-            const std::vector<std::uint8_t> mask = renderer.render_mask(frame_of(result.sampled[k]), meshes);
+            const std::vector<std::uint8_t> mask = renderers[c]->render_mask(frame_of(result.sampled[k]), meshes);
             scores.push_back(geo::score_masks(mask, refs[k], width, height, 1));
-            if (!o.masks_dir.empty()) write_png(mask_path(c.label, result.sampled[k]), Image{width, height, 1, mask});
+            if (!o.masks_dir.empty()) {
+                write_png(mask_path(configs[c].label, result.sampled[k]), Image{width, height, 1, mask});
+            }
         }
-        row.score = summarise(std::move(scores));
-        result.rows.push_back(std::move(row));
+        result.rows.push_back({configs[c], std::move(runs[c]), summarise(std::move(scores))});
     }
     return result;
 }

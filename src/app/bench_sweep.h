@@ -48,6 +48,11 @@ std::vector<Goal> judge_goals(const std::vector<SweepRow>& rows);
 
 struct SweepOptions {
     int samples = 6;                  // frames scored against the reference
+    // The timed frames are split into this many stretches, run round-robin over the
+    // configurations (each with its own renderer), so load that drifts during a long run on a
+    // shared machine does not favour whichever configuration ran when it was quiet.
+    int rounds = 4;
+    int warm_per_stretch = 5;         // untimed frames leading into each later stretch
     std::filesystem::path masks_dir;  // where sampled masks are written; empty = nowhere
     bool progress = true;
 };
@@ -61,8 +66,8 @@ struct SweepResult {
 
 // Runs every configuration on `frames` (already simulated). Reference masks are computed once
 // per sampled frame.
-SweepResult run_sweep(render::Renderer& renderer, const BenchFrames& frames, const scene::MeshLibrary& meshes,
-                      int width, int height, const SweepOptions& options);
+SweepResult run_sweep(const BenchFrames& frames, const scene::MeshLibrary& meshes, int width, int height,
+                      gl::TimingMethod timing, const SweepOptions& options);
 
 std::string sweep_json(const BenchMeta& meta, const SweepResult& result, const std::vector<Goal>& goals);
 void print_sweep_table(std::FILE* out, const SweepResult& result, const std::vector<Goal>& goals);

@@ -27,7 +27,8 @@ namespace fs = std::filesystem;
 constexpr const char* kUsage =
     "usage: beamzone bench LEVEL [--frames N] [--warmup N] [--size WxH]\n"
     "                      [--preset fast|balanced|high | --sweep | --scaling]\n"
-    "                      [--out DIR] [--replay FILE] [--samples N] [--timing auto|cpu|gpu]\n"
+    "                      [--out DIR] [--replay FILE] [--samples N] [--rounds N]\n"
+    "                      [--timing auto|cpu|gpu]\n"
     "Renders the level offscreen along its benchmark camera path ([[camera_key]]; without one\n"
     "the autopilot's own view), one simulation tick (1/60 s) per frame, so every machine draws\n"
     "the same frames. --replay FILE plays a recorded game instead, seen by the player.\n"
@@ -40,6 +41,8 @@ constexpr const char* kUsage =
     "--sweep runs every preset, the image-space outline baseline and balanced with culling,\n"
     "LOD and instancing off on the same frames, scores --samples frames (default 6) against\n"
     "the exact CPU reference (F1 at 1 px) and adds sweep.json, tradeoff.png and masks/.\n"
+    "Its timed frames run in --rounds stretches (default 4), round-robin over the\n"
+    "configurations, so a machine whose load drifts treats them alike.\n"
     "--scaling draws the frames from meshes subdivided to 1x, 4x, 16x and 64x the triangles\n"
     "and writes scaling.json and scaling.png (default 40 frames).\n";
 
@@ -56,6 +59,7 @@ struct Options {
     std::string out = "bench-out";
     std::string replay;
     int samples = 6;
+    int rounds = 4;
     std::string timing = "auto";
 };
 
@@ -85,6 +89,8 @@ Options parse(Args args) {
             o.replay = cur.value(a);
         } else if (a == "--samples") {
             o.samples = parse_int(a, cur.value(a), 1, 1000);
+        } else if (a == "--rounds") {
+            o.rounds = parse_int(a, cur.value(a), 1, 1000);
         } else if (a == "--timing") {
             o.timing = cur.value(a);
             if (o.timing != "auto" && o.timing != "cpu" && o.timing != "gpu") {
@@ -155,7 +161,6 @@ int run(const Options& o) {
 
     auto context = make_headless_context();
     const gl::TimingMethod timing = pick_timing(o.timing, *context);
-    render::Renderer renderer(settings, o.size.x, o.size.y, timing);
     const scene::VectorFont* font = nullptr;
     std::unique_ptr<scene::VectorFont> font_storage;
     try {
@@ -185,7 +190,8 @@ int run(const Options& o) {
         so.masks_dir = out / "masks";
         fs::create_directories(so.masks_dir, ec);
         if (ec) throw UserError(so.masks_dir.string() + ": cannot create: " + ec.message());
-        const SweepResult result = run_sweep(renderer, frames, scene.meshes(), o.size.x, o.size.y, so);
+        so.rounds = o.rounds;
+        const SweepResult result = run_sweep(frames, scene.meshes(), o.size.x, o.size.y, timing, so);
         meta.load_after = load_average();
         const std::vector<Goal> goals = judge_goals(result.rows);
         std::vector<TradeoffPoint> points;
@@ -203,7 +209,8 @@ int run(const Options& o) {
         print_summary_table(stdout, meta, runs);
         print_sweep_table(stdout, result, goals);
     } else if (o.mode == Mode::scaling) {
-        const ScalingResult result = run_scaling(renderer, frames, scene.meshes(), settings, 60'000'000, true);
+        const ScalingResult result =
+            run_scaling(frames, scene.meshes(), settings, o.size.x, o.size.y, timing, 60'000'000, true);
         meta.load_after = load_average();
         runs = result.runs;
         write_text(out / "scaling.json", scaling_json(meta, result));
@@ -215,9 +222,9 @@ int run(const Options& o) {
                     result.fit.slope * 1e5, result.fit.intercept, result.fit.r2);
         for (const std::string& s : result.skipped) std::printf("skipped %s\n", s.c_str());
     } else {
-        ProgressBar bar(settings.preset);
-        runs.push_back(run_frames(renderer, frames, scene.meshes(), settings.preset, settings,
-                                  [&bar](int d, int t) { bar(d, t); }));
+        render::Renderer renderer(settings, o.size.x, o.size.y, timing);
+        ProgressBar bar(settings.preset, meta.frames);
+        runs.push_back(run_frames(renderer, frames, scene.meshes(), settings.preset, settings, [&bar] { bar(); }));
         meta.load_after = load_average();
         plot_frame_times(runs.front(), settings.preset + ": frame time by pass", font, out / "frametime.png");
         print_summary_table(stdout, meta, runs);

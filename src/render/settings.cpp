@@ -38,6 +38,7 @@ RenderSettings preset(std::string_view name) {
         s.depth = DepthFormat::reversed_f32;
         s.spine_samples = 9;
         s.depth_bias = 1e-3f;
+        s.lod = false;
         s.line_half_width_px = 2.5f;
         s.bloom_resolution = BloomResolution::half;
         s.bloom_taps = 17;

@@ -25,7 +25,7 @@ Targets make_targets(int width, int height, const RenderSettings& s) {
     t.mask_fbo = gl::Framebuffer({&t.mask}, nullptr);
     t.output_fbo = gl::Framebuffer({&t.output}, nullptr);
     if (s.method == LineMethod::image_outline) {
-        t.normals = gl::Texture2D(width, height, GL_RGBA16F, gl::Filter::nearest);
+        t.normals = gl::Texture2D(width, height, GL_RGBA8, gl::Filter::nearest);
         t.normals_fbo = gl::Framebuffer({&t.normals}, &t.depth);
     }
     return t;

@@ -14,7 +14,7 @@ struct Targets {
     gl::Texture2D bloom_b;
     gl::Texture2D mask;    // R8 visible-spine mask
     gl::Texture2D output;  // RGBA8 composite, for PNGs and screenshots
-    gl::Texture2D normals; // RGBA16F face normals, only for LineMethod::image_outline
+    gl::Texture2D normals; // RGBA8 face normals, only for LineMethod::image_outline
     gl::Framebuffer depth_fbo, lines_fbo, bloom_a_fbo, bloom_b_fbo, mask_fbo, output_fbo;
     gl::Framebuffer normals_fbo;  // normals + depth
 };
