@@ -1,0 +1,64 @@
+#!/usr/bin/env bash
+# beamzone bench: a short run writes every file with the documented columns and keys, the
+# sweep and scaling modes write theirs, and bad input or usage gets exit 1 or 2.
+set -uo pipefail
+bin=$1
+root=$(cd "$(dirname "$0")/../.." && pwd)
+level=$root/levels/stress.toml
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+fail() { echo "FAIL: $*" >&2; exit 1; }
+
+expect() {
+  local want=$1 pattern=$2
+  shift 2
+  timeout 300 "$bin" "$@" >"$work/out" 2>"$work/err"
+  local rc=$?
+  [ "$rc" -eq "$want" ] || fail "beamzone $* exited $rc, wanted $want: $(cat "$work/err")"
+  if [ -n "$pattern" ]; then
+    grep -qE -e "$pattern" "$work/err" "$work/out" || fail "beamzone $*: output lacks /$pattern/: $(cat "$work/err" "$work/out")"
+  fi
+}
+
+# A short single-preset run.
+expect 0 "p50" bench "$level" --frames 6 --warmup 2 --size 192x108 --preset fast --out "$work/one"
+for f in summary.json frames.csv frametime.png; do [ -s "$work/one/$f" ] || fail "bench wrote no $f"; done
+head -1 "$work/one/frames.csv" | grep -q "^Config,Frame,TimeInSeconds,MsBetweenPresents,MsCPUBusy,MsPass_prepass,MsPass_lines" ||
+  fail "frames.csv header: $(head -1 "$work/one/frames.csv")"
+[ "$(wc -l <"$work/one/frames.csv")" -eq 7 ] || fail "frames.csv should have a header and 6 rows"
+for key in '"p50"' '"p99"' '"low_1pct"' '"timing_method": "cpu_finish"' '"triangles_submitted_mean"' '"feature_edges_mean"'; do
+  grep -q "$key" "$work/one/summary.json" || fail "summary.json lacks $key"
+done
+# Timer queries can be forced (llvmpipe has them, they just miss geometry work).
+expect 0 "gpu_queries" bench "$level" --frames 4 --warmup 6 --size 96x54 --timing gpu --out "$work/gpu"
+grep -q "MsPass_lines" "$work/gpu/frames.csv" || fail "gpu_queries run lost its pass columns"
+
+# The sweep: every configuration, a score for each, the goals judged.
+expect 0 "goal high: mean F1" bench "$level" --sweep --frames 4 --warmup 2 --rounds 2 --samples 2 --size 192x108 --out "$work/sweep"
+for f in sweep.json tradeoff.png summary.json frames.csv frametime.png masks/reference_frame0001.png; do
+  [ -s "$work/sweep/$f" ] || fail "sweep wrote no $f"
+done
+for cfg in fast balanced high image-outline balanced-no-culling balanced-no-lod balanced-no-instancing; do
+  grep -q "\"label\": \"$cfg\"" "$work/sweep/sweep.json" || fail "sweep.json lacks $cfg"
+done
+
+# Scaling on two frames.
+expect 0 "ms per 100k triangles" bench "$level" --scaling --frames 2 --warmup 1 --size 96x54 --out "$work/scale"
+[ -s "$work/scale/scaling.png" ] && [ -s "$work/scale/scaling.json" ] || fail "scaling files missing"
+
+# Bad input: exit 1 with the file named.
+expect 1 "missing.toml" bench "$work/missing.toml" --frames 2
+printf 'version = 1\n[field]\nsize = -3\n' >"$work/bad.toml"
+expect 1 "bad.toml:[0-9]+:[0-9]+: error" bench "$work/bad.toml" --frames 2
+printf 'junk\n' >"$work/junk.bzr"
+expect 1 "junk.bzr" bench "$level" --replay "$work/junk.bzr" --frames 2
+# Usage: exit 2.
+expect 2 "no LEVEL" bench
+expect 2 "unknown option" bench "$level" --bogus
+expect 2 "unknown preset" bench "$level" --preset ultra
+expect 2 "exclude each other" bench "$level" --sweep --preset fast
+expect 2 "exclude each other" bench "$level" --sweep --scaling
+expect 2 "--frames" bench "$level" --frames 0
+expect 2 "--timing" bench "$level" --timing sometimes
+expect 0 "usage: beamzone bench" bench --help
+echo "bench CLI ok"
