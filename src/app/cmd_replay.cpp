@@ -61,7 +61,8 @@ Options parse(Args args) {
         }
     }
     if (o.file.empty()) throw UsageError("no replay FILE given");
-    if (o.verify && o.record_seconds > 0) throw UsageError("--verify and --record-demo exclude each other");
+    if (o.verify && o.record_seconds > 0)
+        throw UsageError("--verify and --record-demo exclude each other");
     return o;
 }
 
@@ -86,7 +87,8 @@ level::Level load_level_or_report(const fs::path& path, bool& ok) {
     level::LoadResult loaded = level::load_level_file(path);
     ok = loaded.ok();
     if (!ok) {
-        for (const level::Diagnostic& d : loaded.errors) std::fprintf(stderr, "%s\n", level::format(d).c_str());
+        for (const level::Diagnostic& d : loaded.errors)
+            std::fprintf(stderr, "%s\n", level::format(d).c_str());
         return {};
     }
     return std::move(*loaded.level);
@@ -118,7 +120,8 @@ int record_demo(const Options& o) {
         rec.record(c, world);
     }
     game::replay::save(o.file, rec.finish(world));
-    std::printf("%s: recorded %" PRIu64 " ticks, score %d\n", o.file.c_str(), world.state().tick, world.score());
+    std::printf("%s: recorded %" PRIu64 " ticks, score %d\n", o.file.c_str(), world.state().tick,
+                world.score());
     return 0;
 }
 
@@ -156,31 +159,37 @@ int run(const Options& o) {
     }
 
     if (h.version != BEAMZONE_VERSION) {
-        std::fprintf(stderr, "%s: warning: recorded by beamzone %s, this is %s; the simulation may differ\n",
-                     o.file.c_str(), h.version.c_str(), BEAMZONE_VERSION);
+        std::fprintf(
+            stderr, "%s: warning: recorded by beamzone %s, this is %s; the simulation may differ\n",
+            o.file.c_str(), h.version.c_str(), BEAMZONE_VERSION);
     }
     const std::uint64_t now_hash = game::replay::level_hash(lv);
     if (now_hash != h.level_hash) {
         std::fprintf(stderr,
                      "%s: error: level %s is not the one the replay was recorded on (hash %s, "
                      "recorded %s)\n",
-                     o.file.c_str(), level_label.c_str(), hex(now_hash).c_str(), hex(h.level_hash).c_str());
+                     o.file.c_str(), level_label.c_str(), hex(now_hash).c_str(),
+                     hex(h.level_hash).c_str());
         return 1;
     }
 
     const auto t0 = std::chrono::steady_clock::now();
     const game::Assets assets(lv.backdrop);
     const game::replay::VerifyResult v = game::replay::verify(r, lv, assets);
-    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    const double ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     if (!v.ok) {
         std::fprintf(stderr,
-                     "%s: error: state hash mismatch at tick %" PRIu64 " (%.2f s): recorded %s, "
+                     "%s: error: state hash mismatch at tick %" PRIu64
+                     " (%.2f s): recorded %s, "
                      "re-simulated %s (%zu earlier hashes matched)\n",
                      o.file.c_str(), v.mismatch->tick, static_cast<double>(v.mismatch->tick) / 60.0,
-                     hex(v.mismatch->expected).c_str(), hex(v.mismatch->actual).c_str(), v.checks_passed);
+                     hex(v.mismatch->expected).c_str(), hex(v.mismatch->actual).c_str(),
+                     v.checks_passed);
         return 1;
     }
-    std::printf("%s: ok: %" PRIu64 " ticks (%.1f s of play), %zu state hashes match (verified in "
+    std::printf("%s: ok: %" PRIu64
+                " ticks (%.1f s of play), %zu state hashes match (verified in "
                 "%.1f ms, building the level included)\n",
                 o.file.c_str(), v.ticks, seconds, v.checks_passed, ms);
     return 0;

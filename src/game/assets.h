@@ -12,7 +12,7 @@
 namespace bz::game {
 
 class Assets {
-public:
+  public:
     explicit Assets(const level::Backdrop& backdrop);
     Assets(const Assets&) = delete;
     Assets& operator=(const Assets&) = delete;
@@ -23,7 +23,7 @@ public:
     const ModelIds& models() const { return models_; }
     const backdrop::Ids& horizon() const { return horizon_; }
 
-private:
+  private:
     std::unique_ptr<scene::MeshLibrary> library_;  // stable address for the model factory
     scene::FactoryTable factories_;
     ModelIds models_;

@@ -19,7 +19,8 @@ TickCommand autopilot(const World& world) {
         return c;
     }
     const scene::Transform& me = s.player.body.transform;
-    const glm::dvec2 d = world.field().delta(ground(me.position), ground(target->transform.position));
+    const glm::dvec2 d =
+        world.field().delta(ground(me.position), ground(target->transform.position));
     const glm::dvec3 f = me.forward();
     const double ahead = d.x * f.x + d.y * f.z;
     const double right = d.x * -f.z + d.y * f.x;  // the right vector is (-f.z, f.x)

@@ -2,9 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
-
 #include <glm/gtc/matrix_transform.hpp>
+#include <numbers>
 
 #include "scene/shapes.h"
 
@@ -37,8 +36,8 @@ struct Ejecta {
     double offset_s;
 };
 constexpr Ejecta kEjecta[] = {
-    {-0.9, 4.2, 2.3, 0.0},  {0.6, 5.0, 2.9, 0.7},  {1.3, 3.6, 2.1, 1.1}, {-1.6, 4.6, 3.3, 1.9},
-    {0.2, 5.6, 3.7, 0.4},   {-0.4, 3.9, 2.6, 2.2}, {1.8, 4.4, 3.1, 1.5}, {-1.1, 5.2, 3.5, 2.8},
+    {-0.9, 4.2, 2.3, 0.0}, {0.6, 5.0, 2.9, 0.7},  {1.3, 3.6, 2.1, 1.1}, {-1.6, 4.6, 3.3, 1.9},
+    {0.2, 5.6, 3.7, 0.4},  {-0.4, 3.9, 2.6, 2.2}, {1.8, 4.4, 3.1, 1.5}, {-1.1, 5.2, 3.5, 2.8},
 };
 constexpr double kEjectaGravityDegS2 = 3.2;
 
@@ -50,10 +49,10 @@ glm::dvec3 direction(double azimuth_deg) {
 }
 
 std::vector<glm::dvec2> default_mountains() {
-    return {{0, 1.2},   {14, 2.8},  {25, 1.6},  {38, 3.9},  {47, 2.2},  {80, 1.4},  {96, 3.1},
-            {108, 2.0}, {125, 4.6}, {139, 2.4}, {160, 1.1}, {178, 2.9}, {192, 1.8}, {210, 3.6},
-            {226, 2.1}, {244, 4.2}, {259, 2.6}, {277, 1.3}, {292, 3.3}, {318, 1.9}, {333, 3.8},
-            {347, 2.0}};
+    return {{0, 1.2},   {14, 2.8},  {25, 1.6},  {38, 3.9},  {47, 2.2},  {80, 1.4},
+            {96, 3.1},  {108, 2.0}, {125, 4.6}, {139, 2.4}, {160, 1.1}, {178, 2.9},
+            {192, 1.8}, {210, 3.6}, {226, 2.1}, {244, 4.2}, {259, 2.6}, {277, 1.3},
+            {292, 3.3}, {318, 1.9}, {333, 3.8}, {347, 2.0}};
 }
 
 geo::TriMesh mountains(const std::vector<glm::dvec2>& points_in) {
@@ -72,7 +71,8 @@ geo::TriMesh mountains(const std::vector<glm::dvec2>& points_in) {
         if (i + 1 == pts.size()) b.x += 360.0;
         const double gap = b.x - a.x;
         if (gap <= 1e-6 && pts.size() > 1) continue;  // duplicate azimuth: keep the later one
-        const int steps = std::max(1, static_cast<int>(std::ceil((pts.size() == 1 ? 360.0 : gap) / kMaxStepDeg)));
+        const int steps =
+            std::max(1, static_cast<int>(std::ceil((pts.size() == 1 ? 360.0 : gap) / kMaxStepDeg)));
         for (int s = 0; s < steps; ++s) {
             const double t = static_cast<double>(s) / steps;
             const double az = a.x + (pts.size() == 1 ? 360.0 : gap) * t;
@@ -136,7 +136,8 @@ void append_items(std::vector<scene::DrawItem>& out, const level::Backdrop& b, c
         for (const Ejecta& e : kEjecta) {
             const double tau = std::fmod(seconds + e.offset_s, e.period_s);
             const double az = e.drift_deg_s * tau;
-            const double el = kCraterHeightDeg + e.rise_deg_s * tau - 0.5 * kEjectaGravityDegS2 * tau * tau;
+            const double el =
+                kCraterHeightDeg + e.rise_deg_s * tau - 0.5 * kEjectaGravityDegS2 * tau * tau;
             if (el < 0.5) continue;
             const glm::vec3 p = on_ring(az, el, kVolcanoRadius);
             scene::DrawItem s;
@@ -154,7 +155,8 @@ void append_items(std::vector<scene::DrawItem>& out, const level::Backdrop& b, c
         const double radius = kRadius * 0.99;
         const glm::dvec3 d = direction(b.moon_azimuth_deg);
         const double el = b.moon_elevation_deg * kPi / 180.0;
-        const glm::dvec3 pos = glm::dvec3(d.x * std::cos(el), std::sin(el), d.z * std::cos(el)) * radius;
+        const glm::dvec3 pos =
+            glm::dvec3(d.x * std::cos(el), std::sin(el), d.z * std::cos(el)) * radius;
         // Face the eye: the mesh's +z must point back along -pos.
         glm::dmat4 place = glm::translate(at_eye, pos);
         place = glm::rotate(place, -b.moon_azimuth_deg * kPi / 180.0, glm::dvec3(0.0, 1.0, 0.0));

@@ -4,7 +4,9 @@
 
 namespace bz::game {
 
-double Field::wrap_coord(double v) const { return v - size_ * std::floor((v + half_) / size_); }
+double Field::wrap_coord(double v) const {
+    return v - size_ * std::floor((v + half_) / size_);
+}
 
 glm::dvec2 Field::delta(glm::dvec2 from, glm::dvec2 to) const {
     glm::dvec2 d = to - from;

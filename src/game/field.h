@@ -6,7 +6,7 @@
 namespace bz::game {
 
 class Field {
-public:
+  public:
     Field() = default;
     Field(double size, bool wrap) : size_(size), half_(size * 0.5), wrap_(wrap) {}
 
@@ -21,13 +21,15 @@ public:
     bool contains(glm::dvec2 p, double margin = 0.0) const;
     double distance(glm::dvec2 a, glm::dvec2 b) const { return glm::length(delta(a, b)); }
 
-private:
+  private:
     double wrap_coord(double v) const;
     double size_ = 400.0;
     double half_ = 200.0;
     bool wrap_ = true;
 };
 
-inline glm::dvec2 ground(const glm::dvec3& p) { return {p.x, p.z}; }
+inline glm::dvec2 ground(const glm::dvec3& p) {
+    return {p.x, p.z};
+}
 
 }  // namespace bz::game

@@ -9,7 +9,7 @@ struct StepPlan {
 };
 
 class FixedStep {
-public:
+  public:
     static constexpr double kTickSeconds = 1.0 / 60.0;
 
     // max_frame: longer frames (a debugger stop, a window drag) count as this long.
@@ -22,7 +22,7 @@ public:
     void reset() { accumulator_ = 0.0; }
     double accumulator() const { return accumulator_; }
 
-private:
+  private:
     double max_frame_;
     int max_ticks_;
     double accumulator_ = 0.0;

@@ -63,7 +63,8 @@ std::uint64_t Game::level_hash_value() const {
 
 void Game::start_game() {
     const std::uint64_t seed = options_.seed + games_started_++;
-    world_ = std::make_unique<World>(level_, seed, assets_->factories(), assets_->models(), options_.lives);
+    world_ = std::make_unique<World>(level_, seed, assets_->factories(), assets_->models(),
+                                     options_.lives);
     playback_.reset();
     mismatch_.reset();
     recorder_.reset();
@@ -83,8 +84,9 @@ void Game::start_game() {
 void Game::start_replay(replay::Replay r) {
     if (r.header.level_hash != level_hash_value()) {
         throw UserError("the replay was recorded on a different level (" + r.header.level +
-                        ", hash " + std::to_string(r.header.level_hash) + ") than the one loaded (" +
-                        level_name() + ", hash " + std::to_string(level_hash_value()) + ")");
+                        ", hash " + std::to_string(r.header.level_hash) +
+                        ") than the one loaded (" + level_name() + ", hash " +
+                        std::to_string(level_hash_value()) + ")");
     }
     world_ = std::make_unique<World>(level_, r.header.seed, assets_->factories(), assets_->models(),
                                      r.header.lives);
@@ -150,7 +152,8 @@ void Game::step_initials(const Buttons& b) {
         initials_ += initial_;
         initial_ = 'A';
     }
-    if (initials_.size() < HighScoreTable::kInitials && screen_ticks_ < kInitialsTimeoutTicks) return;
+    if (initials_.size() < HighScoreTable::kInitials && screen_ticks_ < kInitialsTimeoutTicks)
+        return;
     // Done (or the player walked away): file the entry.
     std::string name = initials_;
     if (name.size() < HighScoreTable::kInitials) name += initial_;
@@ -268,7 +271,8 @@ scene::FrameList Game::frame(double alpha, double aspect) const {
             screens::game_over(f.hud, font_, world_->score());
             break;
         case Screen::enter_initials:
-            screens::enter_initials(f.hud, font_, initials_, initial_, world_ ? world_->score() : 0, ticks_);
+            screens::enter_initials(f.hud, font_, initials_, initial_, world_ ? world_->score() : 0,
+                                    ticks_);
             break;
         case Screen::high_scores:
             screens::high_scores(f.hud, font_, highscores_, new_rank_, ticks_);

@@ -26,7 +26,7 @@
 namespace bz::game {
 
 enum class Screen : std::uint8_t {
-    attract,         // title and demo; start begins a game
+    attract,  // title and demo; start begins a game
     playing,
     paused,
     game_over,       // "GAME OVER" for a few seconds
@@ -40,14 +40,14 @@ struct GameOptions {
     HighScoreTable highscores = HighScoreTable::defaults();
     // What replays name as the level: empty = the level's file path, or "builtin:default".
     std::string level_name;
-    bool record = false;   // record every game (see recording())
-    bool attract = true;   // false: start playing at once (tests, benchmarks)
+    bool record = false;  // record every game (see recording())
+    bool attract = true;  // false: start playing at once (tests, benchmarks)
     int hash_interval = 60;
     double fov_y_deg = 45.0;
 };
 
 class Game {
-public:
+  public:
     // Throws UserError (file:line:col) when the level names an object kind with no factory
     // or a model that does not load. `font` may be null (no text) and must outlive the game.
     Game(level::Level level, GameOptions options, const scene::VectorFont* font = nullptr);
@@ -84,7 +84,7 @@ public:
     // recording or before the first game.
     std::optional<replay::Replay> recording() const;
 
-private:
+  private:
     struct Buttons;
     void start_game();
     void end_game();
@@ -107,12 +107,12 @@ private:
     HighScoreTable highscores_;
     bool highscores_changed_ = false;
     Screen screen_ = Screen::attract;
-    std::uint64_t ticks_ = 0;       // every tick since construction (animations)
-    int screen_ticks_ = 0;          // ticks on the current screen
+    std::uint64_t ticks_ = 0;  // every tick since construction (animations)
+    int screen_ticks_ = 0;     // ticks on the current screen
     std::uint64_t games_started_ = 0;
     std::uint64_t demo_games_ = 0;
     std::uint8_t prev_buttons_ = 0;
-    int prev_vertical_ = 0;         // -1, 0, 1: treads used as up/down in menus
+    int prev_vertical_ = 0;  // -1, 0, 1: treads used as up/down in menus
     std::string initials_;
     char initial_ = 'A';
     int new_rank_ = -1;

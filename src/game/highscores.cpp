@@ -13,7 +13,9 @@ namespace {
 constexpr std::string_view kMagic = "beamzone-highscores";
 constexpr int kMaxScore = 99'999'999;
 
-bool valid_initial(char c) { return (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == ' '; }
+bool valid_initial(char c) {
+    return (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == ' ';
+}
 
 }  // namespace
 
@@ -102,8 +104,10 @@ HighScoreTable parse_highscores(std::string_view text, const std::string& name) 
         const std::string_view digits = line.substr(4);
         int score = -1;
         const auto [p, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), score);
-        if (ec != std::errc() || p != digits.data() + digits.size() || score < 0 || score > kMaxScore) {
-            fail("score '" + std::string(digits) + "' is not a number in 0.." + std::to_string(kMaxScore));
+        if (ec != std::errc() || p != digits.data() + digits.size() || score < 0 ||
+            score > kMaxScore) {
+            fail("score '" + std::string(digits) + "' is not a number in 0.." +
+                 std::to_string(kMaxScore));
         }
         if (read.size() == HighScoreTable::kSize) fail("more than 10 entries");
         if (!read.empty() && score > read.back().score) fail("entries are not sorted best first");

@@ -23,7 +23,7 @@ struct HighScore {
 };
 
 class HighScoreTable {
-public:
+  public:
     static constexpr std::size_t kSize = 10;
     static constexpr std::size_t kInitials = 3;
 
@@ -40,7 +40,7 @@ public:
 
     bool operator==(const HighScoreTable&) const = default;
 
-private:
+  private:
     std::vector<HighScore> entries_;
 };
 

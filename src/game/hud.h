@@ -11,7 +11,7 @@
 namespace bz::game::hud {
 
 struct View {
-    double alpha = 1.0;      // interpolation between the last two ticks
+    double alpha = 1.0;  // interpolation between the last two ticks
     double aspect = 16.0 / 9.0;
     double fov_y_deg = 45.0;
     int high_score = 0;

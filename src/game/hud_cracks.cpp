@@ -46,7 +46,8 @@ void cracks(std::vector<scene::HudLine>& out, std::uint32_t seed, double seconds
     Rng rng(seed, 77);
     const auto xmax = static_cast<float>(aspect);
     const float grown = static_cast<float>(std::clamp(seconds / kGrowSeconds, 0.0, 1.0));
-    const glm::vec2 hit{static_cast<float>(rng.uniform(-0.4, 0.4) * aspect), static_cast<float>(rng.uniform(-0.35, 0.35))};
+    const glm::vec2 hit{static_cast<float>(rng.uniform(-0.4, 0.4) * aspect),
+                        static_cast<float>(rng.uniform(-0.35, 0.35))};
     const glm::vec3 color = kWhite;
     auto emit = [&](glm::vec2 a, glm::vec2 b, float intensity) {
         if (clip(a, b, xmax, 1.0f)) out.push_back({a, b, color, intensity});
@@ -58,7 +59,9 @@ void cracks(std::vector<scene::HudLine>& out, std::uint32_t seed, double seconds
     for (int i = 0; i <= ring; ++i) {
         const double a = 2.0 * kPi * i / ring;
         const float r = i == ring ? 0.0f : static_cast<float>(rng.uniform(0.03, 0.06));
-        glm::vec2 p = i == ring ? first : hit + r * glm::vec2(static_cast<float>(std::cos(a)), static_cast<float>(std::sin(a)));
+        glm::vec2 p = i == ring ? first
+                                : hit + r * glm::vec2(static_cast<float>(std::cos(a)),
+                                                      static_cast<float>(std::sin(a)));
         if (i == 0) first = p;
         if (i > 0) emit(prev, p, 1.2f);
         prev = p;
@@ -75,16 +78,21 @@ void cracks(std::vector<scene::HudLine>& out, std::uint32_t seed, double seconds
         // its shape while it spreads.
         float walked = 0.0f;
         while (walked < total) {
-            const float step = std::min(static_cast<float>(rng.uniform(0.08, 0.22)), total - walked);
+            const float step =
+                std::min(static_cast<float>(rng.uniform(0.08, 0.22)), total - walked);
             heading += rng.uniform(-0.35, 0.35);
-            const glm::vec2 dir{static_cast<float>(std::cos(heading)), static_cast<float>(std::sin(heading))};
+            const glm::vec2 dir{static_cast<float>(std::cos(heading)),
+                                static_cast<float>(std::sin(heading))};
             const glm::vec2 q = p + step * dir;
             if (walked < shown) emit(p, p + std::min(step, shown - walked) * dir, 1.0f);
             const bool branch = rng.below(5) == 0;
             const double bh = heading + (rng.below(2) ? 0.6 : -0.6);
             const float bl = static_cast<float>(rng.uniform(0.05, 0.18));
             if (branch && walked + step <= shown) {
-                emit(q, q + bl * glm::vec2(static_cast<float>(std::cos(bh)), static_cast<float>(std::sin(bh))), 0.7f);
+                emit(q,
+                     q + bl * glm::vec2(static_cast<float>(std::cos(bh)),
+                                        static_cast<float>(std::sin(bh))),
+                     0.7f);
             }
             p = q;
             walked += step;

@@ -15,7 +15,7 @@ constexpr double kPi = std::numbers::pi;
 
 glm::vec2 polar(double clockwise_from_up, float r) {
     return kRadarCenter + r * glm::vec2(static_cast<float>(std::sin(clockwise_from_up)),
-                                         static_cast<float>(std::cos(clockwise_from_up)));
+                                        static_cast<float>(std::cos(clockwise_from_up)));
 }
 
 void line(std::vector<scene::HudLine>& out, glm::vec2 a, glm::vec2 b, float intensity) {
@@ -35,7 +35,8 @@ void radar(std::vector<scene::HudLine>& out, const World& world, const View& vie
         std::atan(std::tan(view.fov_y_deg * kPi / 360.0) * std::max(0.1, view.aspect));
     line(out, polar(-half_fov, 0.02f), polar(-half_fov, kRadarRadius * 0.45f), 0.6f);
     line(out, polar(half_fov, 0.02f), polar(half_fov, kRadarRadius * 0.45f), 0.6f);
-    line(out, kRadarCenter + glm::vec2(-0.008f, 0.0f), kRadarCenter + glm::vec2(0.008f, 0.0f), 0.8f);
+    line(out, kRadarCenter + glm::vec2(-0.008f, 0.0f), kRadarCenter + glm::vec2(0.008f, 0.0f),
+         0.8f);
 
     // The sweep with a short fading trail.
     const double sweep = world.radar_sweep(view.alpha);

@@ -8,12 +8,12 @@
 
 namespace bz::game::models {
 
-geo::TriMesh slow_tank();   // wedge hull, turret, barrel, radar dish
-geo::TriMesh super_tank();  // lower, longer and sleeker
-geo::TriMesh missile();     // body, nose cone and tail fins
-geo::TriMesh saucer();      // two shallow cones and a dome
-geo::TriMesh shell();       // a small diamond
-geo::TriMesh spark();       // volcano ejecta, sized for the horizon
+geo::TriMesh slow_tank();            // wedge hull, turret, barrel, radar dish
+geo::TriMesh super_tank();           // lower, longer and sleeker
+geo::TriMesh missile();              // body, nose cone and tail fins
+geo::TriMesh saucer();               // two shallow cones and a dome
+geo::TriMesh shell();                // a small diamond
+geo::TriMesh spark();                // volcano ejecta, sized for the horizon
 std::vector<geo::TriMesh> debris();  // assorted wreckage pieces
 
 // A built-in obstacle kind's block or pyramid at scale 1 (not for KindShape::model).

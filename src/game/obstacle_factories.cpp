@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "game/models.h"
 #include "geometry/import.h"
 #include "geometry/line_mesh.h"
-#include "game/models.h"
 #include "level/kinds.h"
 
 namespace bz::game {
@@ -30,13 +30,13 @@ scene::FactoryTable make_obstacle_factories(scene::MeshLibrary& library) {
     scene::FactoryTable table;
     for (const level::BuiltinKind& kind : level::builtin_kinds()) {
         if (kind.shape == level::KindShape::model) continue;
-        const scene::MeshId mesh =
-            library.add("builtin:" + std::string(kind.name), geo::build_line_mesh(models::obstacle(kind)));
+        const scene::MeshId mesh = library.add("builtin:" + std::string(kind.name),
+                                               geo::build_line_mesh(models::obstacle(kind)));
         // Pyramids block like their base: a tank cannot drive up their slopes either.
-        const scene::Collider collider{scene::ColliderShape::box, 0.0, {kind.half_x, kind.half_z}, kind.height};
-        table.add(std::string(kind.name), [mesh, collider](const scene::Placement& p) {
-            return place(p, mesh, collider);
-        });
+        const scene::Collider collider{
+            scene::ColliderShape::box, 0.0, {kind.half_x, kind.half_z}, kind.height};
+        table.add(std::string(kind.name),
+                  [mesh, collider](const scene::Placement& p) { return place(p, mesh, collider); });
     }
     scene::MeshLibrary* lib = &library;
     table.add("model", [lib](const scene::Placement& p) {
@@ -51,7 +51,8 @@ scene::FactoryTable make_obstacle_factories(scene::MeshLibrary& library) {
         const geo::Bounds& b = lib->bounds(mesh);
         const glm::dvec2 half{std::max(std::abs(b.min.x), std::abs(b.max.x)),
                               std::max(std::abs(b.min.z), std::abs(b.max.z))};
-        const scene::Collider collider{scene::ColliderShape::box, 0.0, half, std::max(0.0f, b.max.y)};
+        const scene::Collider collider{scene::ColliderShape::box, 0.0, half,
+                                       std::max(0.0f, b.max.y)};
         return place(p, mesh, collider);
     });
     return table;

@@ -7,7 +7,8 @@
 
 namespace bz::game {
 
-ObstacleGrid::ObstacleGrid(const std::vector<scene::Entity>& obstacles, const Field& field, double cell)
+ObstacleGrid::ObstacleGrid(const std::vector<scene::Entity>& obstacles, const Field& field,
+                           double cell)
     : field_(field), cell_(cell) {
     n_ = std::clamp(static_cast<int>(std::ceil(field.size() / cell_)), 1, 512);
     cell_ = field.size() / n_;
@@ -19,7 +20,8 @@ ObstacleGrid::ObstacleGrid(const std::vector<scene::Entity>& obstacles, const Fi
         const Range rx = cells_along(o.transform.position.x, reach);
         const Range rz = cells_along(o.transform.position.z, reach);
         for (int i = 0; i < rx.count; ++i) {
-            for (int j = 0; j < rz.count; ++j) fn(static_cast<std::size_t>(index(rz.lo + j)) * n_ + index(rx.lo + i));
+            for (int j = 0; j < rz.count; ++j)
+                fn(static_cast<std::size_t>(index(rz.lo + j)) * n_ + index(rx.lo + i));
         }
     };
     for (const scene::Entity& o : obstacles) for_cells(o, [&](std::size_t c) { ++count[c + 1]; });
@@ -44,7 +46,9 @@ ObstacleGrid::Range ObstacleGrid::cells_along(double centre, double reach) const
     return {lo, std::min(hi - lo + 1, n_)};
 }
 
-int ObstacleGrid::index(int k) const { return ((k % n_) + n_) % n_; }
+int ObstacleGrid::index(int k) const {
+    return ((k % n_) + n_) % n_;
+}
 
 void ObstacleGrid::near(glm::dvec2 p, double radius, std::vector<std::uint32_t>& out) const {
     out.clear();

@@ -10,15 +10,16 @@
 namespace bz::game {
 
 class ObstacleGrid {
-public:
+  public:
     ObstacleGrid() = default;
-    ObstacleGrid(const std::vector<scene::Entity>& obstacles, const Field& field, double cell = 16.0);
+    ObstacleGrid(const std::vector<scene::Entity>& obstacles, const Field& field,
+                 double cell = 16.0);
 
     // Indices of obstacles whose bounding circle may reach within `radius` of p, ascending and
     // without repeats, written to `out` (cleared first).
     void near(glm::dvec2 p, double radius, std::vector<std::uint32_t>& out) const;
 
-private:
+  private:
     struct Range {
         int lo = 0;
         int count = 0;
@@ -28,9 +29,9 @@ private:
 
     Field field_;
     double cell_ = 16.0;
-    int n_ = 0;                                  // cells per side
-    std::vector<std::uint32_t> start_;           // n*n + 1 offsets into items_
-    std::vector<std::uint32_t> items_;           // obstacle indices, cell by cell
+    int n_ = 0;                         // cells per side
+    std::vector<std::uint32_t> start_;  // n*n + 1 offsets into items_
+    std::vector<std::uint32_t> items_;  // obstacle indices, cell by cell
 };
 
 }  // namespace bz::game

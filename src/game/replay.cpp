@@ -37,7 +37,7 @@ std::vector<std::string_view> fields(std::string_view line) {
 }
 
 class LineError {
-public:
+  public:
     LineError(const std::string& name, int line) : name_(name), line_(line) {}
     [[noreturn]] void fail(const std::string& what) const {
         throw UserError(name_ + ":" + std::to_string(line_) + ": error: " + what);
@@ -52,7 +52,7 @@ public:
         return v;
     }
 
-private:
+  private:
     const std::string& name_;
     int line_;
 };
@@ -78,7 +78,8 @@ std::string serialise(const Replay& r) {
         out += buf;
         i = j;
     }
-    for (const StateCheck& s : r.checks) out += "h " + std::to_string(s.tick) + " " + hex(s.hash) + "\n";
+    for (const StateCheck& s : r.checks)
+        out += "h " + std::to_string(s.tick) + " " + hex(s.hash) + "\n";
     out += "end\n";
     return out;
 }
@@ -102,12 +103,14 @@ Replay parse(std::string_view text, const std::string& name) {
         if (ended) err.fail("text after 'end'");
         const std::string_view key = f[0];
         if (!magic) {
-            if (key != kMagic) err.fail("not a beamzone replay (expected '" + std::string(kMagic) + " 1')");
+            if (key != kMagic)
+                err.fail("not a beamzone replay (expected '" + std::string(kMagic) + " 1')");
             if (f.size() != 2) err.fail("expected '" + std::string(kMagic) + " VERSION'");
             const int v = err.number<int>(f[1], "format version");
             if (v != kFormatVersion) {
-                err.fail("replay format " + std::to_string(v) + " is not supported (this build reads " +
-                         std::to_string(kFormatVersion) + ")");
+                err.fail("replay format " + std::to_string(v) +
+                         " is not supported (this build reads " + std::to_string(kFormatVersion) +
+                         ")");
             }
             magic = true;
             continue;
@@ -128,7 +131,8 @@ Replay parse(std::string_view text, const std::string& name) {
             // The rest of the line: a path may contain spaces.
             const std::size_t at = line.find("level") + 5;
             std::string_view rest = line.substr(at);
-            while (!rest.empty() && (rest.front() == ' ' || rest.front() == '\t')) rest.remove_prefix(1);
+            while (!rest.empty() && (rest.front() == ' ' || rest.front() == '\t'))
+                rest.remove_prefix(1);
             if (rest.empty()) err.fail("'level' needs a path");
             r.header.level = std::string(rest);
             have_level = true;
@@ -148,8 +152,8 @@ Replay parse(std::string_view text, const std::string& name) {
             want(2);
             declared_ticks = err.number<std::uint64_t>(f[1], "tick count");
             if (*declared_ticks > kMaxTicks) {
-                err.fail("tick count " + std::to_string(*declared_ticks) + " is over the limit of " +
-                         std::to_string(kMaxTicks));
+                err.fail("tick count " + std::to_string(*declared_ticks) +
+                         " is over the limit of " + std::to_string(kMaxTicks));
             }
             r.commands.reserve(static_cast<std::size_t>(*declared_ticks));
         } else if (key == "c") {
@@ -165,7 +169,8 @@ Replay parse(std::string_view text, const std::string& name) {
             }
             if (buttons > 0xff) err.fail("buttons must be two hex digits");
             if (r.commands.size() + count > *declared_ticks) {
-                err.fail("more commands than the declared " + std::to_string(*declared_ticks) + " ticks");
+                err.fail("more commands than the declared " + std::to_string(*declared_ticks) +
+                         " ticks");
             }
             const PackedCommand c{static_cast<std::int8_t>(left), static_cast<std::int8_t>(right),
                                   static_cast<std::uint8_t>(buttons)};
@@ -177,8 +182,8 @@ Replay parse(std::string_view text, const std::string& name) {
             s.hash = err.number<std::uint64_t>(f[2], "state hash", 16);
             if (s.tick == 0) err.fail("state hashes start at tick 1");
             if (!r.checks.empty() && s.tick <= r.checks.back().tick) {
-                err.fail("state hash ticks must increase (tick " + std::to_string(s.tick) + " after " +
-                         std::to_string(r.checks.back().tick) + ")");
+                err.fail("state hash ticks must increase (tick " + std::to_string(s.tick) +
+                         " after " + std::to_string(r.checks.back().tick) + ")");
             }
             r.checks.push_back(s);
         } else if (key == "end") {
@@ -249,7 +254,9 @@ std::uint64_t level_hash(const level::Level& lv) {
     return h.digest();
 }
 
-Recorder::Recorder(Header header) { replay_.header = std::move(header); }
+Recorder::Recorder(Header header) {
+    replay_.header = std::move(header);
+}
 
 void Recorder::record(const TickCommand& command, const World& after) {
     replay_.commands.push_back(pack(command));
@@ -277,8 +284,10 @@ TickCommand Player::next() {
 
 std::optional<Mismatch> Player::check(const World& world) {
     const std::uint64_t tick = world.state().tick;
-    while (next_check_ < replay_.checks.size() && replay_.checks[next_check_].tick < tick) ++next_check_;
-    if (next_check_ >= replay_.checks.size() || replay_.checks[next_check_].tick != tick) return std::nullopt;
+    while (next_check_ < replay_.checks.size() && replay_.checks[next_check_].tick < tick)
+        ++next_check_;
+    if (next_check_ >= replay_.checks.size() || replay_.checks[next_check_].tick != tick)
+        return std::nullopt;
     const StateCheck& c = replay_.checks[next_check_++];
     const std::uint64_t actual = world.state_hash();
     if (actual != c.hash) return Mismatch{tick, c.hash, actual};
@@ -287,7 +296,8 @@ std::optional<Mismatch> Player::check(const World& world) {
 }
 
 VerifyResult verify(const Replay& replay, const level::Level& level, const Assets& assets) {
-    World world(level, replay.header.seed, assets.factories(), assets.models(), replay.header.lives);
+    World world(level, replay.header.seed, assets.factories(), assets.models(),
+                replay.header.lives);
     Player player(replay);
     VerifyResult result;
     while (!player.done()) {

@@ -69,14 +69,14 @@ std::uint64_t level_hash(const level::Level& level);
 // Records while a game is played: call record() after every World::step with the command
 // that was stepped.
 class Recorder {
-public:
+  public:
     explicit Recorder(Header header);
     void record(const TickCommand& command, const World& after);
     // The replay so far, with the final state's hash added when it fell between intervals.
     Replay finish(const World& world) const;
     const Replay& replay() const { return replay_; }
 
-private:
+  private:
     Replay replay_;
 };
 
@@ -89,7 +89,7 @@ struct Mismatch {
 // Plays a replay back: next() gives each recorded command in turn; after stepping the world
 // with it, check() compares the state hash recorded for that tick (if any).
 class Player {
-public:
+  public:
     explicit Player(Replay replay);
     bool done() const { return next_ >= replay_.commands.size(); }
     std::size_t position() const { return next_; }
@@ -98,7 +98,7 @@ public:
     const Replay& replay() const { return replay_; }
     std::size_t checks_passed() const { return checks_passed_; }
 
-private:
+  private:
     Replay replay_;
     std::size_t next_ = 0;
     std::size_t next_check_ = 0;
@@ -107,7 +107,7 @@ private:
 
 struct VerifyResult {
     bool ok = false;
-    std::uint64_t ticks = 0;          // ticks simulated
+    std::uint64_t ticks = 0;  // ticks simulated
     std::size_t checks_passed = 0;
     std::optional<Mismatch> mismatch;  // the first one; the run stops there
 };

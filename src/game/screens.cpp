@@ -9,20 +9,24 @@ namespace {
 
 using scene::TextAlign;
 
-bool blink(std::uint64_t tick, std::uint64_t period = 40) { return (tick / (period / 2)) % 2 == 0; }
+bool blink(std::uint64_t tick, std::uint64_t period = 40) {
+    return (tick / (period / 2)) % 2 == 0;
+}
 
 }  // namespace
 
 void title(std::vector<scene::HudLine>& out, const scene::VectorFont* font, double aspect,
            std::uint64_t tick, int high_score) {
     hud::text(out, font, "BEAMZONE", {0.0f, 0.42f}, 0.2f, hud::kGreen, TextAlign::center, 1.4f);
-    hud::text(out, font, "A VECTOR TANK BATTLE", {0.0f, 0.28f}, 0.05f, hud::kGreen, TextAlign::center);
+    hud::text(out, font, "A VECTOR TANK BATTLE", {0.0f, 0.28f}, 0.05f, hud::kGreen,
+              TextAlign::center);
     if (blink(tick, 60)) {
-        hud::text(out, font, "PRESS START", {0.0f, -0.55f}, 0.07f, hud::kRed, TextAlign::center, 1.2f);
+        hud::text(out, font, "PRESS START", {0.0f, -0.55f}, 0.07f, hud::kRed, TextAlign::center,
+                  1.2f);
     }
     hud::text(out, font, "HIGH SCORE " + std::to_string(high_score),
-              {static_cast<float>(aspect) - hud::kMargin, hud::kTopLine}, hud::kTextHeight, hud::kRed,
-              TextAlign::right);
+              {static_cast<float>(aspect) - hud::kMargin, hud::kTopLine}, hud::kTextHeight,
+              hud::kRed, TextAlign::right);
     // A row of tanks under the title, as on the arcade's attract screen.
     for (int i = -2; i <= 2; ++i) {
         hud::tank_icon(out, {0.22f * static_cast<float>(i), -0.3f}, 0.12f, hud::kGreen);
@@ -65,7 +69,8 @@ void enter_initials(std::vector<scene::HudLine>& out, const scene::VectorFont* f
                     const std::string& letters, char current, int score, std::uint64_t tick) {
     hud::text(out, font, "GREAT SCORE", {0.0f, 0.55f}, 0.1f, hud::kRed, TextAlign::center, 1.3f);
     hud::text(out, font, std::to_string(score), {0.0f, 0.4f}, 0.07f, hud::kRed, TextAlign::center);
-    hud::text(out, font, "ENTER YOUR INITIALS", {0.0f, 0.22f}, 0.06f, hud::kGreen, TextAlign::center);
+    hud::text(out, font, "ENTER YOUR INITIALS", {0.0f, 0.22f}, 0.06f, hud::kGreen,
+              TextAlign::center);
     constexpr float kSlot = 0.18f;
     for (std::size_t i = 0; i < HighScoreTable::kInitials; ++i) {
         const float x = (static_cast<float>(i) - 1.0f) * kSlot;
@@ -74,8 +79,8 @@ void enter_initials(std::vector<scene::HudLine>& out, const scene::VectorFont* f
         if (i == letters.size()) c = current;
         const bool active = i == letters.size();
         if (!active || blink(tick, 30)) {
-            hud::text(out, font, std::string(1, c), {x, -0.05f}, 0.12f, hud::kWhite, TextAlign::center,
-                      active ? 1.5f : 1.0f);
+            hud::text(out, font, std::string(1, c), {x, -0.05f}, 0.12f, hud::kWhite,
+                      TextAlign::center, active ? 1.5f : 1.0f);
         }
         out.push_back({{x - 0.06f, -0.1f}, {x + 0.06f, -0.1f}, hud::kGreen, active ? 1.4f : 0.8f});
     }

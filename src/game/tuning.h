@@ -7,8 +7,8 @@ inline constexpr double kDt = 1.0 / 60.0;
 inline constexpr int kTicksPerSecond = 60;
 
 // The player's tank.
-inline constexpr double kPlayerSpeed = 7.0;        // units/s, both treads full forward
-inline constexpr double kPlayerTurnDeg = 50.0;     // deg/s, treads fully opposed
+inline constexpr double kPlayerSpeed = 7.0;     // units/s, both treads full forward
+inline constexpr double kPlayerTurnDeg = 50.0;  // deg/s, treads fully opposed
 inline constexpr double kPlayerRadius = 1.6;
 inline constexpr double kEyeHeight = 1.4;
 inline constexpr int kStartLives = 3;
@@ -38,10 +38,10 @@ inline constexpr double kAimToleranceDeg = 2.5;  // fires when its gun points th
 inline constexpr double kMissileSpeed = 16.0;
 inline constexpr double kMissileTurnDeg = 150.0;
 inline constexpr double kMissileRadius = 1.2;
-inline constexpr double kMissileCruise = 0.8;      // altitude of its base over open ground
-inline constexpr double kMissileClimb = 12.0;      // vertical speed, units/s
-inline constexpr double kMissileLookAhead = 9.0;   // looks this far ahead for obstacles to hop
-inline constexpr double kMissileWeaveDeg = 40.0;   // zig-zag amplitude
+inline constexpr double kMissileCruise = 0.8;     // altitude of its base over open ground
+inline constexpr double kMissileClimb = 12.0;     // vertical speed, units/s
+inline constexpr double kMissileLookAhead = 9.0;  // looks this far ahead for obstacles to hop
+inline constexpr double kMissileWeaveDeg = 40.0;  // zig-zag amplitude
 inline constexpr double kMissileWeaveHz = 0.9;
 inline constexpr double kMissileStraightDistance = 14.0;  // stops weaving this close
 

@@ -15,7 +15,9 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-double deg(double d) { return d * kPi / 180.0; }
+double deg(double d) {
+    return d * kPi / 180.0;
+}
 
 scene::Placement placement_of(const level::ObjectDesc& o) {
     scene::Placement p;
@@ -82,7 +84,8 @@ World::World(const level::Level& level, std::uint64_t seed, const scene::Factory
     cur_.lives = std::clamp(lives, 1, tuning::kMaxLives);
     PlayerTank& p = cur_.player;
     p.body.behaviour = scene::Behaviour::player;
-    p.body.collider = {scene::ColliderShape::circle, tuning::kPlayerRadius, {}, tuning::kTankHeight};
+    p.body.collider = {
+        scene::ColliderShape::circle, tuning::kPlayerRadius, {}, tuning::kTankHeight};
     const glm::dvec2 start = field_.wrap({level.player_start.x, level.player_start.z});
     p.body.transform.position = {start.x, 0.0, start.y};
     p.body.transform.yaw = wrap_angle(deg(level.player_heading_deg));

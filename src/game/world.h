@@ -29,9 +29,9 @@ enum class EnemyDirection : std::uint8_t { none, ahead, left, right, rear };
 
 // What the tank's crew knows this tick: drives the messages, reticle and warnings.
 struct Awareness {
-    bool enemy_present = false;  // a hostile (not the saucer) is on the field
-    bool enemy_in_range = false; // within radar range
-    bool in_sights = false;      // lined up with the gun and within shell range
+    bool enemy_present = false;   // a hostile (not the saucer) is on the field
+    bool enemy_in_range = false;  // within radar range
+    bool in_sights = false;       // lined up with the gun and within shell range
     EnemyDirection direction = EnemyDirection::none;
     bool motion_blocked = false;
 };
@@ -42,7 +42,7 @@ struct RadarBlip {
 };
 
 class World {
-public:
+  public:
     // Throws UserError naming file:line:col when a level object's kind has no factory.
     World(const level::Level& level, std::uint64_t seed, const scene::FactoryTable& factories,
           ModelIds models, int lives = 3);
@@ -81,10 +81,11 @@ public:
 
     // Scenario hooks for tests and the attract demo: place a hostile or the saucer at an
     // offset from the player (x right, y ahead in the player's view), replacing any present.
-    void spawn_hostile(HostileKind kind, glm::dvec2 view_offset, double yaw_towards_player_deg = 0.0);
+    void spawn_hostile(HostileKind kind, glm::dvec2 view_offset,
+                       double yaw_towards_player_deg = 0.0);
     void spawn_saucer(glm::dvec2 view_offset);
 
-private:
+  private:
     void step_player(const PackedCommand& cmd);
     void step_hostile();
     void step_tank(Hostile& h);

@@ -15,10 +15,14 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-double deg(double d) { return d * kPi / 180.0; }
+double deg(double d) {
+    return d * kPi / 180.0;
+}
 
 // The yaw that faces along d (x, z).
-double yaw_of(glm::dvec2 d) { return std::atan2(-d.x, -d.y); }
+double yaw_of(glm::dvec2 d) {
+    return std::atan2(-d.x, -d.y);
+}
 
 // Turns yaw towards target by at most max_step; returns the remaining error.
 double turn_towards(double& yaw, double target, double max_step) {
@@ -59,7 +63,8 @@ bool World::try_spawn_hostile() {
         pick -= weight[i];
     }
 
-    const double radius = kind == HostileKind::missile ? tuning::kMissileRadius : tuning::kTankRadius;
+    const double radius =
+        kind == HostileKind::missile ? tuning::kMissileRadius : tuning::kTankRadius;
     const double lo = std::max(10.0, rules_.spawn_min_distance);
     const double hi = std::max(lo, rules_.spawn_max_distance);
     for (int attempt = 0; attempt < 40; ++attempt) {
@@ -100,7 +105,8 @@ void World::place_hostile(HostileKind kind, glm::dvec2 position, double yaw) {
     }
     const bool is_missile = kind == HostileKind::missile;
     h.body.collider = {scene::ColliderShape::circle,
-                       is_missile ? tuning::kMissileRadius : tuning::kTankRadius, {},
+                       is_missile ? tuning::kMissileRadius : tuning::kTankRadius,
+                       {},
                        is_missile ? 1.0 : tuning::kTankHeight};
     const double calm = 1.0 - std::clamp(rules_.aggression, 0.0, 1.0);
     h.fire_cooldown = 60 + static_cast<int>(120.0 * calm) + ticks_between(cur_.rng, 0, 60);
@@ -198,10 +204,11 @@ void World::step_tank(Hostile& h) {
 
     if (throttle != 0.0) {
         const glm::dvec3 fwd = t.forward();
-        const glm::dvec2 next = ground(t.position) + glm::dvec2(fwd.x, fwd.z) * (speed * throttle * tuning::kDt);
+        const glm::dvec2 next =
+            ground(t.position) + glm::dvec2(fwd.x, fwd.z) * (speed * throttle * tuning::kDt);
         if (blocked(next, tuning::kTankRadius, false)) {
-            const bool by_player =
-                field_.distance(next, player_ground()) < tuning::kTankRadius + tuning::kPlayerRadius;
+            const bool by_player = field_.distance(next, player_ground()) <
+                                   tuning::kTankRadius + tuning::kPlayerRadius;
             if (!by_player && h.mode != TankMode::detour) {
                 h.mode = TankMode::detour;
                 h.mode_ticks = ticks_between(cur_.rng, 40, 90);
@@ -234,8 +241,8 @@ void World::step_missile(Hostile& h) {
     const double dist = glm::length(to_player);
 
     // Zig-zag in, straightening up for the final rush.
-    h.weave_phase = std::fmod(h.weave_phase + 2.0 * kPi * tuning::kMissileWeaveHz * tuning::kDt,
-                              2.0 * kPi);
+    h.weave_phase =
+        std::fmod(h.weave_phase + 2.0 * kPi * tuning::kMissileWeaveHz * tuning::kDt, 2.0 * kPi);
     const double weave = dist > tuning::kMissileStraightDistance
                              ? deg(tuning::kMissileWeaveDeg) * std::sin(h.weave_phase)
                              : 0.0;
@@ -247,7 +254,8 @@ void World::step_missile(Hostile& h) {
     double wanted = tuning::kMissileCruise;
     for (double s = 0.0; s <= tuning::kMissileLookAhead; s += 1.0) {
         if (const scene::Entity* o = obstacle_at(here + dir * s, tuning::kMissileRadius)) {
-            wanted = std::max(wanted, o->transform.position.y + o->collider.height * o->transform.scale + 0.5);
+            wanted = std::max(
+                wanted, o->transform.position.y + o->collider.height * o->transform.scale + 0.5);
         }
     }
     const double climb = tuning::kMissileClimb * tuning::kDt;
@@ -277,7 +285,8 @@ void World::destroy_hostile() {
     int points = tuning::kSlowTankPoints;
     if (h.kind == HostileKind::super_tank) points = tuning::kSuperTankPoints;
     if (h.kind == HostileKind::missile) points = tuning::kMissilePoints;
-    spawn_debris(h.body.transform.position, h.body.color, h.kind == HostileKind::missile ? 4 : 7, 1.0);
+    spawn_debris(h.body.transform.position, h.body.color, h.kind == HostileKind::missile ? 4 : 7,
+                 1.0);
     cur_.hostile.reset();
     ++cur_.kills;
     cur_.hostile_spawn_ticks = tuning::kRespawnTicks;
@@ -335,7 +344,8 @@ void World::step_saucer() {
     t.position.z = next.y;
     t.yaw = wrap_angle(t.yaw + 2.5 * tuning::kDt);
     // A gentle bob, from the tick count so it costs no state.
-    t.position.y = tuning::kSaucerAltitude + 0.25 * std::sin(static_cast<double>(cur_.tick % 240) * (2.0 * kPi / 240.0));
+    t.position.y = tuning::kSaucerAltitude +
+                   0.25 * std::sin(static_cast<double>(cur_.tick % 240) * (2.0 * kPi / 240.0));
 }
 
 void World::destroy_saucer() {

@@ -80,7 +80,8 @@ void World::fire_shell(const scene::Entity& from, bool from_player, double speed
     s.body.mesh = models_.shell;
     s.body.color = from_player ? glm::vec3(0.5f, 1.0f, 0.6f) : glm::vec3(1.0f, 0.5f, 0.3f);
     s.body.collider = {scene::ColliderShape::circle, tuning::kShellRadius, {}, 0.6};
-    glm::dvec2 start = field_.wrap(ground(t.position) + glm::dvec2(fwd.x, fwd.z) * tuning::kMuzzleOffset);
+    glm::dvec2 start =
+        field_.wrap(ground(t.position) + glm::dvec2(fwd.x, fwd.z) * tuning::kMuzzleOffset);
     // Pressed against a wall the muzzle is inside it: start at the tank so the shell's first
     // step meets the wall instead of appearing beyond it.
     if (obstacle_at(start, tuning::kShellRadius, tuning::kShellHeight) != nullptr) {

@@ -50,7 +50,8 @@ void World::step_shells() {
                 const scene::Entity& e = cur_.saucer->body;
                 const glm::dvec2 off_a = field_.delta(ground(e.transform.position), from);
                 const glm::dvec2 off_b = off_a + (to - from);
-                if (segment_hits(e.collider, e.transform.yaw, 1.0, off_a, off_b, tuning::kShellRadius)) {
+                if (segment_hits(e.collider, e.transform.yaw, 1.0, off_a, off_b,
+                                 tuning::kShellRadius)) {
                     alive = false;
                     destroy_saucer();
                 }
@@ -59,7 +60,8 @@ void World::step_shells() {
             const scene::Entity& e = cur_.player.body;
             const glm::dvec2 off_a = field_.delta(ground(e.transform.position), from);
             const glm::dvec2 off_b = off_a + (to - from);
-            if (segment_hits(e.collider, e.transform.yaw, 1.0, off_a, off_b, tuning::kShellRadius)) {
+            if (segment_hits(e.collider, e.transform.yaw, 1.0, off_a, off_b,
+                             tuning::kShellRadius)) {
                 kill_player();  // clears every shell
                 return;
             }
@@ -81,15 +83,18 @@ void World::spawn_debris(const glm::dvec3& at, const glm::vec3& color, int piece
         d.id = cur_.next_id++;
         d.body.behaviour = scene::Behaviour::debris;
         d.body.color = color;
-        d.body.mesh = models_.debris.empty()
-                          ? models_.shell
-                          : models_.debris[cur_.rng.below(static_cast<std::uint32_t>(models_.debris.size()))];
+        d.body.mesh =
+            models_.debris.empty()
+                ? models_.shell
+                : models_.debris[cur_.rng.below(static_cast<std::uint32_t>(models_.debris.size()))];
         d.body.transform.position = at + glm::dvec3(0.0, 0.8, 0.0);
         // The first piece flies at the player, as in the arcade game; the rest scatter.
-        const double a = i == 0 ? towards + cur_.rng.uniform(-0.15, 0.15) : cur_.rng.uniform(0.0, 2.0 * kPi);
+        const double a =
+            i == 0 ? towards + cur_.rng.uniform(-0.15, 0.15) : cur_.rng.uniform(0.0, 2.0 * kPi);
         const double out = (i == 0 ? 9.0 : cur_.rng.uniform(2.0, 7.0)) * power;
         d.velocity = {std::cos(a) * out, cur_.rng.uniform(5.0, 11.0) * power, std::sin(a) * out};
-        d.spin = {cur_.rng.uniform(-6.0, 6.0), cur_.rng.uniform(-6.0, 6.0), cur_.rng.uniform(-6.0, 6.0)};
+        d.spin = {cur_.rng.uniform(-6.0, 6.0), cur_.rng.uniform(-6.0, 6.0),
+                  cur_.rng.uniform(-6.0, 6.0)};
         d.body.transform.yaw = cur_.rng.uniform(-kPi, kPi);
         d.ticks_left = tuning::kDebrisTicks - static_cast<int>(cur_.rng.below(60));
         cur_.debris.push_back(d);

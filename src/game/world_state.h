@@ -3,10 +3,9 @@
 // the previous and the current copy so that the display can interpolate between them, and
 // state_hash() covers every field here.
 #include <cstdint>
+#include <glm/glm.hpp>
 #include <optional>
 #include <vector>
-
-#include <glm/glm.hpp>
 
 #include "core/rng.h"
 #include "scene/entity.h"
@@ -41,11 +40,11 @@ struct Hostile {
     HostileKind kind = HostileKind::slow_tank;
     scene::Entity body;
     TankMode mode = TankMode::approach;
-    int mode_ticks = 0;          // ticks left in this mode
-    double mode_yaw = 0.0;       // heading the mode steers towards (evade, detour) or side offset
-    int fire_cooldown = 0;       // ticks until it may fire again
-    double weave_phase = 0.0;    // missile zig-zag
-    double vertical_speed = 0.0; // missile hops
+    int mode_ticks = 0;           // ticks left in this mode
+    double mode_yaw = 0.0;        // heading the mode steers towards (evade, detour) or side offset
+    int fire_cooldown = 0;        // ticks until it may fire again
+    double weave_phase = 0.0;     // missile zig-zag
+    double vertical_speed = 0.0;  // missile hops
 };
 
 struct Saucer {
@@ -91,8 +90,8 @@ struct WorldState {
 
     int hostile_spawn_ticks = 0;  // ticks until the next hostile may appear
     int saucer_spawn_ticks = 0;
-    int blocked_ticks = 0;        // "MOTION BLOCKED BY OBJECT" stays up while > 0
-    std::uint32_t crack_seed = 0; // shape of the cracked screen of the last death
+    int blocked_ticks = 0;         // "MOTION BLOCKED BY OBJECT" stays up while > 0
+    std::uint32_t crack_seed = 0;  // shape of the cracked screen of the last death
 };
 
 }  // namespace bz::game

@@ -2,9 +2,8 @@
 // interpolated between the last two ticks.
 #include <algorithm>
 #include <cmath>
-#include <numbers>
-
 #include <glm/gtc/matrix_transform.hpp>
+#include <numbers>
 
 #include "game/tuning.h"
 #include "game/world.h"
@@ -15,7 +14,9 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-double deg(double d) { return d * kPi / 180.0; }
+double deg(double d) {
+    return d * kPi / 180.0;
+}
 
 // The target's offset in the player's view: x to the right, y straight ahead.
 glm::dvec2 to_view(glm::dvec2 delta, double yaw) {
@@ -46,7 +47,9 @@ const T* find_id(const std::vector<T>& list, std::uint32_t id) {
 
 }  // namespace
 
-double World::radar_range() const { return std::max(60.0, rules_.spawn_max_distance * 1.25); }
+double World::radar_range() const {
+    return std::max(60.0, rules_.spawn_max_distance * 1.25);
+}
 
 Awareness World::awareness() const {
     Awareness a;
@@ -87,15 +90,18 @@ std::vector<RadarBlip> World::radar_blips() const {
 
 double World::radar_sweep(double alpha) const {
     constexpr double period = tuning::kRadarSweepSeconds * tuning::kTicksPerSecond;
-    const double t = static_cast<double>(prev_.tick) + alpha * static_cast<double>(cur_.tick - prev_.tick);
+    const double t =
+        static_cast<double>(prev_.tick) + alpha * static_cast<double>(cur_.tick - prev_.tick);
     return 2.0 * kPi * std::fmod(t, period) / period;
 }
 
-scene::FrameList World::interpolated_frame(double alpha, double fov_y_deg, double draw_distance) const {
+scene::FrameList World::interpolated_frame(double alpha, double fov_y_deg,
+                                           double draw_distance) const {
     alpha = std::clamp(alpha, 0.0, 1.0);
     scene::FrameList f;
     f.style = style_;
-    const scene::Transform eye_t = lerp(field_, prev_.player.body.transform, cur_.player.body.transform, alpha);
+    const scene::Transform eye_t =
+        lerp(field_, prev_.player.body.transform, cur_.player.body.transform, alpha);
     const glm::dvec2 eye_g = ground(eye_t.position);
     f.camera.eye = {eye_g.x, tuning::kEyeHeight, eye_g.y};
     f.camera.target = f.camera.eye + eye_t.forward();
@@ -122,15 +128,17 @@ scene::FrameList World::interpolated_frame(double alpha, double fov_y_deg, doubl
     if (cur_.hostile) {
         const Hostile& h = *cur_.hostile;
         const bool same = prev_.hostile && prev_.hostile->id == h.id;
-        add(h.body, same ? lerp(field_, prev_.hostile->body.transform, h.body.transform, alpha)
-                         : h.body.transform,
+        add(h.body,
+            same ? lerp(field_, prev_.hostile->body.transform, h.body.transform, alpha)
+                 : h.body.transform,
             true, 1.0f);
     }
     if (cur_.saucer) {
         const Saucer& s = *cur_.saucer;
         const bool same = prev_.saucer && prev_.saucer->id == s.id;
-        add(s.body, same ? lerp(field_, prev_.saucer->body.transform, s.body.transform, alpha)
-                         : s.body.transform,
+        add(s.body,
+            same ? lerp(field_, prev_.saucer->body.transform, s.body.transform, alpha)
+                 : s.body.transform,
             true, 1.0f);
     }
     for (const Shell& s : cur_.shells) {
@@ -141,7 +149,8 @@ scene::FrameList World::interpolated_frame(double alpha, double fov_y_deg, doubl
     for (const Debris& d : cur_.debris) {
         const Debris* p = find_id(prev_.debris, d.id);
         // Fades over its last second.
-        const float fade = std::min(1.0f, static_cast<float>(d.ticks_left) / tuning::kTicksPerSecond);
+        const float fade =
+            std::min(1.0f, static_cast<float>(d.ticks_left) / tuning::kTicksPerSecond);
         add(d.body, p ? lerp(field_, p->body.transform, d.body.transform, alpha) : d.body.transform,
             false, fade);
     }

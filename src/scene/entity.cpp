@@ -1,7 +1,6 @@
 #include "scene/entity.h"
 
 #include <cmath>
-
 #include <glm/gtc/matrix_transform.hpp>
 
 namespace bz::scene {
@@ -14,6 +13,8 @@ glm::dmat4 Transform::matrix() const {
     return glm::scale(m, glm::dvec3(scale));
 }
 
-glm::dvec3 Transform::forward() const { return {-std::sin(yaw), 0.0, -std::cos(yaw)}; }
+glm::dvec3 Transform::forward() const {
+    return {-std::sin(yaw), 0.0, -std::cos(yaw)};
+}
 
 }  // namespace bz::scene

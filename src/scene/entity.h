@@ -2,7 +2,6 @@
 // What every object in the world is made of: where it is, which shared mesh shows it, what it
 // bumps into and how it behaves. Level objects, tanks, shells and debris all use this.
 #include <cstdint>
-
 #include <glm/glm.hpp>
 
 #include "scene/frame_list.h"
@@ -36,8 +35,8 @@ struct Collider {
 };
 
 enum class Behaviour : std::uint8_t {
-    inert,       // drawn only
-    obstacle,    // static; blocks tanks and shells
+    inert,     // drawn only
+    obstacle,  // static; blocks tanks and shells
     player,
     slow_tank,
     super_tank,

@@ -20,7 +20,8 @@ Entity FactoryTable::create(const Placement& placement) const {
             if (!known.empty()) known += ", ";
             known += name;
         }
-        throw UserError("unknown object kind '" + placement.kind + "' (known kinds: " + known + ")");
+        throw UserError("unknown object kind '" + placement.kind + "' (known kinds: " + known +
+                        ")");
     }
     return it->second(placement);
 }

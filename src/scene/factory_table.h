@@ -3,12 +3,11 @@
 // a loader never names a concrete type: adding a kind means registering one more factory.
 #include <filesystem>
 #include <functional>
+#include <glm/glm.hpp>
 #include <map>
 #include <string>
 #include <string_view>
 #include <vector>
-
-#include <glm/glm.hpp>
 
 #include "scene/entity.h"
 
@@ -28,7 +27,7 @@ struct Placement {
 using Factory = std::function<Entity(const Placement&)>;
 
 class FactoryTable {
-public:
+  public:
     // Registers (or replaces) the factory for `kind`.
     void add(std::string kind, Factory factory);
     bool contains(std::string_view kind) const;
@@ -37,7 +36,7 @@ public:
     // Registered kinds, sorted.
     std::vector<std::string> kinds() const;
 
-private:
+  private:
     std::map<std::string, Factory, std::less<>> factories_;
 };
 

@@ -43,7 +43,8 @@ geo::TriMesh loft(const std::vector<Ring>& rings) {
         const auto& hi = ids[k + 1];
         for (std::size_t i = 0; i < n; ++i) {
             const std::size_t j = (i + 1) % n;
-            if (lo.size() == 1 && hi.size() == 1) throw std::invalid_argument("two apexes in a row");
+            if (lo.size() == 1 && hi.size() == 1)
+                throw std::invalid_argument("two apexes in a row");
             if (lo.size() == 1) {
                 tri(m, lo[0], hi[j], hi[i]);
             } else if (hi.size() == 1) {

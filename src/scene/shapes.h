@@ -2,9 +2,8 @@
 // Small triangle-mesh builders for the game's own models (tanks, missile, saucer, shells,
 // debris, the horizon). Closed shapes wind counter-clockwise seen from outside; flat outline
 // shapes are open, single-sided strips whose boundary edges draw as lines.
-#include <vector>
-
 #include <glm/glm.hpp>
+#include <vector>
 
 #include "geometry/mesh.h"
 

@@ -92,9 +92,9 @@ TEST(Assets, GameModelsAreClosedSolids) {
 }
 
 TEST(Assets, HorizonOutlinesAreOpenStrips) {
-    for (const auto& [name, mesh] : {std::pair{"mountains", backdrop::mountains({})},
-                                     std::pair{"volcano", backdrop::volcano()},
-                                     std::pair{"moon", backdrop::moon()}}) {
+    for (const auto& [name, mesh] :
+         {std::pair{"mountains", backdrop::mountains({})},
+          std::pair{"volcano", backdrop::volcano()}, std::pair{"moon", backdrop::moon()}}) {
         geo::MeshReport report;
         geo::build_line_mesh(mesh, &report);
         EXPECT_GT(report.boundary_edges, 0u) << name << ": its outline is its boundary";
@@ -111,14 +111,16 @@ TEST(Assets, HorizonOutlinesAreOpenStrips) {
     // Every triangle faces the centre.
     for (std::size_t t = 0; t < m.indices.size(); t += 3) {
         const glm::vec3 a = m.positions[m.indices[t]];
-        const glm::vec3 n = glm::cross(m.positions[m.indices[t + 1]] - a, m.positions[m.indices[t + 2]] - a);
+        const glm::vec3 n =
+            glm::cross(m.positions[m.indices[t + 1]] - a, m.positions[m.indices[t + 2]] - a);
         ASSERT_LT(glm::dot(n, a), 0.0f);
     }
 }
 
 TEST(Assets, OneMeshPerModelHoweverManyInstances) {
     level::Level lv = test::empty_level();
-    for (int i = 0; i < 30; ++i) lv.obstacles.push_back(test::object("cube", -60.0 + 4.0 * i, -30.0));
+    for (int i = 0; i < 30; ++i)
+        lv.obstacles.push_back(test::object("cube", -60.0 + 4.0 * i, -30.0));
     const Assets& a = test::shared_assets();
     const std::size_t meshes_before = a.meshes().size();
     World w(lv, 1, a.factories(), a.models());
@@ -142,7 +144,9 @@ TEST(Assets, LevelWithUnknownKindNamesItsPosition) {
         test::make_world(lv);
         FAIL();
     } catch (const UserError& e) {
-        EXPECT_EQ(std::string(e.what()).rfind("lv.toml:12:3: error: unknown object kind 'blob'", 0), 0u) << e.what();
+        EXPECT_EQ(std::string(e.what()).rfind("lv.toml:12:3: error: unknown object kind 'blob'", 0),
+                  0u)
+            << e.what();
     }
 }
 
@@ -180,7 +184,8 @@ TEST(Assets, BackdropItemsFollowTheEye) {
         const glm::dvec3 p = glm::dvec3(it.model[3]) - glm::dvec3(100, 0, -50);
         EXPECT_LT(p.x, 0.0);
         EXPECT_LT(p.z, 0.0);
-        EXPECT_NEAR(std::atan2(p.y, std::hypot(p.x, p.z)) * 180 / 3.14159265, b.moon_elevation_deg, 0.01);
+        EXPECT_NEAR(std::atan2(p.y, std::hypot(p.x, p.z)) * 180 / 3.14159265, b.moon_elevation_deg,
+                    0.01);
         // Its face (+z) points back at the eye.
         const glm::dvec3 n = glm::normalize(glm::dvec3(it.model * glm::dvec4(0, 0, 1, 0)));
         EXPECT_LT(glm::dot(n, glm::normalize(p)), -0.99);

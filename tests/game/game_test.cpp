@@ -1,10 +1,11 @@
 // The Game facade: screens from attract through play, pause, game over, initials and the
 // high-score table; recording and replaying through it; sounds; what a frame holds.
+#include "game/game.h"
+
 #include <gtest/gtest.h>
 
 #include "core/error.h"
 #include "game/autopilot.h"
-#include "game/game.h"
 #include "game/tuning.h"
 #include "test_world.h"
 
@@ -30,7 +31,8 @@ void tap(Game& g, bool TickCommand::*button) {
 
 // Plays with the autopilot until the game is over.
 void play_out(Game& g, int max_ticks = 60 * 60 * 30) {
-    for (int i = 0; i < max_ticks && g.screen() == Screen::playing; ++i) g.tick(autopilot(*g.world()));
+    for (int i = 0; i < max_ticks && g.screen() == Screen::playing; ++i)
+        g.tick(autopilot(*g.world()));
 }
 
 HighScoreTable low_table() {

@@ -1,5 +1,6 @@
-#include <gtest/gtest.h>
+#include "game/highscores.h"
 
+#include <gtest/gtest.h>
 #include <sys/resource.h>
 
 #include <csignal>
@@ -7,7 +8,6 @@
 
 #include "core/error.h"
 #include "core/file_io.h"
-#include "game/highscores.h"
 
 namespace bz::game {
 namespace {
@@ -67,11 +67,12 @@ TEST(HighScores, CorruptOrPartialFilesFallBackToDefaultsWithAMessage) {
     };
     const Case cases[] = {
         {good.substr(0, good.size() / 2), "highscores.txt:"},  // cut mid-line
-        {good.substr(0, good.find("EDR")), "cut short"},        // cut at a line end
+        {good.substr(0, good.find("EDR")), "cut short"},       // cut at a line end
         {"garbage\n", "highscores.txt:1: error: not a beamzone high-score file"},
         {"beamzone-highscores 1\nABC 12x\nend\n", "highscores.txt:2: error: score '12x'"},
         {"beamzone-highscores 1\nab 5\n", "highscores.txt:2: error: expected three initials"},
-        {"beamzone-highscores 1\nAAA 5\nBBB 9\n", "highscores.txt:3: error: entries are not sorted"},
+        {"beamzone-highscores 1\nAAA 5\nBBB 9\n",
+         "highscores.txt:3: error: entries are not sorted"},
         {std::string("beamzone-highscores 1\nA\0C 5\n", 27), "highscores.txt:2: error: initials"},
         {"", "empty"},
     };

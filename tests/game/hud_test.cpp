@@ -1,10 +1,11 @@
 // The HUD's content lands in the expected regions (HUD units: origin at the centre, y up,
 // 1 = half the screen height, x in -aspect..aspect).
+#include "game/hud.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
 
-#include "game/hud.h"
 #include "game/hud_layout.h"
 #include "game/tuning.h"
 #include "test_world.h"
@@ -33,12 +34,13 @@ bool inside(const scene::HudLine& l, glm::vec2 lo, glm::vec2 hi) {
 }
 
 // Does `haystack` contain `needle` as a contiguous run of identical lines?
-bool contains_run(const std::vector<scene::HudLine>& haystack, const std::vector<scene::HudLine>& needle) {
+bool contains_run(const std::vector<scene::HudLine>& haystack,
+                  const std::vector<scene::HudLine>& needle) {
     auto same = [](const scene::HudLine& x, const scene::HudLine& y) {
         return x.a == y.a && x.b == y.b && x.color == y.color;
     };
-    return !needle.empty() &&
-           std::search(haystack.begin(), haystack.end(), needle.begin(), needle.end(), same) != haystack.end();
+    return !needle.empty() && std::search(haystack.begin(), haystack.end(), needle.begin(),
+                                          needle.end(), same) != haystack.end();
 }
 
 std::vector<scene::HudLine> text_lines(std::string_view s, glm::vec2 at, scene::TextAlign align) {
@@ -130,21 +132,25 @@ TEST(Hud, ScoreHighScoreAndTanksTopRight) {
     hud::play_hud(out, w, view_with_font());
     const float right = static_cast<float>(kAspect) - hud::kMargin;
     const auto score = text_lines("SCORE 5000", {right, hud::kTopLine}, scene::TextAlign::right);
-    const auto high = text_lines("HIGH SCORE 50000", {right, hud::kSecondLine}, scene::TextAlign::right);
+    const auto high =
+        text_lines("HIGH SCORE 50000", {right, hud::kSecondLine}, scene::TextAlign::right);
     EXPECT_TRUE(contains_run(out, score));
     EXPECT_TRUE(contains_run(out, high));
-    for (const scene::HudLine& l : score) EXPECT_TRUE(inside(l, {0.3f, 0.8f}, {static_cast<float>(kAspect), 1.0f}));
+    for (const scene::HudLine& l : score)
+        EXPECT_TRUE(inside(l, {0.3f, 0.8f}, {static_cast<float>(kAspect), 1.0f}));
     // Reserve tanks: 3 lives = the tank in play + 2 icons of 11 lines each, under the score.
     std::vector<scene::HudLine> icon;
     hud::tank_icon(icon, {0, 0}, 1.0f, hud::kRed);
     int icon_lines = 0;
     for (const scene::HudLine& l : out) {
-        icon_lines += inside(l, {0.5f, hud::kLivesLine - 0.01f}, {static_cast<float>(kAspect), hud::kLivesLine + 0.05f});
+        icon_lines += inside(l, {0.5f, hud::kLivesLine - 0.01f},
+                             {static_cast<float>(kAspect), hud::kLivesLine + 0.05f});
     }
     EXPECT_EQ(icon_lines, 2 * static_cast<int>(icon.size()));
     // Nothing leaves the screen.
     for (const scene::HudLine& l : out) {
-        EXPECT_TRUE(inside(l, {-static_cast<float>(kAspect), -1.0f}, {static_cast<float>(kAspect), 1.0f}));
+        EXPECT_TRUE(
+            inside(l, {-static_cast<float>(kAspect), -1.0f}, {static_cast<float>(kAspect), 1.0f}));
     }
 }
 
@@ -161,10 +167,12 @@ TEST(Hud, MessagesTopLeft) {
         w.spawn_hostile(HostileKind::slow_tank, c.at);
         std::vector<scene::HudLine> out;
         hud::play_hud(out, w, view_with_font());
-        EXPECT_TRUE(contains_run(out, text_lines("ENEMY IN RANGE", {left, hud::kTopLine}, scene::TextAlign::left)));
+        EXPECT_TRUE(contains_run(
+            out, text_lines("ENEMY IN RANGE", {left, hud::kTopLine}, scene::TextAlign::left)));
         const auto where = text_lines(c.second, {left, hud::kSecondLine}, scene::TextAlign::left);
         EXPECT_TRUE(contains_run(out, where)) << c.second;
-        for (const scene::HudLine& l : where) EXPECT_TRUE(inside(l, {-static_cast<float>(kAspect), 0.7f}, {0.0f, 1.0f}));
+        for (const scene::HudLine& l : where)
+            EXPECT_TRUE(inside(l, {-static_cast<float>(kAspect), 0.7f}, {0.0f, 1.0f}));
     }
 
     level::Level lv = test::empty_level();
@@ -173,7 +181,8 @@ TEST(Hud, MessagesTopLeft) {
     for (int i = 0; i < 30; ++i) w.step(test::drive(1, 1));
     std::vector<scene::HudLine> out;
     hud::play_hud(out, w, view_with_font());
-    EXPECT_TRUE(contains_run(out, text_lines("MOTION BLOCKED BY OBJECT", {left, hud::kSecondLine}, scene::TextAlign::left)));
+    EXPECT_TRUE(contains_run(out, text_lines("MOTION BLOCKED BY OBJECT", {left, hud::kSecondLine},
+                                             scene::TextAlign::left)));
 }
 
 TEST(Hud, CrackedScreenWhenHit) {
@@ -189,11 +198,13 @@ TEST(Hud, CrackedScreenWhenHit) {
     EXPECT_GT(full.size(), 40u);
     EXPECT_TRUE(contains_run(again, full) && again.size() == full.size()) << "then hold still";
     for (const scene::HudLine& l : full) {
-        EXPECT_TRUE(inside(l, {-static_cast<float>(kAspect) - 1e-4f, -1.0001f}, {static_cast<float>(kAspect) + 1e-4f, 1.0001f}));
+        EXPECT_TRUE(inside(l, {-static_cast<float>(kAspect) - 1e-4f, -1.0001f},
+                           {static_cast<float>(kAspect) + 1e-4f, 1.0001f}));
     }
     // Some crack reaches near a screen edge.
     float reach = 0.0f;
-    for (const scene::HudLine& l : full) reach = std::max({reach, std::abs(l.b.y), std::abs(l.b.x) / static_cast<float>(kAspect)});
+    for (const scene::HudLine& l : full)
+        reach = std::max({reach, std::abs(l.b.y), std::abs(l.b.x) / static_cast<float>(kAspect)});
     EXPECT_GT(reach, 0.9f);
     // play_hud draws them while dying, and no reticle.
     std::vector<scene::HudLine> out;

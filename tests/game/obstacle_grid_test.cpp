@@ -18,14 +18,16 @@ void check_against_scan(const Field& field, std::uint64_t seed) {
         e.transform.position = {rng.uniform(-half, half), 0.0, rng.uniform(-half, half)};
         e.transform.yaw = rng.uniform(-3.0, 3.0);
         e.transform.scale = rng.uniform(0.5, 3.0);
-        e.collider = {scene::ColliderShape::box, 0.0, {rng.uniform(0.5, 10.0), rng.uniform(0.5, 3.0)}, 5.0};
+        e.collider = {
+            scene::ColliderShape::box, 0.0, {rng.uniform(0.5, 10.0), rng.uniform(0.5, 3.0)}, 5.0};
         obstacles.push_back(e);
     }
     const ObstacleGrid grid(obstacles, field);
     std::vector<std::uint32_t> near;
     for (int q = 0; q < 3000; ++q) {
         // Some queries off the field, to exercise wrapping and clamping.
-        const glm::dvec2 p{rng.uniform(-half * 1.1, half * 1.1), rng.uniform(-half * 1.1, half * 1.1)};
+        const glm::dvec2 p{rng.uniform(-half * 1.1, half * 1.1),
+                           rng.uniform(-half * 1.1, half * 1.1)};
         const double r = rng.uniform(0.1, 10.0);
         grid.near(p, r, near);
         ASSERT_TRUE(std::is_sorted(near.begin(), near.end()));
@@ -40,9 +42,15 @@ void check_against_scan(const Field& field, std::uint64_t seed) {
     }
 }
 
-TEST(ObstacleGrid, NeverMissesWhatAScanFinds_Wrapping) { check_against_scan(Field(400.0, true), 1); }
-TEST(ObstacleGrid, NeverMissesWhatAScanFinds_Closed) { check_against_scan(Field(300.0, false), 2); }
-TEST(ObstacleGrid, TinyField) { check_against_scan(Field(20.0, true), 3); }
+TEST(ObstacleGrid, NeverMissesWhatAScanFinds_Wrapping) {
+    check_against_scan(Field(400.0, true), 1);
+}
+TEST(ObstacleGrid, NeverMissesWhatAScanFinds_Closed) {
+    check_against_scan(Field(300.0, false), 2);
+}
+TEST(ObstacleGrid, TinyField) {
+    check_against_scan(Field(20.0, true), 3);
+}
 
 TEST(ObstacleGrid, EmptyAndFar) {
     const ObstacleGrid empty({}, Field(400.0, true));

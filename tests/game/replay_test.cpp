@@ -1,3 +1,5 @@
+#include "game/replay.h"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -5,8 +7,9 @@
 #include "core/error.h"
 #include "core/file_io.h"
 #include "core/hash.h"
+#include "core/rng.h"
 #include "game/autopilot.h"
-#include "game/replay.h"
+#include "game/highscores.h"
 #include "test_world.h"
 
 namespace bz::game {
@@ -83,7 +86,8 @@ TEST(Replay, SerialiseParseRoundTripAndSaveIsAtomic) {
     EXPECT_EQ(back.header.level_hash, r.header.level_hash);
     EXPECT_EQ(back.header.version, BEAMZONE_VERSION);
     ASSERT_EQ(back.commands.size(), r.commands.size());
-    for (std::size_t i = 0; i < r.commands.size(); ++i) ASSERT_EQ(back.commands[i], r.commands[i]) << i;
+    for (std::size_t i = 0; i < r.commands.size(); ++i)
+        ASSERT_EQ(back.commands[i], r.commands[i]) << i;
     ASSERT_EQ(back.checks.size(), r.checks.size());
     EXPECT_TRUE(replay::verify(back, default_level(), test::shared_assets()).ok);
     // Run-length coding keeps held inputs small.
@@ -109,7 +113,8 @@ TEST(Replay, BadFilesGiveFileLineMessages) {
     const std::string good = replay::serialise(record_game(120));
     EXPECT_EQ(error_of(""), "r.bzr:0: error: empty file, not a beamzone replay");
     EXPECT_NE(error_of("hello\n").find("r.bzr:1: error: not a beamzone replay"), std::string::npos);
-    EXPECT_NE(error_of("beamzone-replay 9\n").find("r.bzr:1: error: replay format 9"), std::string::npos);
+    EXPECT_NE(error_of("beamzone-replay 9\n").find("r.bzr:1: error: replay format 9"),
+              std::string::npos);
     // Cut short: drop the "end" line.
     EXPECT_NE(error_of(good.substr(0, good.rfind("end"))).find("cut short"), std::string::npos);
     // A garbled command line names its line.
@@ -148,6 +153,68 @@ TEST(Replay, LevelHashFollowsTheLevel) {
     from_file.file = f;
     EXPECT_EQ(replay::level_hash(from_file), bz::hash_bytes("version = 1\n"));
     fs::remove(f);
+}
+
+}  // namespace
+}  // namespace bz::game
+
+namespace bz::game {
+namespace {
+
+// Random damage to a good file: every result parses or is refused with a UserError naming the
+// file, and whatever parses can be verified without crashing.
+TEST(Replay, MutatedFilesNeverCrash) {
+    const std::string good = replay::serialise(record_game(300));
+    Rng rng(123);
+    int refused = 0, parsed = 0;
+    for (int i = 0; i < 400; ++i) {
+        std::string text = good;
+        const int edits = 1 + static_cast<int>(rng.below(4));
+        for (int e = 0; e < edits; ++e) {
+            const auto at =
+                static_cast<std::size_t>(rng.below(static_cast<std::uint32_t>(text.size())));
+            switch (rng.below(3)) {
+                case 0:
+                    text[at] = static_cast<char>(rng.below(256));
+                    break;
+                case 1:
+                    text.erase(at, 1 + rng.below(20));
+                    break;
+                default:
+                    text.insert(
+                        at, std::string(1 + rng.below(5), static_cast<char>('0' + rng.below(10))));
+                    break;
+            }
+        }
+        try {
+            const replay::Replay r = replay::parse(text, "m.bzr");
+            ++parsed;
+            replay::verify(r, default_level(), test::shared_assets());
+        } catch (const UserError& e) {
+            ++refused;
+            EXPECT_EQ(std::string(e.what()).rfind("m.bzr:", 0), 0u) << e.what();
+        }
+    }
+    EXPECT_GT(refused, 100);
+    EXPECT_EQ(refused + parsed, 400);
+}
+
+TEST(HighScoresFuzz, MutatedFilesNeverCrash) {
+    HighScoreTable t = HighScoreTable::defaults();
+    const std::string good = serialise(t);
+    Rng rng(7);
+    for (int i = 0; i < 400; ++i) {
+        std::string text = good;
+        const auto at =
+            static_cast<std::size_t>(rng.below(static_cast<std::uint32_t>(text.size())));
+        text[at] = static_cast<char>(rng.below(256));
+        try {
+            const HighScoreTable back = parse_highscores(text, "h");
+            EXPECT_LE(back.entries().size(), HighScoreTable::kSize);
+        } catch (const UserError& e) {
+            EXPECT_EQ(std::string(e.what()).rfind("h:", 0), 0u);
+        }
+    }
 }
 
 }  // namespace

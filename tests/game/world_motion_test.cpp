@@ -23,7 +23,8 @@ TEST(WorldMotion, MissileHopsOverAnObstacleInItsPath) {
             if (!x.state().hostile) return true;
             const glm::dvec3 p = x.state().hostile->body.transform.position;
             highest = std::max(highest, p.y);
-            if (std::abs(p.z + 30.0) < 2.5 && std::abs(p.x) < 2.5) passed_over = passed_over || p.y > 5.0;
+            if (std::abs(p.z + 30.0) < 2.5 && std::abs(p.x) < 2.5)
+                passed_over = passed_over || p.y > 5.0;
             return x.phase() != Phase::playing;
         },
         60 * 20);
@@ -98,14 +99,16 @@ TEST(WorldMotion, SaucerComesAndGoesOnItsOwn) {
     World w = test::make_world(lv, 4);
     const int arrive = test::run_until(
         w, [](const World&) { return TickCommand{}; },
-        [](const World& x) { return x.state().saucer.has_value(); }, tuning::kSaucerMaxDelayTicks + 10);
+        [](const World& x) { return x.state().saucer.has_value(); },
+        tuning::kSaucerMaxDelayTicks + 10);
     EXPECT_GE(arrive, tuning::kSaucerMinDelayTicks - 1);
     EXPECT_LE(arrive, tuning::kSaucerMaxDelayTicks);
     ASSERT_TRUE(w.state().saucer.has_value());
     EXPECT_TRUE(w.radar_blips().empty());
     const int stay = test::run_until(
         w, [](const World&) { return TickCommand{}; },
-        [](const World& x) { return !x.state().saucer.has_value(); }, tuning::kSaucerLifeTicks + 10);
+        [](const World& x) { return !x.state().saucer.has_value(); },
+        tuning::kSaucerLifeTicks + 10);
     EXPECT_EQ(stay, tuning::kSaucerLifeTicks);
     EXPECT_EQ(w.phase(), Phase::playing) << "harmless";
 }

@@ -227,12 +227,14 @@ TEST(WorldRules, EnemyTankHuntsFromAfar) {
     level::Level lv = empty_level();
     World w = make_world(lv);
     w.spawn_hostile(HostileKind::slow_tank, {60.0, 80.0}, 70.0);  // facing well away
-    const double start = glm::length(w.field().delta(ground(w.state().player.body.transform.position),
-                                                     ground(w.state().hostile->body.transform.position)));
+    const double start =
+        glm::length(w.field().delta(ground(w.state().player.body.transform.position),
+                                    ground(w.state().hostile->body.transform.position)));
     for (int i = 0; i < 60 * 10; ++i) w.step(TickCommand{});
     ASSERT_TRUE(w.state().hostile.has_value());
-    const double now = glm::length(w.field().delta(ground(w.state().player.body.transform.position),
-                                                   ground(w.state().hostile->body.transform.position)));
+    const double now =
+        glm::length(w.field().delta(ground(w.state().player.body.transform.position),
+                                    ground(w.state().hostile->body.transform.position)));
     EXPECT_LT(now, start - 20.0) << "it closes in";
 }
 
@@ -275,7 +277,8 @@ TEST(WorldRules, FieldWrapsAround) {
     lv.wrap = false;
     World closed = make_world(lv);
     for (int i = 0; i < 60 * 10; ++i) closed.step(drive(1, 1));
-    EXPECT_NEAR(closed.state().player.body.transform.position.z, -50.0 + tuning::kPlayerRadius, 0.2);
+    EXPECT_NEAR(closed.state().player.body.transform.position.z, -50.0 + tuning::kPlayerRadius,
+                0.2);
     EXPECT_TRUE(closed.awareness().motion_blocked);
 }
 
@@ -285,8 +288,9 @@ TEST(WorldRules, DirectionMessages) {
         glm::dvec2 at;
         EnemyDirection dir;
     };
-    for (const Case c : {Case{{0, 40}, EnemyDirection::ahead}, Case{{-40, 5}, EnemyDirection::left},
-                         Case{{40, 5}, EnemyDirection::right}, Case{{3, -40}, EnemyDirection::rear}}) {
+    for (const Case c :
+         {Case{{0, 40}, EnemyDirection::ahead}, Case{{-40, 5}, EnemyDirection::left},
+          Case{{40, 5}, EnemyDirection::right}, Case{{3, -40}, EnemyDirection::rear}}) {
         w.spawn_hostile(HostileKind::slow_tank, c.at);
         const Awareness a = w.awareness();
         EXPECT_TRUE(a.enemy_present);

@@ -10,14 +10,17 @@ namespace {
 
 // Every directed edge appears once and its reverse once: closed and consistently wound.
 bool closed_and_consistent(const geo::TriMesh& m) {
-    std::map<std::pair<glm::vec3, glm::vec3>, int, bool (*)(const std::pair<glm::vec3, glm::vec3>&,
-                                                        const std::pair<glm::vec3, glm::vec3>&)>
-        edges([](const std::pair<glm::vec3, glm::vec3>& a, const std::pair<glm::vec3, glm::vec3>& b) {
-            auto key = [](const std::pair<glm::vec3, glm::vec3>& e) {
-                return std::make_tuple(e.first.x, e.first.y, e.first.z, e.second.x, e.second.y, e.second.z);
-            };
-            return key(a) < key(b);
-        });
+    std::map<std::pair<glm::vec3, glm::vec3>, int,
+             bool (*)(const std::pair<glm::vec3, glm::vec3>&,
+                      const std::pair<glm::vec3, glm::vec3>&)>
+        edges(
+            [](const std::pair<glm::vec3, glm::vec3>& a, const std::pair<glm::vec3, glm::vec3>& b) {
+                auto key = [](const std::pair<glm::vec3, glm::vec3>& e) {
+                    return std::make_tuple(e.first.x, e.first.y, e.first.z, e.second.x, e.second.y,
+                                           e.second.z);
+                };
+                return key(a) < key(b);
+            });
     for (std::size_t t = 0; t < m.indices.size(); t += 3) {
         for (int k = 0; k < 3; ++k) {
             const glm::vec3 a = m.positions[m.indices[t + k]];
@@ -45,7 +48,8 @@ TEST(Shapes, LoftWithApexesIsClosedAndOutward) {
     const geo::TriMesh pyr = loft({rect_ring(2, 2, 0), Ring{{{0, 0}}, 3}});
     EXPECT_TRUE(closed_and_consistent(pyr));
     EXPECT_NEAR(signed_volume(pyr), 4.0 * 3.0 / 3.0, 1e-4);
-    const geo::TriMesh dbl = loft({Ring{{{0, 0}}, -1}, ellipse_ring(8, {1, 1}, 0), Ring{{{0, 0}}, 1}});
+    const geo::TriMesh dbl =
+        loft({Ring{{{0, 0}}, -1}, ellipse_ring(8, {1, 1}, 0), Ring{{{0, 0}}, 1}});
     EXPECT_TRUE(closed_and_consistent(dbl));
     EXPECT_GT(signed_volume(dbl), 0.0);
 }
@@ -58,7 +62,8 @@ TEST(Shapes, LoftRejectsBadRings) {
 
 TEST(Shapes, StripFacesTheViewerAndRingsClose) {
     // Lower line left to right along +x, upper above: faces +z.
-    const geo::TriMesh s = strip({{0, 0, 0}, {1, 0, 0}, {2, 0, 0}}, {{0, 1, 0}, {1, 1, 0}, {2, 1, 0}}, false);
+    const geo::TriMesh s =
+        strip({{0, 0, 0}, {1, 0, 0}, {2, 0, 0}}, {{0, 1, 0}, {1, 1, 0}, {2, 1, 0}}, false);
     ASSERT_EQ(s.triangle_count(), 4u);
     for (std::size_t t = 0; t < s.indices.size(); t += 3) {
         const glm::vec3 a = s.positions[s.indices[t]];
@@ -66,7 +71,8 @@ TEST(Shapes, StripFacesTheViewerAndRingsClose) {
         const glm::vec3 c = s.positions[s.indices[t + 2]];
         EXPECT_GT(glm::cross(b - a, c - a).z, 0.0f);
     }
-    const geo::TriMesh ring = strip({{0, 0, 0}, {1, 0, 0}, {1, 0, 1}}, {{0, 1, 0}, {1, 1, 0}, {1, 1, 1}}, true);
+    const geo::TriMesh ring =
+        strip({{0, 0, 0}, {1, 0, 0}, {1, 0, 1}}, {{0, 1, 0}, {1, 1, 0}, {1, 1, 1}}, true);
     EXPECT_EQ(ring.triangle_count(), 6u);
 }
 

@@ -21,7 +21,8 @@ void BM_WorldStep(benchmark::State& state) {
     const auto level = default_level();
     World w(level, 1, assets().factories(), assets().models(), 9);
     for (auto _ : state) {
-        if (w.game_over()) w = World(level, w.seed() + 1, assets().factories(), assets().models(), 9);
+        if (w.game_over())
+            w = World(level, w.seed() + 1, assets().factories(), assets().models(), 9);
         w.step(autopilot(w));
     }
     state.SetItemsProcessed(state.iterations());
