@@ -184,6 +184,48 @@ TEST(WorldRules, BonusTankAt15000) {
     EXPECT_TRUE(has(events, SoundEvent::bonus_life));
 }
 
+TEST(WorldRules, SecondBonusAt100000AndNoMore) {
+    World w = make_world(empty_level());
+    int bonuses = 0;
+    for (int k = 0; k < 21; ++k) {  // 21 saucers: 105,000 points
+        w.spawn_saucer({0.0, 20.0});
+        std::vector<SoundEvent> events;
+        fire_and_wait(w, 40, &events);
+        for (SoundEvent e : events) bonuses += e == SoundEvent::bonus_life;
+        if (w.score() == 95000) {
+            EXPECT_EQ(w.lives(), 4);
+        }
+    }
+    EXPECT_EQ(w.score(), 105000);
+    EXPECT_EQ(bonuses, 2);
+    EXPECT_EQ(w.lives(), 5);
+}
+
+TEST(WorldRules, SuperTankOnlyFromItsThresholdAndSpawnsAtLevelDistances) {
+    level::Level lv = empty_level();
+    lv.enemies.super_tank = true;
+    lv.enemies.super_tank_score = 5000;
+    lv.enemies.spawn_min_distance = 50.0;
+    lv.enemies.spawn_max_distance = 60.0;
+    World w = make_world(lv, 3);
+    for (int i = 0; i < 900; ++i) {
+        w.step(TickCommand{});
+        ASSERT_FALSE(w.state().hostile.has_value());
+    }
+    w.spawn_saucer({0.0, 20.0});
+    fire_and_wait(w, 30);
+    ASSERT_EQ(w.score(), 5000);
+    test::run_until(
+        w, [](const World&) { return TickCommand{}; },
+        [](const World& x) { return x.state().hostile.has_value(); }, 600);
+    ASSERT_TRUE(w.state().hostile.has_value());
+    EXPECT_EQ(w.state().hostile->kind, HostileKind::super_tank);
+    const double d = w.field().distance(ground(w.state().player.body.transform.position),
+                                        ground(w.state().hostile->body.transform.position));
+    EXPECT_GE(d, 50.0 - 0.2);  // it may have moved a tick's worth
+    EXPECT_LE(d, 60.0 + 0.2);
+}
+
 TEST(WorldRules, LivesRunOutIntoGameOver) {
     World w = make_world(empty_level());
     for (int life = 3; life >= 1; --life) {
