@@ -1,9 +1,9 @@
 #include <cstdio>
 #include <string>
 
+#include "app/camera_args.h"
 #include "app/cli_args.h"
 #include "app/commands.h"
-#include "render/camera_framing.h"
 #include "app/headless_gl.h"
 #include "app/resource_limits.h"
 #include "core/error.h"
@@ -27,11 +27,7 @@ constexpr const char* kUsage =
 
 struct RenderOptions {
     std::string input;
-    std::optional<glm::dvec3> eye, target;
-    glm::dvec3 up{0.0, 1.0, 0.0};
-    double fov = 50.0;
-    std::optional<double> near, far;
-    glm::ivec2 size{800, 600};
+    CameraArgs camera;  // shared with `reference`, so both place the camera alike
     std::string preset = "balanced";
     scene::LineStyle style = scene::LineStyle::occluded;
     glm::dvec3 color{0.25, 1.0, 0.35};
@@ -45,14 +41,8 @@ RenderOptions parse(Args args) {
     ArgCursor cur(static_cast<int>(args.size()), args.data());
     while (!cur.done()) {
         const std::string_view a = cur.next();
-        if (a == "--eye") o.eye = parse_vec3(a, cur.value(a));
-        else if (a == "--target") o.target = parse_vec3(a, cur.value(a));
-        else if (a == "--up") o.up = parse_vec3(a, cur.value(a));
-        else if (a == "--fov") o.fov = parse_number(a, cur.value(a));
-        else if (a == "--near") o.near = parse_number(a, cur.value(a));
-        else if (a == "--far") o.far = parse_number(a, cur.value(a));
-        else if (a == "--size") o.size = parse_size(a, cur.value(a));
-        else if (a == "--preset") o.preset = cur.value(a);
+        if (parse_camera_option(a, cur, o.camera)) continue;
+        if (a == "--preset") o.preset = cur.value(a);
         else if (a == "--color") o.color = parse_vec3(a, cur.value(a));
         else if (a == "--out") o.out = cur.value(a);
         else if (a == "--mask") o.mask = cur.value(a);
@@ -71,34 +61,8 @@ RenderOptions parse(Args args) {
         }
     }
     if (o.input.empty()) throw UsageError("no INPUT model given");
-    if (!(o.fov > 0.0 && o.fov < 180.0)) throw UsageError("--fov must be in (0, 180)");
-    if (o.near && *o.near <= 0.0) throw UsageError("--near must be > 0");
-    if (o.near && o.far && *o.far <= *o.near) throw UsageError("--far must be > --near");
-    if (o.eye && o.target && glm::length(*o.eye - *o.target) <= 0.0) {
-        throw UsageError("--eye and --target must differ");
-    }
+    validate_camera(o.camera);
     return o;
-}
-
-scene::Camera make_camera(const RenderOptions& o, const geo::Bounds& bounds) {
-    const double aspect = static_cast<double>(o.size.x) / o.size.y;
-    scene::Camera c = render::frame_bounds(bounds, o.fov, aspect);
-    if (o.eye) {
-        c.eye = *o.eye;
-        c.target = o.target.value_or(glm::dvec3(bounds.center()));
-        const double dist = glm::length(c.eye - c.target);
-        const double r = std::max(static_cast<double>(bounds.radius()), 1e-6);
-        c.near = std::max(dist - r * 1.5, dist * 1e-3);
-        c.far = dist + r * 1.5;
-    } else if (o.target) {
-        c.target = *o.target;
-    }
-    c.up = o.up;
-    c.fov_y_deg = o.fov;
-    if (o.near) c.near = *o.near;
-    if (o.far) c.far = *o.far;
-    if (c.far <= c.near) c.far = c.near * 2.0;
-    return c;
 }
 
 void print_timings(const render::Renderer& r, const std::vector<std::vector<gl::PassTime>>& frames) {
@@ -152,11 +116,11 @@ int cmd_render(Args args) {
     scene::FrameList frame;
     const geo::Bounds bounds = geo::compute_bounds(mesh.positions);
     frame.items.push_back({meshes.add(o.input, std::move(mesh)), glm::dmat4(1.0), glm::vec3(o.color), 1.0f, true});
-    frame.camera = make_camera(o, bounds);
+    frame.camera = camera_for(o.camera, bounds);
     frame.style = o.style;
 
     settings.count_edges = o.repeat > 0;
-    render::Renderer renderer(settings, o.size.x, o.size.y,
+    render::Renderer renderer(settings, o.camera.size.x, o.camera.size.y,
                               o.repeat > 0 ? gl::TimingMethod::cpu_finish : gl::TimingMethod::off);
     std::vector<std::vector<gl::PassTime>> timings;
     const int frames = std::max(o.repeat, 1) + (o.repeat > 0 ? 2 : 0);  // 2 warm-up frames
@@ -164,8 +128,8 @@ int cmd_render(Args args) {
         renderer.render(frame, meshes, render::Renderer::kOffscreen);
         if (o.repeat > 0 && i >= 2) timings.push_back(renderer.pass_times());
     }
-    write_png(o.out, Image{o.size.x, o.size.y, 4, renderer.read_color()});
-    if (!o.mask.empty()) write_png(o.mask, Image{o.size.x, o.size.y, 1, renderer.render_mask(frame, meshes)});
+    write_png(o.out, Image{o.camera.size.x, o.camera.size.y, 4, renderer.read_color()});
+    if (!o.mask.empty()) write_png(o.mask, Image{o.camera.size.x, o.camera.size.y, 1, renderer.render_mask(frame, meshes)});
     print_timings(renderer, timings);
     if (context->debug().error_count() > 0) {
         std::fprintf(stderr, "beamzone render: %d OpenGL error(s) reported\n", context->debug().error_count());
