@@ -40,7 +40,8 @@ constexpr const char* kUsage =
     "  frametime.png frame time per frame, stacked by pass\n"
     "--sweep runs every preset, the image-space outline baseline and balanced with culling,\n"
     "LOD and instancing off on the same frames, scores --samples frames (default 6) against\n"
-    "the exact CPU reference (F1 at 1 px) and adds sweep.json, tradeoff.png and masks/.\n"
+    "the exact CPU reference (F1 at 1 px) and adds sweep.json, tradeoff.png and masks/\n"
+    "(default 240 frames per configuration).\n"
     "Its timed frames run in --rounds stretches (default 4), round-robin over the\n"
     "configurations, so a machine whose load drifts treats them alike.\n"
     "--scaling draws the frames from meshes subdivided to 1x, 4x, 16x and 64x the triangles\n"
@@ -107,6 +108,8 @@ Options parse(Args args) {
     if (o.level.empty()) throw UsageError("no LEVEL given");
     if (preset_given && o.mode == Mode::sweep) throw UsageError("--preset and --sweep exclude each other (the sweep runs every preset)");
     if (o.mode == Mode::scaling && !o.frames_given) o.frames = 40;
+    // Seven configurations: fewer frames each keep a sweep on llvmpipe within minutes.
+    if (o.mode == Mode::sweep && !o.frames_given) o.frames = 240;
     if (o.out.empty()) throw UsageError("--out needs a directory");
     return o;
 }

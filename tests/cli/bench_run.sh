@@ -32,6 +32,9 @@ done
 # Timer queries can be forced (llvmpipe has them, they just miss geometry work).
 expect 0 "gpu_queries" bench "$level" --frames 4 --warmup 6 --size 96x54 --timing gpu --out "$work/gpu"
 grep -q "MsPass_lines" "$work/gpu/frames.csv" || fail "gpu_queries run lost its pass columns"
+# Query results arrive frames late; every timed frame must still get its own.
+awk -F, 'NR > 1 && ($6 == "" || $7 == "") { bad = 1 } END { exit bad }' "$work/gpu/frames.csv" ||
+  fail "a frame has no pass times: $(cat "$work/gpu/frames.csv")"
 
 # The sweep: every configuration, a score for each, the goals judged.
 expect 0 "goal high: mean F1" bench "$level" --sweep --frames 4 --warmup 2 --rounds 2 --samples 2 --size 192x108 --out "$work/sweep"
