@@ -72,11 +72,16 @@ std::size_t statement_start(std::string_view text, std::size_t offset) {
 
 // Blanks the statement around the error on `line` (with every line of a multi-line value in
 // it) by spaces, so all later lines and columns stay where they were. Returns the last line
-// blanked, or 0 when there is nothing left to blank.
-int blank_statement(std::string& text, int line) {
+// blanked and where the statement began, or line 0 when there is nothing left to blank.
+struct Blanked {
+    int last_line = 0;
+    std::size_t start = 0;
+};
+Blanked blank_statement(std::string& text, int line) {
     const std::size_t error_line = line_start(text, line);
-    if (error_line == std::string::npos || error_line >= text.size()) return 0;
-    std::size_t pos = statement_start(text, error_line);
+    if (error_line == std::string::npos || error_line >= text.size()) return {};
+    const std::size_t start = statement_start(text, error_line);
+    std::size_t pos = start;
     int current = line - static_cast<int>(std::count(text.begin() + static_cast<std::ptrdiff_t>(pos),
                                                      text.begin() + static_cast<std::ptrdiff_t>(error_line), '\n'));
     ScanState own;
@@ -86,9 +91,52 @@ int blank_statement(std::string& text, int line) {
         scan(text, pos, end + 1, own);
         for (std::size_t i = pos; i < end; ++i) text[i] = ' ';
         pos = end + 1;
-        if ((current >= line && !own.inside_value()) || pos >= text.size()) return current;
+        if ((current >= line && !own.inside_value()) || pos >= text.size()) return {current, start};
         ++current;
     }
+}
+
+// Everything before `resume` has been parsed or skipped. Cutting it down to its line breaks
+// keeps every later line and column where it was, and makes the next parse read only the rest,
+// so a big file with many errors near its end costs one full parse, not one per error. The
+// last table header before the skipped statement (at `statement`) stays, so the keys that
+// follow still land in their table.
+void drop_parsed_part(std::string& text, std::size_t statement, std::size_t resume) {
+    std::size_t header_begin = 0;
+    std::size_t header_end = 0;
+    ScanState state;
+    std::size_t pos = 0;
+    while (pos < statement) {
+        std::size_t end = text.find('\n', pos);
+        end = (end == std::string::npos || end >= statement) ? statement : end + 1;
+        if (!state.inside_value()) {
+            std::size_t first = pos;
+            while (first < end && (text[first] == ' ' || text[first] == '\t')) ++first;
+            if (first < end && text[first] == '[') {
+                header_begin = pos;
+                header_end = end;
+            }
+        }
+        scan(text, pos, end, state);
+        pos = end;
+    }
+    std::string kept;
+    kept.reserve(text.size() - resume + 1024);
+    for (std::size_t i = 0; i < resume && i < text.size(); ++i) {
+        if ((i >= header_begin && i < header_end) || text[i] == '\n') kept += text[i];
+    }
+    if (resume < text.size()) kept.append(text, resume, std::string::npos);
+    text = std::move(kept);
+}
+
+// After a syntax error on `line`: skips the broken statement and what came before it. Returns
+// the last line skipped, or 0 when parsing cannot usefully go on.
+int skip_error(std::string& text, int line) {
+    const Blanked b = blank_statement(text, line);
+    if (b.last_line == 0) return 0;
+    const std::size_t next = line_start(text, b.last_line + 1);
+    drop_parsed_part(text, b.start, next == std::string::npos ? text.size() : next);
+    return b.last_line;
 }
 
 }  // namespace
@@ -110,7 +158,7 @@ SyntaxResult parse_toml(std::string_view text, const std::string& file, std::siz
             const SourcePos at = position_of_offset(work, unsafe->offset, file);
             result.errors.push_back({at, std::string("syntax error: ") + unsafe->why});
             if (result.errors.size() >= max_errors || at.line <= blanked_through) return result;
-            const int last = blank_statement(work, at.line);
+            const int last = skip_error(work, at.line);
             if (last == 0) return result;
             blanked_through = last;
             continue;
@@ -125,7 +173,7 @@ SyntaxResult parse_toml(std::string_view text, const std::string& file, std::siz
             result.errors.push_back(
                 {SourcePos{file, line, column}, plain_message(e.description())});
             if (result.errors.size() >= max_errors || line <= blanked_through) return result;
-            const int last = blank_statement(work, line);
+            const int last = skip_error(work, line);
             if (last == 0) return result;
             blanked_through = last;
         }

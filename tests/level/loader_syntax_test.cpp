@@ -81,6 +81,19 @@ TEST(LoaderSyntax, UnclosedArrayDoesNotCascade) {
     EXPECT_EQ(r.errors[0].pos.line, 5);
 }
 
+TEST(LoaderSyntax, RecoveryKeepsTheTableContext) {
+    // After the error the rest is read as part of [field] still: the repeated key is found...
+    const auto dup = load(level_text("[field]\nsize = = 1\nwrap = true\nwrap = false\n"));
+    ASSERT_EQ(dup.errors.size(), 2u);
+    EXPECT_EQ(dup.errors[0].pos.line, 4);
+    EXPECT_EQ(dup.errors[1].pos.line, 6);
+    EXPECT_NE(dup.errors[1].message.find("redefine"), std::string::npos) << dup.errors[1].message;
+    // ...and a key that belongs to [render] does not clash with a later [field] table.
+    const auto ctx = load(level_text("[render]\nbad = = 1\nfield = 1\n[field]\nsize = 100\n"));
+    ASSERT_EQ(ctx.errors.size(), 1u);
+    EXPECT_EQ(ctx.errors[0].pos.line, 4);
+}
+
 TEST(LoaderSyntax, DeeplyDottedKeyIsRefusedBeforeParsing) {
     std::string key = "a";
     for (int i = 0; i < 100000; ++i) key += ".a";
