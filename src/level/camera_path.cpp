@@ -14,8 +14,8 @@ constexpr std::array<Range, 3> kPoint = {kCoordinate, kCoordinate, kCoordinate};
 }  // namespace
 
 void read_camera_path(const toml::table& root, Level& level, ReadContext& ctx) {
-    const toml::array* list = table_array(root, "camera_key", ctx.options.max_camera_keys,
-                                          "camera keys", ctx.diag);
+    const toml::array* list =
+        table_array(root, "camera_key", ctx.options.max_camera_keys, "camera keys", ctx.diag);
     if (!list) return;
     level.camera_path.reserve(list->size());
     bool have_previous = false;
@@ -24,10 +24,12 @@ void read_camera_path(const toml::table& root, Level& level, ReadContext& ctx) {
         const toml::node& item = *list->get(i);
         const auto* t = item.as_table();
         if (!t) {
-            ctx.diag.error(item.source(), "each camera key must be a table, not " + std::string(type_name(item)));
+            ctx.diag.error(item.source(),
+                           "each camera key must be a table, not " + std::string(type_name(item)));
             continue;
         }
-        TableReader r(*t, "camera key " + std::to_string(i + 1), kCameraKeys, ctx.diag, root_keys());
+        TableReader r(*t, "camera key " + std::to_string(i + 1), kCameraKeys, ctx.diag,
+                      root_keys());
         bool ok = true;
         for (const std::string_view key : kCameraKeys) {
             if (!r.has(key)) {

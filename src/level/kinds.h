@@ -44,7 +44,9 @@ inline constexpr BuiltinKind kBuiltinKinds[] = {
 // The footprint of the player's tank at the start, for the "overlaps the player start" check.
 inline constexpr double kPlayerFootprintRadius = 3.0;
 
-inline std::span<const BuiltinKind> builtin_kinds() { return kBuiltinKinds; }
+inline std::span<const BuiltinKind> builtin_kinds() {
+    return kBuiltinKinds;
+}
 
 // nullptr when `name` is not a kind.
 inline const BuiltinKind* find_kind(std::string_view name) {

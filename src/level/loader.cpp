@@ -33,12 +33,14 @@ bool check_version(const toml::table& root, Level& level, Diagnostics& diag) {
     }
     const auto* number = node->as_integer();
     if (!number) {
-        diag.error(node->source(), "'version' must be a whole number, not " + std::string(type_name(*node)));
+        diag.error(node->source(),
+                   "'version' must be a whole number, not " + std::string(type_name(*node)));
         return false;
     }
     if (number->get() != kFormatVersion) {
         diag.error(node->source(), "unsupported format version " + std::to_string(number->get()) +
-                                       "; this beamzone reads version " + std::to_string(kFormatVersion));
+                                       "; this beamzone reads version " +
+                                       std::to_string(kFormatVersion));
         return false;
     }
     if (first && first->str() != "version") {
@@ -70,10 +72,10 @@ LoadResult load_level_string(std::string_view text, const fs::path& file_for_mes
     const std::string file = file_for_messages.string();
     result.dependencies.push_back(file_for_messages);
     if (text.size() > options.max_file_bytes) {
-        result.errors.push_back({SourcePos{file, 0, 0},
-                                 "file is " + std::to_string(text.size()) +
-                                     " bytes, over the limit of " +
-                                     std::to_string(options.max_file_bytes)});
+        result.errors.push_back(
+            {SourcePos{file, 0, 0}, "file is " + std::to_string(text.size()) +
+                                        " bytes, over the limit of " +
+                                        std::to_string(options.max_file_bytes)});
         return result;
     }
     SyntaxResult syntax = parse_toml(text, file, options.max_errors);
@@ -124,6 +126,8 @@ LoadResult load_level_file(const fs::path& file, const LoadOptions& options) {
     return load_level_string(text, file, options);
 }
 
-fs::path default_level_path() { return levels_dir() / "classic.toml"; }
+fs::path default_level_path() {
+    return levels_dir() / "classic.toml";
+}
 
 }  // namespace bz::level

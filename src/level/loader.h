@@ -3,11 +3,10 @@
 // error of the file, each with file:line:col, and a Level only when there were none.
 #include <cstddef>
 #include <filesystem>
+#include <glm/glm.hpp>
 #include <optional>
 #include <string_view>
 #include <vector>
-
-#include <glm/glm.hpp>
 
 #include "core/paths.h"
 #include "level/diagnostic.h"
@@ -29,8 +28,8 @@ struct LoadOptions {
 };
 
 struct LoadResult {
-    std::optional<Level> level;       // set exactly when errors is empty
-    std::vector<Diagnostic> errors;   // sorted by position
+    std::optional<Level> level;      // set exactly when errors is empty
+    std::vector<Diagnostic> errors;  // sorted by position
     // The level file and every model path it names that lies in an allowed folder, found or
     // not: what a hot-reload watcher has to watch to notice a fix.
     std::vector<std::filesystem::path> dependencies;

@@ -10,7 +10,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr std::array<std::string_view, 9> kExtensions = {".obj", ".ply",  ".stl", ".off", ".gltf",
+constexpr std::array<std::string_view, 9> kExtensions = {".obj", ".ply", ".stl", ".off", ".gltf",
                                                          ".glb", ".fbx", ".dae", ".3ds"};
 
 std::string lowercase(std::string s) {
@@ -86,7 +86,8 @@ ModelPath resolve_model_path(std::string_view text, const ModelRoots& roots) {
     out.watchable = true;
     const auto status = fs::status(resolved, ec);
     if (ec || !fs::exists(status)) {
-        out.error = "model file " + shown + " not found (looked for " + quote(resolved.string(), 160) + ")";
+        out.error =
+            "model file " + shown + " not found (looked for " + quote(resolved.string(), 160) + ")";
         return out;
     }
     if (!fs::is_regular_file(status)) {

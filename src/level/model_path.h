@@ -21,7 +21,8 @@ struct ModelRoots {
     std::filesystem::path level_folder;
     std::filesystem::path data_folder;
 };
-ModelRoots model_roots(const std::filesystem::path& level_dir, const std::filesystem::path& data_root);
+ModelRoots model_roots(const std::filesystem::path& level_dir,
+                       const std::filesystem::path& data_root);
 
 ModelPath resolve_model_path(std::string_view text, const ModelRoots& roots);
 

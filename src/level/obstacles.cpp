@@ -9,8 +9,8 @@ namespace bz::level::detail {
 
 namespace {
 
-constexpr std::array<std::string_view, 7> kObstacleKeys = {
-    "kind", "model", "position", "heading", "scale", "color", "radius"};
+constexpr std::array<std::string_view, 7> kObstacleKeys = {"kind",  "model", "position", "heading",
+                                                           "scale", "color", "radius"};
 
 constexpr auto kKindNames = [] {
     std::array<std::string_view, std::size(kBuiltinKinds)> names{};
@@ -53,7 +53,8 @@ void check_start_clear(const Level& level, const ObjectDesc& o, const BuiltinKin
 
 }  // namespace
 
-void read_obstacles(const toml::table& root, Level& level, glm::vec3 default_color, ReadContext& ctx) {
+void read_obstacles(const toml::table& root, Level& level, glm::vec3 default_color,
+                    ReadContext& ctx) {
     const toml::array* list =
         table_array(root, "obstacle", ctx.options.max_obstacles, "obstacles", ctx.diag);
     if (!list) return;
@@ -64,10 +65,12 @@ void read_obstacles(const toml::table& root, Level& level, glm::vec3 default_col
         const std::size_t number = i + 1;
         const auto* t = item.as_table();
         if (!t) {
-            ctx.diag.error(item.source(), "each obstacle must be a table, not " + std::string(type_name(item)));
+            ctx.diag.error(item.source(),
+                           "each obstacle must be a table, not " + std::string(type_name(item)));
             continue;
         }
-        TableReader r(*t, "obstacle " + std::to_string(number), kObstacleKeys, ctx.diag, root_keys());
+        TableReader r(*t, "obstacle " + std::to_string(number), kObstacleKeys, ctx.diag,
+                      root_keys());
         ObjectDesc o;
         o.pos = r.where();
         o.color = default_color;
@@ -89,8 +92,10 @@ void read_obstacles(const toml::table& root, Level& level, glm::vec3 default_col
         } else if (kind) {
             for (const std::string_view key : {"model", "radius"}) {
                 if (const toml::node* n = r.get(key)) {
-                    ctx.diag.error(n->source(), "'" + std::string(key) + "' applies only to kind = "
-                                                "\"model\"; a " + o.kind + " has a fixed size");
+                    ctx.diag.error(n->source(), "'" + std::string(key) +
+                                                    "' applies only to kind = "
+                                                    "\"model\"; a " +
+                                                    o.kind + " has a fixed size");
                     ok = false;
                 }
             }
@@ -100,23 +105,36 @@ void read_obstacles(const toml::table& root, Level& level, glm::vec3 default_col
         if (!position_node) {
             r.missing("position");
             ok = false;
-        } else if (auto v = r.vec3("position", {Range{-half, half}, kHeightRange, Range{-half, half}})) {
+        } else if (auto v =
+                       r.vec3("position", {Range{-half, half}, kHeightRange, Range{-half, half}})) {
             o.position = *v;
         } else {
             ok = false;
         }
         if (r.has("heading")) {
-            if (auto v = r.number("heading", kHeadingRange)) o.heading_deg = *v; else ok = false;
+            if (auto v = r.number("heading", kHeadingRange))
+                o.heading_deg = *v;
+            else
+                ok = false;
         }
         if (r.has("scale")) {
-            if (auto v = r.number("scale", kScaleRange)) o.scale = *v; else ok = false;
+            if (auto v = r.number("scale", kScaleRange))
+                o.scale = *v;
+            else
+                ok = false;
         }
         if (r.has("color")) {
-            if (auto v = r.color("color")) o.color = *v; else ok = false;
+            if (auto v = r.color("color"))
+                o.color = *v;
+            else
+                ok = false;
         }
         double radius = kind ? kind->footprint_radius : 0.0;
         if (is_model && r.has("radius")) {
-            if (auto v = r.number("radius", kRadiusRange)) radius = *v; else ok = false;
+            if (auto v = r.number("radius", kRadiusRange))
+                radius = *v;
+            else
+                ok = false;
         }
         o.footprint_radius = radius * o.scale;
 

@@ -10,12 +10,12 @@ namespace bz::level::detail {
 namespace {
 
 constexpr std::array<std::string_view, 11> kRootKeys = {
-    "version", "name", "author", "description", "field", "player",
-    "obstacle", "enemies", "backdrop", "render", "camera_key"};
+    "version",  "name",    "author",   "description", "field",     "player",
+    "obstacle", "enemies", "backdrop", "render",      "camera_key"};
 constexpr std::array<std::string_view, 3> kFieldKeys = {"size", "wrap", "obstacle_color"};
 constexpr std::array<std::string_view, 2> kPlayerKeys = {"position", "heading"};
 constexpr std::array<std::string_view, 6> kEnemyKeys = {
-    "types", "super_tank_score", "missile_score", "spawn_min_distance", "spawn_max_distance",
+    "types",     "super_tank_score", "missile_score", "spawn_min_distance", "spawn_max_distance",
     "aggression"};
 constexpr std::array<std::string_view, 4> kEnemyTypes = {"slow_tank", "super_tank", "missile",
                                                          "saucer"};
@@ -29,7 +29,9 @@ constexpr std::int64_t kMaxScore = 10'000'000;
 
 }  // namespace
 
-std::span<const std::string_view> root_keys() { return kRootKeys; }
+std::span<const std::string_view> root_keys() {
+    return kRootKeys;
+}
 
 const toml::table* section(const toml::table& root, std::string_view key, Diagnostics& diag) {
     const toml::node* node = root.get(key);
@@ -47,18 +49,21 @@ const toml::array* table_array(const toml::table& root, std::string_view key, st
     const auto* a = node->as_array();
     if (!a) {
         diag.error(node->source(), "'" + std::string(key) + "' must be a list of tables ([[" +
-                                       std::string(key) + "]]), not " + std::string(type_name(*node)));
+                                       std::string(key) + "]]), not " +
+                                       std::string(type_name(*node)));
         return nullptr;
     }
     if (a->size() > max_count) {
-        diag.error(node->source(), "too many " + std::string(plural) + ": " + std::to_string(a->size()) +
-                                       " (the limit is " + std::to_string(max_count) + ")");
+        diag.error(node->source(), "too many " + std::string(plural) + ": " +
+                                       std::to_string(a->size()) + " (the limit is " +
+                                       std::to_string(max_count) + ")");
         return nullptr;
     }
     return a;
 }
 
-void read_field(const toml::table& root, Level& level, glm::vec3& obstacle_color, Diagnostics& diag) {
+void read_field(const toml::table& root, Level& level, glm::vec3& obstacle_color,
+                Diagnostics& diag) {
     const toml::table* t = section(root, "field", diag);
     if (!t) return;
     TableReader r(*t, "[field]", kFieldKeys, diag, kRootKeys);
@@ -95,7 +100,8 @@ void read_enemies(const toml::table& root, Level& level, Diagnostics& diag) {
             for (const auto& item : *list) {
                 const auto* s = item.as_string();
                 if (!s) {
-                    diag.error(item.source(), "enemy types are strings, not " + std::string(type_name(item)));
+                    diag.error(item.source(),
+                               "enemy types are strings, not " + std::string(type_name(item)));
                     continue;
                 }
                 std::size_t index = kEnemyTypes.size();
@@ -103,9 +109,10 @@ void read_enemies(const toml::table& root, Level& level, Diagnostics& diag) {
                     if (kEnemyTypes[i] == s->get()) index = i;
                 }
                 if (index == kEnemyTypes.size()) {
-                    diag.error(item.source(), "unknown enemy type " + quote(s->get()) +
-                                                  did_you_mean(s->get(), kEnemyTypes) +
-                                                  " (one of: slow_tank, super_tank, missile, saucer)");
+                    diag.error(item.source(),
+                               "unknown enemy type " + quote(s->get()) +
+                                   did_you_mean(s->get(), kEnemyTypes) +
+                                   " (one of: slow_tank, super_tank, missile, saucer)");
                     continue;
                 }
                 if (seen[index]) {
@@ -123,7 +130,8 @@ void read_enemies(const toml::table& root, Level& level, Diagnostics& diag) {
                                            std::string(type_name(*node)));
         }
     }
-    if (auto v = r.integer("super_tank_score", 0, kMaxScore)) e.super_tank_score = static_cast<int>(*v);
+    if (auto v = r.integer("super_tank_score", 0, kMaxScore))
+        e.super_tank_score = static_cast<int>(*v);
     if (auto v = r.integer("missile_score", 0, kMaxScore)) e.missile_score = static_cast<int>(*v);
     const auto min_d = r.number("spawn_min_distance", {5.0, half});
     const auto max_d = r.number("spawn_max_distance", {5.0, half});
@@ -133,9 +141,10 @@ void read_enemies(const toml::table& root, Level& level, Diagnostics& diag) {
     if (min_d && !max_d) e.spawn_max_distance = std::max(e.spawn_max_distance, *min_d);
     if (max_d && !min_d) e.spawn_min_distance = std::min(e.spawn_min_distance, *max_d);
     if (min_d && max_d && *min_d > *max_d) {
-        diag.error(r.get("spawn_max_distance")->source(), "spawn_min_distance (" + number_text(e.spawn_min_distance) +
-                                     ") must not be larger than spawn_max_distance (" +
-                                     number_text(e.spawn_max_distance) + ")");
+        diag.error(r.get("spawn_max_distance")->source(),
+                   "spawn_min_distance (" + number_text(e.spawn_min_distance) +
+                       ") must not be larger than spawn_max_distance (" +
+                       number_text(e.spawn_max_distance) + ")");
     }
     if (auto v = r.number("aggression", {0.0, 1.0})) e.aggression = *v;
 }

@@ -1,11 +1,11 @@
 #pragma once
 // The readers of each part of a level file, used by the loader in this order: field and
 // player first, since obstacle placement is checked against them.
+#include <toml++/toml.h>
+
 #include <filesystem>
 #include <string_view>
 #include <vector>
-
-#include <toml++/toml.h>
 
 #include "level/level.h"
 #include "level/loader.h"
@@ -31,12 +31,14 @@ const toml::array* table_array(const toml::table& root, std::string_view key, st
 // The keys each table allows, for "unknown key" checks and suggestions.
 std::span<const std::string_view> root_keys();
 
-void read_field(const toml::table& root, Level& level, glm::vec3& obstacle_color, Diagnostics& diag);
+void read_field(const toml::table& root, Level& level, glm::vec3& obstacle_color,
+                Diagnostics& diag);
 void read_player(const toml::table& root, Level& level, Diagnostics& diag);
 void read_enemies(const toml::table& root, Level& level, Diagnostics& diag);
 void read_backdrop(const toml::table& root, Level& level, ReadContext& ctx);
 void read_render(const toml::table& root, Level& level, Diagnostics& diag);
-void read_obstacles(const toml::table& root, Level& level, glm::vec3 default_color, ReadContext& ctx);
+void read_obstacles(const toml::table& root, Level& level, glm::vec3 default_color,
+                    ReadContext& ctx);
 void read_camera_path(const toml::table& root, Level& level, ReadContext& ctx);
 
 // Limits shared by several readers (world units unless named otherwise).

@@ -7,11 +7,15 @@ namespace bz::level {
 
 namespace {
 
-char lower(char c) { return (c >= 'A' && c <= 'Z') ? static_cast<char>(c - 'A' + 'a') : c; }
+char lower(char c) {
+    return (c >= 'A' && c <= 'Z') ? static_cast<char>(c - 'A' + 'a') : c;
+}
 
 // Typos get long words wrong in more places than short ones, but a one-letter key suggesting
 // any other one-letter key would be noise.
-std::size_t max_edits(std::size_t length) { return std::max<std::size_t>(1, length / 3); }
+std::size_t max_edits(std::size_t length) {
+    return std::max<std::size_t>(1, length / 3);
+}
 
 }  // namespace
 

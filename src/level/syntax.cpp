@@ -82,8 +82,9 @@ Blanked blank_statement(std::string& text, int line) {
     if (error_line == std::string::npos || error_line >= text.size()) return {};
     const std::size_t start = statement_start(text, error_line);
     std::size_t pos = start;
-    int current = line - static_cast<int>(std::count(text.begin() + static_cast<std::ptrdiff_t>(pos),
-                                                     text.begin() + static_cast<std::ptrdiff_t>(error_line), '\n'));
+    int current = line - static_cast<int>(std::count(
+                             text.begin() + static_cast<std::ptrdiff_t>(pos),
+                             text.begin() + static_cast<std::ptrdiff_t>(error_line), '\n'));
     ScanState own;
     for (;;) {
         std::size_t end = text.find('\n', pos);

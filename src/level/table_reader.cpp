@@ -16,21 +16,32 @@ void Diagnostics::error(const SourcePos& pos, std::string message) {
 }
 
 SourcePos Diagnostics::at(const toml::source_region& where) const {
-    return SourcePos{file_, static_cast<int>(where.begin.line), static_cast<int>(where.begin.column)};
+    return SourcePos{file_, static_cast<int>(where.begin.line),
+                     static_cast<int>(where.begin.column)};
 }
 
 std::string_view type_name(const toml::node& node) {
     switch (node.type()) {
-        case toml::node_type::string: return "a string";
-        case toml::node_type::integer: return "an integer";
-        case toml::node_type::floating_point: return "a number";
-        case toml::node_type::boolean: return "a boolean";
-        case toml::node_type::array: return "an array";
-        case toml::node_type::table: return "a table";
-        case toml::node_type::date: return "a date";
-        case toml::node_type::time: return "a time";
-        case toml::node_type::date_time: return "a date-time";
-        case toml::node_type::none: break;
+        case toml::node_type::string:
+            return "a string";
+        case toml::node_type::integer:
+            return "an integer";
+        case toml::node_type::floating_point:
+            return "a number";
+        case toml::node_type::boolean:
+            return "a boolean";
+        case toml::node_type::array:
+            return "an array";
+        case toml::node_type::table:
+            return "a table";
+        case toml::node_type::date:
+            return "a date";
+        case toml::node_type::time:
+            return "a time";
+        case toml::node_type::date_time:
+            return "a date-time";
+        case toml::node_type::none:
+            break;
     }
     return "nothing";
 }
@@ -54,17 +65,19 @@ std::optional<double> read_number(const toml::node& node, std::string_view name,
     } else if (const auto* f = node.as_floating_point()) {
         value = f->get();
     } else {
-        diag.error(node.source(), std::string(name) + " must be a number, not " +
-                                      std::string(type_name(node)));
+        diag.error(node.source(),
+                   std::string(name) + " must be a number, not " + std::string(type_name(node)));
         return std::nullopt;
     }
     if (!std::isfinite(value)) {
-        diag.error(node.source(), std::string(name) + " must be a finite number, not " + number_text(value));
+        diag.error(node.source(),
+                   std::string(name) + " must be a finite number, not " + number_text(value));
         return std::nullopt;
     }
     if (value < range.min || value > range.max) {
         diag.error(node.source(), std::string(name) + " must be between " + number_text(range.min) +
-                                      " and " + number_text(range.max) + ", not " + number_text(value));
+                                      " and " + number_text(range.max) + ", not " +
+                                      number_text(value));
         return std::nullopt;
     }
     return value;
@@ -95,7 +108,9 @@ TableReader::TableReader(const toml::table& table, std::string what,
     }
 }
 
-SourcePos TableReader::where() const { return diag_.at(table_.source()); }
+SourcePos TableReader::where() const {
+    return diag_.at(table_.source());
+}
 
 void TableReader::missing(std::string_view key) {
     diag_.error(where(), what_ + " needs the key '" + std::string(key) + "'");
@@ -114,7 +129,8 @@ std::optional<std::int64_t> TableReader::integer(std::string_view key, std::int6
     const std::string name = "'" + std::string(key) + "'";
     const auto* i = node->as_integer();
     if (!i) {
-        diag_.error(node->source(), name + " must be a whole number, not " + std::string(type_name(*node)));
+        diag_.error(node->source(),
+                    name + " must be a whole number, not " + std::string(type_name(*node)));
         return std::nullopt;
     }
     if (i->get() < min || i->get() > max) {
@@ -140,7 +156,8 @@ std::optional<std::string> TableReader::text(std::string_view key, std::size_t m
     const std::string name = "'" + std::string(key) + "'";
     const auto* s = node->as_string();
     if (!s) {
-        diag_.error(node->source(), name + " must be a string, not " + std::string(type_name(*node)));
+        diag_.error(node->source(),
+                    name + " must be a string, not " + std::string(type_name(*node)));
         return std::nullopt;
     }
     const std::string& value = s->get();
@@ -148,14 +165,16 @@ std::optional<std::string> TableReader::text(std::string_view key, std::size_t m
     for (const char ch : value) {
         const auto c = static_cast<unsigned char>(ch);
         if (c < 0x20 || c == 0x7f) {
-            diag_.error(node->source(), name + " must not contain control characters (tabs, newlines)");
+            diag_.error(node->source(),
+                        name + " must not contain control characters (tabs, newlines)");
             return std::nullopt;
         }
         if ((c & 0xc0) != 0x80) ++chars;
     }
     if (chars > max_chars) {
         diag_.error(node->source(), name + " is " + std::to_string(chars) +
-                                        " characters long; the limit is " + std::to_string(max_chars));
+                                        " characters long; the limit is " +
+                                        std::to_string(max_chars));
         return std::nullopt;
     }
     return value;
@@ -168,7 +187,8 @@ std::optional<std::string> TableReader::choice(std::string_view key,
     const std::string name = "'" + std::string(key) + "'";
     const auto* s = node->as_string();
     if (!s) {
-        diag_.error(node->source(), name + " must be a string, not " + std::string(type_name(*node)));
+        diag_.error(node->source(),
+                    name + " must be a string, not " + std::string(type_name(*node)));
         return std::nullopt;
     }
     for (const auto v : values) {
@@ -181,7 +201,8 @@ std::optional<std::string> TableReader::choice(std::string_view key,
     return std::nullopt;
 }
 
-std::optional<glm::dvec3> TableReader::vec3(std::string_view key, const std::array<Range, 3>& ranges) {
+std::optional<glm::dvec3> TableReader::vec3(std::string_view key,
+                                            const std::array<Range, 3>& ranges) {
     const toml::node* node = get(key);
     if (!node) return std::nullopt;
     const std::string name = "'" + std::string(key) + "'";
@@ -196,7 +217,8 @@ std::optional<glm::dvec3> TableReader::vec3(std::string_view key, const std::arr
     glm::dvec3 out{0.0};
     bool ok = true;
     for (std::size_t i = 0; i < 3; ++i) {
-        const auto v = read_number(*a->get(i), name + " " + std::string(kAxes[i]), ranges[i], diag_);
+        const auto v =
+            read_number(*a->get(i), name + " " + std::string(kAxes[i]), ranges[i], diag_);
         if (v) out[static_cast<glm::length_t>(i)] = *v;
         ok = ok && v.has_value();
     }
@@ -228,7 +250,8 @@ std::optional<glm::vec3> TableReader::color(std::string_view key) {
         bool ok = v.size() == 7 && v[0] == '#';
         for (std::size_t i = 1; ok && i < 7; ++i) ok = hex_digit(v[i]) >= 0;
         if (!ok) {
-            diag_.error(node->source(), name + " must look like \"#33ff66\" (six hex digits), not " + quote(v));
+            diag_.error(node->source(),
+                        name + " must look like \"#33ff66\" (six hex digits), not " + quote(v));
             return std::nullopt;
         }
         glm::vec3 out;
@@ -241,16 +264,18 @@ std::optional<glm::vec3> TableReader::color(std::string_view key) {
     }
     const auto* a = node->as_array();
     if (!a || a->size() != 3) {
-        diag_.error(node->source(), name + " must be \"#rrggbb\" or an array of 3 numbers [r, g, b], not " +
-                                        (a ? "an array of " + std::to_string(a->size())
-                                           : std::string(type_name(*node))));
+        diag_.error(
+            node->source(),
+            name + " must be \"#rrggbb\" or an array of 3 numbers [r, g, b], not " +
+                (a ? "an array of " + std::to_string(a->size()) : std::string(type_name(*node))));
         return std::nullopt;
     }
     constexpr std::array<std::string_view, 3> kChannels = {"red", "green", "blue"};
     glm::vec3 out{0.0f};
     bool ok = true;
     for (std::size_t i = 0; i < 3; ++i) {
-        const auto v = read_number(*a->get(i), name + " " + std::string(kChannels[i]), {0.0, 1.0}, diag_);
+        const auto v =
+            read_number(*a->get(i), name + " " + std::string(kChannels[i]), {0.0, 1.0}, diag_);
         if (v) out[static_cast<glm::length_t>(i)] = static_cast<float>(*v);
         ok = ok && v.has_value();
     }

@@ -2,16 +2,16 @@
 // Typed, range-checked reads of one TOML table's keys. Every problem becomes a Diagnostic at
 // the exact key or value; a bad or missing value reads as "no value" so validation goes on and
 // the file's other errors are found in the same pass.
+#include <toml++/toml.h>
+
 #include <array>
 #include <cstdint>
+#include <glm/glm.hpp>
 #include <optional>
 #include <span>
 #include <string>
 #include <string_view>
 #include <vector>
-
-#include <glm/glm.hpp>
-#include <toml++/toml.h>
 
 #include "level/diagnostic.h"
 
@@ -19,17 +19,20 @@ namespace bz::level {
 
 // Collects the errors of one file.
 class Diagnostics {
-public:
-    Diagnostics(std::string file, std::size_t max_errors) : file_(std::move(file)), max_(max_errors) {}
+  public:
+    Diagnostics(std::string file, std::size_t max_errors)
+        : file_(std::move(file)), max_(max_errors) {}
     void error(const SourcePos& pos, std::string message);
-    void error(const toml::source_region& where, std::string message) { error(at(where), std::move(message)); }
+    void error(const toml::source_region& where, std::string message) {
+        error(at(where), std::move(message));
+    }
     SourcePos at(const toml::source_region& where) const;
     const std::string& file() const { return file_; }
     bool full() const { return errors_.size() >= max_; }
     std::vector<Diagnostic> take() { return std::move(errors_); }
     bool empty() const { return errors_.empty(); }
 
-private:
+  private:
     std::string file_;
     std::size_t max_;
     std::vector<Diagnostic> errors_;
@@ -46,12 +49,13 @@ std::string_view type_name(const toml::node& node);
 std::string number_text(double value);
 
 class TableReader {
-public:
+  public:
     // `what` names the table in messages ("[field]", "obstacle 3"). Keys not in `allowed`
     // are reported at once, with a suggestion. A key from `top_level` found here was most
     // likely written below a [table] header by mistake, and the message says so.
-    TableReader(const toml::table& table, std::string what, std::span<const std::string_view> allowed,
-                Diagnostics& diagnostics, std::span<const std::string_view> top_level = {});
+    TableReader(const toml::table& table, std::string what,
+                std::span<const std::string_view> allowed, Diagnostics& diagnostics,
+                std::span<const std::string_view> top_level = {});
 
     const toml::node* get(std::string_view key) const { return table_.get(key); }
     bool has(std::string_view key) const { return table_.contains(key); }
@@ -67,7 +71,8 @@ public:
     // At most max_chars characters; no control characters.
     std::optional<std::string> text(std::string_view key, std::size_t max_chars);
     // One of `values`, with a suggestion when it is close to one.
-    std::optional<std::string> choice(std::string_view key, std::span<const std::string_view> values);
+    std::optional<std::string> choice(std::string_view key,
+                                      std::span<const std::string_view> values);
     // [x, y, z] with a range per component.
     std::optional<glm::dvec3> vec3(std::string_view key, const std::array<Range, 3>& ranges);
     // "#rrggbb" (sRGB, as colour pickers give it) or [r, g, b] (linear, each 0..1).
@@ -75,7 +80,7 @@ public:
 
     Diagnostics& diagnostics() { return diag_; }
 
-private:
+  private:
     const toml::table& table_;
     std::string what_;
     Diagnostics& diag_;

@@ -111,8 +111,8 @@ std::optional<DeepKey> find_deep_key(std::string_view text, int max_dots) {
         const char c = text[i];
         const bool in_code = state.in == ScanState::In::code;
         if (in_code) {
-            if (c == '=' || c == ',' || c == '\n' || c == '[' || c == ']' || c == '{' ||
-                c == '}' || c == '#') {
+            if (c == '=' || c == ',' || c == '\n' || c == '[' || c == ']' || c == '{' || c == '}' ||
+                c == '#') {
                 dots = 0;
                 stretch_start = i + 1;
             } else if (c == '.') {
@@ -144,13 +144,15 @@ std::optional<UnsafeChar> find_unsafe_char(std::string_view text) {
                 }
                 skipping = false;
                 if (!ascii) {
-                    return UnsafeChar{i, "non-ASCII character right after a line-ending backslash "
-                                         "in a multi-line string (put it before the backslash)"};
+                    return UnsafeChar{i,
+                                      "non-ASCII character right after a line-ending backslash "
+                                      "in a multi-line string (put it before the backslash)"};
                 }
             } else if (state.escaped) {
                 if (!ascii) {
-                    return UnsafeChar{i, "non-ASCII character after a backslash in a string "
-                                         "(not an escape sequence)"};
+                    return UnsafeChar{i,
+                                      "non-ASCII character after a backslash in a string "
+                                      "(not an escape sequence)"};
                 }
                 if (c == ' ' || c == '\t' || c == '\r' || c == '\n') {
                     state.escaped = false;

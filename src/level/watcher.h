@@ -13,7 +13,7 @@
 namespace bz::level {
 
 class LevelWatcher {
-public:
+  public:
     // Loads the file at once; current() stays empty if that first load fails.
     explicit LevelWatcher(std::filesystem::path file, LoadOptions options = {});
 
@@ -33,7 +33,7 @@ public:
     // The files whose changes trigger a reload.
     std::vector<std::filesystem::path> watched() const;
 
-private:
+  private:
     struct Stamp {
         std::filesystem::path path;
         bool exists = false;

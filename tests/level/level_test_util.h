@@ -15,7 +15,7 @@
 namespace bz::level::test {
 
 class ScratchDir {
-public:
+  public:
     ScratchDir() {
         const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
         std::string name = "bz_level_";
@@ -44,7 +44,7 @@ public:
         return p;
     }
 
-private:
+  private:
     std::filesystem::path path_;
 };
 
@@ -60,15 +60,17 @@ inline ::testing::AssertionResult has_one_error(const LoadResult& result, int li
     std::string all;
     for (const auto& e : result.errors) all += "\n  " + format(e);
     if (result.errors.size() != 1) {
-        return ::testing::AssertionFailure() << "expected 1 error, got " << result.errors.size() << all;
+        return ::testing::AssertionFailure()
+               << "expected 1 error, got " << result.errors.size() << all;
     }
     const Diagnostic& d = result.errors.front();
     if (d.pos.line != line || d.pos.column != column) {
-        return ::testing::AssertionFailure() << "expected the error at " << line << ":" << column << all;
+        return ::testing::AssertionFailure()
+               << "expected the error at " << line << ":" << column << all;
     }
     if (d.message.find(fragment) == std::string::npos) {
-        return ::testing::AssertionFailure() << "expected the message to contain '" << fragment
-                                             << "'" << all;
+        return ::testing::AssertionFailure()
+               << "expected the message to contain '" << fragment << "'" << all;
     }
     if (result.level) return ::testing::AssertionFailure() << "a level came back despite the error";
     return ::testing::AssertionSuccess();

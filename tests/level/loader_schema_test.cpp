@@ -135,8 +135,9 @@ target = [0, 0, 0]
 }
 
 TEST(LoaderSchema, HexColourIsConvertedFromSrgb) {
-    const auto r = load(level_text("[[obstacle]]\nkind = \"cube\"\nposition = [50, 0, 0]\n"
-                                   "color = \"#808080\"\n"));
+    const auto r =
+        load(level_text("[[obstacle]]\nkind = \"cube\"\nposition = [50, 0, 0]\n"
+                        "color = \"#808080\"\n"));
     ASSERT_TRUE(r.ok()) << format(r.errors.at(0));
     EXPECT_NEAR(r.level->obstacles[0].color.r, 0.2158605f, 1e-5f);
 }
@@ -152,14 +153,17 @@ TEST(LoaderSchema, UnknownTableSuggestsTheClosest) {
 }
 
 TEST(LoaderSchema, UnknownKeyInObstacleSuggestsTheClosest) {
-    const auto r = load(level_text("[[obstacle]]\nkind = \"cube\"\nposition = [50, 0, 0]\nheadng = 3\n"));
-    EXPECT_TRUE(has_one_error(r, 6, 1, "unknown key 'headng' in obstacle 1; did you mean 'heading'?"));
+    const auto r =
+        load(level_text("[[obstacle]]\nkind = \"cube\"\nposition = [50, 0, 0]\nheadng = 3\n"));
+    EXPECT_TRUE(
+        has_one_error(r, 6, 1, "unknown key 'headng' in obstacle 1; did you mean 'heading'?"));
 }
 
 TEST(LoaderSchema, TopLevelKeyBelowATableHeaderIsExplained) {
     const auto r = load(level_text("[render]\nstyle = \"arcade\"\nauthor = \"me\"\n"));
-    EXPECT_TRUE(has_one_error(r, 5, 1, "unknown key 'author' in [render]; 'author' belongs at the top "
-                                       "level: move it above the first [table] header"));
+    EXPECT_TRUE(has_one_error(r, 5, 1,
+                              "unknown key 'author' in [render]; 'author' belongs at the top "
+                              "level: move it above the first [table] header"));
 }
 
 TEST(LoaderSchema, UnknownKeyFarFromAllGetsNoSuggestion) {
@@ -179,8 +183,9 @@ TEST(LoaderSchema, WrongTypes) {
                               "'field' must be a table ([field]), not an integer"));
     EXPECT_TRUE(has_one_error(load(level_text("[obstacle]\nkind = \"cube\"\n")), 3, 1,
                               "'obstacle' must be a list of tables ([[obstacle]]), not a table"));
-    EXPECT_TRUE(has_one_error(load(level_text("[player]\nposition = [1, 2]\n")), 4, 12,
-                              "'position' must be an array of 3 numbers [x, y, z], not an array of 2"));
+    EXPECT_TRUE(
+        has_one_error(load(level_text("[player]\nposition = [1, 2]\n")), 4, 12,
+                      "'position' must be an array of 3 numbers [x, y, z], not an array of 2"));
     EXPECT_TRUE(has_one_error(load(level_text("[player]\nposition = [1, \"a\", 2]\n")), 4, 16,
                               "'position' y must be a number, not a string"));
     EXPECT_TRUE(has_one_error(load(level_text("name2 = 1\n")), 3, 1, "unknown key 'name2'"));
@@ -231,8 +236,9 @@ TEST(LoaderSchema, MissingRequiredKeysAreReportedAtTheTable) {
 }
 
 TEST(LoaderSchema, ObstacleOverlappingThePlayerStart) {
-    const auto r = load(level_text("[player]\nposition = [10, 0, 10]\n"
-                                   "[[obstacle]]\nkind = \"cube\"\nposition = [14, 0, 10]\n"));
+    const auto r =
+        load(level_text("[player]\nposition = [10, 0, 10]\n"
+                        "[[obstacle]]\nkind = \"cube\"\nposition = [14, 0, 10]\n"));
     EXPECT_TRUE(has_one_error(r, 7, 12, "obstacle 1 (cube) overlaps the player start at (10, 10)"));
 }
 
@@ -246,8 +252,9 @@ TEST(LoaderSchema, OverlapHonoursRotationScaleAndWrap) {
     EXPECT_TRUE(load(level_text(cube)).ok());
     EXPECT_FALSE(load(level_text(cube + "scale = 4\n")).ok());
     // Across the edge of a wrapping field the start is 2 units from a cube at x = 199.
-    const std::string edge = "[player]\nposition = [-199, 0, 0]\n"
-                             "[[obstacle]]\nkind = \"cube\"\nposition = [199, 0, 0]\n";
+    const std::string edge =
+        "[player]\nposition = [-199, 0, 0]\n"
+        "[[obstacle]]\nkind = \"cube\"\nposition = [199, 0, 0]\n";
     EXPECT_FALSE(load(level_text(edge)).ok());
     EXPECT_TRUE(load(level_text("[field]\nwrap = false\n" + edge)).ok());
 }
@@ -266,9 +273,11 @@ TEST(LoaderSchema, MissingOrLateVersion) {
                               "'version' must be the first key in the file"));
     const auto empty = load("");
     ASSERT_EQ(empty.errors.size(), 2u);
-    EXPECT_EQ(format(empty.errors[0]),
-              "levels/test.toml:1:1: error: the file must start with the format version: version = 1");
-    EXPECT_EQ(format(empty.errors[1]), "levels/test.toml:1:1: error: the top level needs the key 'name'");
+    EXPECT_EQ(
+        format(empty.errors[0]),
+        "levels/test.toml:1:1: error: the file must start with the format version: version = 1");
+    EXPECT_EQ(format(empty.errors[1]),
+              "levels/test.toml:1:1: error: the top level needs the key 'name'");
 }
 
 TEST(LoaderSchema, WrongVersionStopsFurtherChecks) {
@@ -278,9 +287,10 @@ TEST(LoaderSchema, WrongVersionStopsFurtherChecks) {
 }
 
 TEST(LoaderSchema, ReportsAllErrorsOfAFileInOrder) {
-    const auto r = load(level_text("[field]\nsize = nan\nwrapp = true\n"
-                                   "[render]\nstyle = \"arcad\"\n"
-                                   "[[obstacle]]\nkind = \"cube\"\nposition = [0, 0, 1]\n"));
+    const auto r =
+        load(level_text("[field]\nsize = nan\nwrapp = true\n"
+                        "[render]\nstyle = \"arcad\"\n"
+                        "[[obstacle]]\nkind = \"cube\"\nposition = [0, 0, 1]\n"));
     ASSERT_EQ(r.errors.size(), 4u);
     EXPECT_EQ(r.errors[0].pos.line, 4);
     EXPECT_EQ(r.errors[1].pos.line, 5);
@@ -293,8 +303,8 @@ TEST(LoaderSchema, ReportsAllErrorsOfAFileInOrder) {
 TEST(LoaderSchema, EnemyTypes) {
     EXPECT_TRUE(has_one_error(load(level_text("[enemies]\ntypes = [\"slow_tank\", \"sacuer\"]\n")),
                               4, 23, "unknown enemy type 'sacuer'; did you mean 'saucer'?"));
-    EXPECT_TRUE(has_one_error(load(level_text("[enemies]\ntypes = [\"saucer\", \"saucer\"]\n")),
-                              4, 20, "listed twice"));
+    EXPECT_TRUE(has_one_error(load(level_text("[enemies]\ntypes = [\"saucer\", \"saucer\"]\n")), 4,
+                              20, "listed twice"));
     const auto none = load(level_text("[enemies]\ntypes = []\n"));
     ASSERT_TRUE(none.ok());
     EXPECT_FALSE(none.level->enemies.slow_tank || none.level->enemies.super_tank ||
@@ -320,12 +330,13 @@ TEST(LoaderSchema, SpawnDistancesMustBeOrdered) {
 }
 
 TEST(LoaderSchema, MountainsMustIncreaseInAzimuth) {
-    EXPECT_TRUE(has_one_error(load(level_text("[backdrop]\nmountains = [[0, 1], [50, 2], [40, 1]]\n")),
-                              4, 32, "mountain azimuths must increase: 40 follows 50"));
+    EXPECT_TRUE(
+        has_one_error(load(level_text("[backdrop]\nmountains = [[0, 1], [50, 2], [40, 1]]\n")), 4,
+                      32, "mountain azimuths must increase: 40 follows 50"));
     EXPECT_TRUE(has_one_error(load(level_text("[backdrop]\nmountains = [[0, 1], [50]]\n")), 4, 22,
                               "each mountain point must be [azimuth, height]"));
-    EXPECT_TRUE(has_one_error(load(level_text("[backdrop]\nmountains = [[0, 45], [10, 1]]\n")), 4, 18,
-                              "mountain height must be between 0 and 30, not 45"));
+    EXPECT_TRUE(has_one_error(load(level_text("[backdrop]\nmountains = [[0, 45], [10, 1]]\n")), 4,
+                              18, "mountain height must be between 0 and 30, not 45"));
     EXPECT_TRUE(has_one_error(load(level_text("[backdrop]\nmountains = []\n")), 4, 13,
                               "'mountains' needs at least 2 points; for a flat horizon"));
     const auto flat = load(level_text("[backdrop]\nmountains = [[0, 0], [360, 0]]\n"));
@@ -348,14 +359,16 @@ TEST(LoaderSchema, CameraKeys) {
 }
 
 TEST(LoaderSchema, StringLimits) {
-    EXPECT_TRUE(has_one_error(load("version = 1\nname = \"\"\n"), 2, 8, "'name' must not be empty"));
+    EXPECT_TRUE(
+        has_one_error(load("version = 1\nname = \"\"\n"), 2, 8, "'name' must not be empty"));
     EXPECT_TRUE(has_one_error(load("version = 1\nname = \"" + std::string(65, 'x') + "\"\n"), 2, 8,
                               "is 65 characters long; the limit is 64"));
     EXPECT_TRUE(has_one_error(load("version = 1\nname = \"a\\tb\"\n"), 2, 8, "control characters"));
 }
 
 TEST(LoaderSchema, ModelOnlyKeysOnBuiltinKinds) {
-    const auto r = load(level_text("[[obstacle]]\nkind = \"cube\"\nposition = [50, 0, 0]\nradius = 4\n"));
+    const auto r =
+        load(level_text("[[obstacle]]\nkind = \"cube\"\nposition = [50, 0, 0]\nradius = 4\n"));
     EXPECT_TRUE(has_one_error(r, 6, 10, "'radius' applies only to kind = \"model\""));
 }
 
@@ -366,7 +379,8 @@ TEST(LoaderSchema, FileSizeCap) {
     const auto r = load(text, options);
     ASSERT_EQ(r.errors.size(), 1u);
     EXPECT_EQ(r.errors[0].pos.line, 0);
-    EXPECT_EQ(format(r.errors[0]), "levels/test.toml: error: file is " + std::to_string(text.size()) +
+    EXPECT_EQ(format(r.errors[0]), "levels/test.toml: error: file is " +
+                                       std::to_string(text.size()) +
                                        " bytes, over the limit of 64");
 }
 
@@ -377,12 +391,17 @@ TEST(LoaderSchema, CountCaps) {
     options.max_mountain_points = 2;
     std::string body = "[backdrop]\nmountains = [[0, 1], [1, 1], [2, 1]]\n";  // line 4
     for (int i = 0; i < 3; ++i) body += "[[obstacle]]\nkind = \"cube\"\nposition = [50, 0, 0]\n";
-    for (int i = 0; i < 2; ++i) body += "[[camera_key]]\ntime = " + std::to_string(i) + "\neye = [0,1,0]\ntarget = [1,1,1]\n";
+    for (int i = 0; i < 2; ++i)
+        body +=
+            "[[camera_key]]\ntime = " + std::to_string(i) + "\neye = [0,1,0]\ntarget = [1,1,1]\n";
     const auto r = load(level_text(body), options);
     ASSERT_EQ(r.errors.size(), 3u);
-    EXPECT_EQ(format(r.errors[0]), "levels/test.toml:4:13: error: too many mountain points: 3 (the limit is 2)");
-    EXPECT_EQ(format(r.errors[1]), "levels/test.toml:5:1: error: too many obstacles: 3 (the limit is 2)");
-    EXPECT_EQ(format(r.errors[2]), "levels/test.toml:14:1: error: too many camera keys: 2 (the limit is 1)");
+    EXPECT_EQ(format(r.errors[0]),
+              "levels/test.toml:4:13: error: too many mountain points: 3 (the limit is 2)");
+    EXPECT_EQ(format(r.errors[1]),
+              "levels/test.toml:5:1: error: too many obstacles: 3 (the limit is 2)");
+    EXPECT_EQ(format(r.errors[2]),
+              "levels/test.toml:14:1: error: too many camera keys: 2 (the limit is 1)");
 }
 
 TEST(LoaderSchema, ErrorFloodIsCapped) {
@@ -396,8 +415,9 @@ TEST(LoaderSchema, ErrorFloodIsCapped) {
 }
 
 TEST(LoaderSchema, InlineTableObstaclesWork) {
-    const auto r = load(level_text("obstacle = [\n  { kind = \"cube\", position = [50, 0, 0] },\n"
-                                   "  { kind = \"pyramid\", position = [-50, 0, 0], heading = 30 },\n]\n"));
+    const auto r =
+        load(level_text("obstacle = [\n  { kind = \"cube\", position = [50, 0, 0] },\n"
+                        "  { kind = \"pyramid\", position = [-50, 0, 0], heading = 30 },\n]\n"));
     ASSERT_TRUE(r.ok()) << format(r.errors.at(0));
     ASSERT_EQ(r.level->obstacles.size(), 2u);
     EXPECT_EQ(r.level->obstacles[1].pos.line, 5);

@@ -42,13 +42,14 @@ TEST(LoaderSyntax, InvalidUtf8) {
 }
 
 TEST(LoaderSyntax, ReportsEverySyntaxErrorNotJustTheFirst) {
-    const auto r = load(level_text("[field]\n"
-                                   "size = 40O\n"     // line 4: stray letter
-                                   "wrap = tru\n"     // line 5: bad boolean
-                                   "[player]\n"
-                                   "heading = = 3\n"  // line 7
-                                   "[render]\n"
-                                   "style = \"arcade\"\n"));
+    const auto r =
+        load(level_text("[field]\n"
+                        "size = 40O\n"  // line 4: stray letter
+                        "wrap = tru\n"  // line 5: bad boolean
+                        "[player]\n"
+                        "heading = = 3\n"  // line 7
+                        "[render]\n"
+                        "style = \"arcade\"\n"));
     ASSERT_EQ(r.errors.size(), 3u);
     EXPECT_EQ(r.errors[0].pos.line, 4);
     EXPECT_EQ(r.errors[0].pos.column, 10);
@@ -59,13 +60,14 @@ TEST(LoaderSyntax, ReportsEverySyntaxErrorNotJustTheFirst) {
 }
 
 TEST(LoaderSyntax, ErrorInsideMultiLineArraySkipsTheWholeValue) {
-    const auto r = load(level_text("[backdrop]\n"
-                                   "mountains = [\n"
-                                   "  [0, 1],\n"
-                                   "  [10, 2] x,\n"  // line 6: error inside the array
-                                   "  [20, 1],\n"
-                                   "]\n"
-                                   "moon = maybe\n"));  // line 9: a second, separate error
+    const auto r =
+        load(level_text("[backdrop]\n"
+                        "mountains = [\n"
+                        "  [0, 1],\n"
+                        "  [10, 2] x,\n"  // line 6: error inside the array
+                        "  [20, 1],\n"
+                        "]\n"
+                        "moon = maybe\n"));  // line 9: a second, separate error
     ASSERT_EQ(r.errors.size(), 2u) << format(r.errors[0]);
     EXPECT_EQ(r.errors[0].pos.line, 6);
     EXPECT_EQ(r.errors[0].pos.column, 11);
@@ -75,8 +77,9 @@ TEST(LoaderSyntax, ErrorInsideMultiLineArraySkipsTheWholeValue) {
 
 TEST(LoaderSyntax, UnclosedArrayDoesNotCascade) {
     // The missing ']' swallows the rest of the file; one error, not one per following line.
-    const auto r = load(level_text("[backdrop]\nmountains = [[0, 1], [10, 2]\nmoon = true\n"
-                                   "[render]\nstyle = \"arcade\"\npreset = \"high\"\n"));
+    const auto r =
+        load(level_text("[backdrop]\nmountains = [[0, 1], [10, 2]\nmoon = true\n"
+                        "[render]\nstyle = \"arcade\"\npreset = \"high\"\n"));
     ASSERT_EQ(r.errors.size(), 1u) << format(r.errors[0]);
     EXPECT_EQ(r.errors[0].pos.line, 5);
 }

@@ -1,10 +1,11 @@
 // Model paths: resolved next to the level file, confined to the level's folder or data/.
+#include "level/model_path.h"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
 
 #include "level/loader.h"
-#include "level/model_path.h"
 #include "level_test_util.h"
 
 namespace bz::level {
@@ -17,7 +18,7 @@ using test::ScratchDir;
 
 // scratch/levels/test.toml with scratch/data as the data root.
 class ModelPaths : public ::testing::Test {
-protected:
+  protected:
     ScratchDir dir;
     LoadResult load_with_model(const std::string& model, const std::string& extra = "") {
         const std::string text = level_text("[[obstacle]]\nkind = \"model\"\nmodel = \"" + model +
@@ -50,7 +51,8 @@ TEST_F(ModelPaths, MayReachIntoData) {
 TEST_F(ModelPaths, DotDotOutOfBothFoldersIsRefused) {
     dir.write("secret.obj", "v 0 0 0\n");
     const auto r = load_with_model("../secret.obj");
-    EXPECT_TRUE(has_one_error(r, 5, 9, "leads outside the level's folder and the project's data/ folder"));
+    EXPECT_TRUE(
+        has_one_error(r, 5, 9, "leads outside the level's folder and the project's data/ folder"));
 }
 
 TEST_F(ModelPaths, DotDotThatStaysInsideIsFine) {
@@ -95,8 +97,9 @@ TEST_F(ModelPaths, DirectoryAndUnknownExtensionAreRefused) {
 }
 
 TEST_F(ModelPaths, ModelKindNeedsAModel) {
-    const fs::path file = dir.write("levels/test.toml", level_text("[[obstacle]]\nkind = \"model\"\n"
-                                                                  "position = [50, 0, 0]\n"));
+    const fs::path file =
+        dir.write("levels/test.toml", level_text("[[obstacle]]\nkind = \"model\"\n"
+                                                 "position = [50, 0, 0]\n"));
     EXPECT_TRUE(has_one_error(load_level_file(file), 3, 1, "obstacle 1 needs the key 'model'"));
 }
 
@@ -116,7 +119,8 @@ TEST(LoadFile, MissingAndOversizedFiles) {
     ScratchDir dir;
     const auto missing = load_level_file(dir.path() / "nope.toml");
     ASSERT_EQ(missing.errors.size(), 1u);
-    EXPECT_EQ(format(missing.errors[0]), (dir.path() / "nope.toml").string() + ": error: file not found");
+    EXPECT_EQ(format(missing.errors[0]),
+              (dir.path() / "nope.toml").string() + ": error: file not found");
     const fs::path big = dir.write("big.toml", std::string(2u << 20, '#'));
     const auto too_big = load_level_file(big);
     ASSERT_EQ(too_big.errors.size(), 1u);

@@ -13,7 +13,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path levels() { return fs::path(BEAMZONE_SOURCE_DIR) / "levels"; }
+fs::path levels() {
+    return fs::path(BEAMZONE_SOURCE_DIR) / "levels";
+}
 
 Level load_shipped(const std::string& name) {
     const LoadResult r = load_level_file(levels() / name);
@@ -38,7 +40,8 @@ TEST(ShippedLevels, DefaultIsTheClassicField) {
     const Level l = load_shipped("classic.toml");
     EXPECT_EQ(l.obstacles.size(), 21u);
     EXPECT_TRUE(l.wrap);
-    EXPECT_TRUE(l.enemies.slow_tank && l.enemies.super_tank && l.enemies.missile && l.enemies.saucer);
+    EXPECT_TRUE(l.enemies.slow_tank && l.enemies.super_tank && l.enemies.missile &&
+                l.enemies.saucer);
 }
 
 TEST(ShippedLevels, StressLevelHasHundredsOfObjectsAndImportedModels) {
@@ -59,7 +62,8 @@ TEST(ShippedLevels, EachHasItsOwnCharacter) {
     EXPECT_FALSE(load_shipped("maze.toml").wrap);
     EXPECT_GE(load_shipped("maze.toml").obstacles.size(), 100u);
     const Level tutorial = load_shipped("tutorial.toml");
-    EXPECT_FALSE(tutorial.enemies.super_tank || tutorial.enemies.missile || tutorial.enemies.saucer);
+    EXPECT_FALSE(tutorial.enemies.super_tank || tutorial.enemies.missile ||
+                 tutorial.enemies.saucer);
     const Level night = load_shipped("volcano_night.toml");
     EXPECT_TRUE(night.backdrop.volcano);
     EXPECT_GE(load_shipped("plains.toml").field_size, 1000.0);

@@ -22,7 +22,8 @@ TEST(TomlGuard, NonAsciiOutsideStringsIsASyntaxError) {
     // U+00DD after a number sent toml++ into __builtin_unreachable() (found by the fuzzer).
     EXPECT_TRUE(has_one_error(load(level_text("[field]\nsize = 1\xc3\x9d\n")), 4, 9,
                               "syntax error: non-ASCII character outside a string or comment"));
-    EXPECT_TRUE(has_one_error(load(level_text("\xc3\x9d = 1\n")), 3, 1, "non-ASCII character outside"));
+    EXPECT_TRUE(
+        has_one_error(load(level_text("\xc3\x9d = 1\n")), 3, 1, "non-ASCII character outside"));
     // A quote glued to a bare value does not start a string: toml++ is still reading the value.
     EXPECT_TRUE(has_one_error(load(level_text("x = 1:*'''\xef\xbb\xa0'''\n")), 3, 11,
                               "non-ASCII character outside"));
@@ -38,8 +39,9 @@ TEST(TomlGuard, NonAsciiAfterABackslashInAMultiLineString) {
 }
 
 TEST(TomlGuard, UnicodeInStringsAndCommentsIsFine) {
-    const auto r = load("version = 1 # \xc3\xa9t\xc3\xa9\nname = \"Zo\xc3\xab's field\"\n"
-                        "author = '''\xe2\x98\x85'''\ndescription = \"\"\"\xc3\x9d and \xc3\x9d\"\"\"\n");
+    const auto r = load(
+        "version = 1 # \xc3\xa9t\xc3\xa9\nname = \"Zo\xc3\xab's field\"\n"
+        "author = '''\xe2\x98\x85'''\ndescription = \"\"\"\xc3\x9d and \xc3\x9d\"\"\"\n");
     ASSERT_TRUE(r.ok()) << format(r.errors.at(0));
     EXPECT_EQ(r.level->name, "Zo\xc3\xab's field");
     EXPECT_EQ(r.level->author, "\xe2\x98\x85");

@@ -1,11 +1,12 @@
 // Hot reload: a broken save keeps the last good level and reports the error with its
 // position; fixing the file brings the new level in.
+#include "level/watcher.h"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
 
 #include "core/file_io.h"
-#include "level/watcher.h"
 #include "level_test_util.h"
 
 namespace bz::level {
@@ -43,7 +44,8 @@ TEST(LevelWatcher, BrokenSaveKeepsTheOldLevelAndReportsTheError) {
     ASSERT_EQ(watcher.errors().size(), 1u);
     EXPECT_EQ(watcher.errors()[0].pos.line, 4);
     EXPECT_EQ(watcher.errors()[0].pos.column, 8);  // the newline after "size = "
-    EXPECT_EQ(format(watcher.errors()[0]).rfind(file.string() + ":4:8: error: syntax error", 0), 0u);
+    EXPECT_EQ(format(watcher.errors()[0]).rfind(file.string() + ":4:8: error: syntax error", 0),
+              0u);
     EXPECT_FALSE(watcher.poll());  // nothing changed since
     EXPECT_EQ(watcher.errors().size(), 1u);
 
@@ -70,7 +72,8 @@ TEST(LevelWatcher, InPlaceWriteOfTheSameSizeIsNoticed) {
 
 TEST(LevelWatcher, ModelFileChangesAndAppearancesTriggerAReload) {
     ScratchDir dir;
-    const std::string body = "[[obstacle]]\nkind = \"model\"\nmodel = \"dish.obj\"\nposition = [50, 0, 0]\n";
+    const std::string body =
+        "[[obstacle]]\nkind = \"model\"\nmodel = \"dish.obj\"\nposition = [50, 0, 0]\n";
     const fs::path file = dir.write("level.toml", named("Models", body));
     LevelWatcher watcher(file, options_for(dir));
     EXPECT_FALSE(watcher.current());
