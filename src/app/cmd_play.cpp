@@ -188,6 +188,17 @@ int cmd_play(Args args) {
             return 1;
         }
         setenv("SDL_VIDEODRIVER", "offscreen", 0);  // a test run: a hidden window is enough
+    } else if (!offscreen_allowed(options)) {
+        // DISPLAY may name a display SDL cannot reach; it then falls back to a driver that
+        // shows nothing, and a game nobody can see would run until killed.
+        const std::string driver = platform::start_video();
+        if (platform::is_invisible_driver(driver)) {
+            std::fprintf(stderr,
+                         "beamzone: no display available (SDL could only start its '%s' video "
+                         "driver); try `beamzone render` for headless images\n",
+                         driver.c_str());
+            return 1;
+        }
     }
 
     Log log(paths.log);

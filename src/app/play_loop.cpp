@@ -230,12 +230,15 @@ class Loop {
         scene::FrameList frame = session_.frame(alpha_, aspect);
         frame.style = config_.style;
         p_.overlay.draw(frame.hud, aspect);
-        renderer_->render(frame, session_.meshes(), 0);
         if (result_.frames + 1 == config_.screenshot_at) screenshot_requested_ = true;
         if (screenshot_requested_) {
+            // From the renderer's own image, not the window: a window system may not have
+            // resized the window's buffer yet (or ever, without a window manager).
             screenshot_requested_ = false;
+            renderer_->render(frame, session_.meshes(), render::Renderer::kOffscreen);
             take_screenshot();
         }
+        renderer_->render(frame, session_.meshes(), 0);
         collect_gl_messages();
         p_.context.swap();
     }

@@ -60,6 +60,16 @@ std::string GlContext::renderer_name() const {
     return r ? r : "unknown";
 }
 
+std::string start_video() {
+    init_video();
+    const char* d = SDL_GetCurrentVideoDriver();
+    return d ? d : "none";
+}
+
+bool is_invisible_driver(const std::string& driver) {
+    return driver == "offscreen" || driver == "dummy" || driver == "evdev";
+}
+
 bool GlContext::is_software() const {
     const std::string r = renderer_name();
     return r.find("llvmpipe") != std::string::npos || r.find("softpipe") != std::string::npos ||

@@ -48,5 +48,11 @@ class GlContext {
 
 // True if a real (non-offscreen, non-dummy) video driver could open a window.
 bool display_available(std::string* why);
+// Starts SDL video (if not yet) and names the driver it chose ("x11", "wayland", "offscreen",
+// ...). SDL falls back to an invisible driver when DISPLAY names a display it cannot reach.
+// Throws UserError when no driver starts.
+std::string start_video();
+// True for SDL's drivers that show nothing on any screen.
+bool is_invisible_driver(const std::string& driver);
 
 }  // namespace bz::platform
