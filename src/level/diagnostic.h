@@ -9,11 +9,11 @@
 namespace bz::level {
 
 struct Diagnostic {
-    SourcePos pos;  // line 0 means "the file as a whole" (missing, unreadable, too large)
+    SourcePos pos;  // problems of the whole file (missing, too large) are at 1:1
     std::string message;
 };
 
-// "file:line:col: error: message", or "file: error: message" when there is no line.
+// "file:line:col: error: message" ("file: error: message" if a diagnostic has line 0).
 std::string format(const Diagnostic& d);
 
 // Makes text from a level file safe to quote inside a one-line message: control characters

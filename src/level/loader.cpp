@@ -73,7 +73,7 @@ LoadResult load_level_string(std::string_view text, const fs::path& file_for_mes
     result.dependencies.push_back(file_for_messages);
     if (text.size() > options.max_file_bytes) {
         result.errors.push_back(
-            {SourcePos{file, 0, 0}, "file is " + std::to_string(text.size()) +
+            {SourcePos{file, 1, 1}, "file is " + std::to_string(text.size()) +
                                         " bytes, over the limit of " +
                                         std::to_string(options.max_file_bytes)});
         return result;
@@ -95,9 +95,9 @@ LoadResult load_level_string(std::string_view text, const fs::path& file_for_mes
         detail::ReadContext ctx{diag, options,
                                 model_roots(file_for_messages.parent_path(), options.data_root),
                                 result.dependencies};
-        detail::read_field(root, level, obstacle_color, diag);
-        detail::read_player(root, level, diag);
-        detail::read_enemies(root, level, diag);
+        detail::read_field(root, level, obstacle_color, ctx);
+        detail::read_player(root, level, ctx);
+        detail::read_enemies(root, level, ctx);
         detail::read_backdrop(root, level, ctx);
         detail::read_render(root, level, diag);
         detail::read_obstacles(root, level, obstacle_color, ctx);
@@ -120,7 +120,9 @@ LoadResult load_level_file(const fs::path& file, const LoadOptions& options) {
         if (why.compare(0, prefix.size(), prefix) == 0) why.erase(0, prefix.size());
         LoadResult result;
         result.dependencies.push_back(file);
-        result.errors.push_back({SourcePos{file.string(), 0, 0}, why});
+        // A problem with the file as a whole is reported at 1:1, so every message has the same
+        // file:line:col shape for editors and scripts that parse them.
+        result.errors.push_back({SourcePos{file.string(), 1, 1}, why});
         return result;
     }
     return load_level_string(text, file, options);

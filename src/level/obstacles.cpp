@@ -59,7 +59,7 @@ void read_obstacles(const toml::table& root, Level& level, glm::vec3 default_col
         table_array(root, "obstacle", ctx.options.max_obstacles, "obstacles", ctx.diag);
     if (!list) return;
     level.obstacles.reserve(list->size());
-    const double half = level.field_size / 2.0;
+    const double half = ctx.position_limit;
     for (std::size_t i = 0; i < list->size(); ++i) {
         const toml::node& item = *list->get(i);
         const std::size_t number = i + 1;
@@ -139,7 +139,7 @@ void read_obstacles(const toml::table& root, Level& level, glm::vec3 default_col
         o.footprint_radius = radius * o.scale;
 
         if (!ok) continue;
-        check_start_clear(level, o, *kind, *position_node, ctx.diag, number);
+        if (ctx.start_known) check_start_clear(level, o, *kind, *position_node, ctx.diag, number);
         level.obstacles.push_back(std::move(o));
     }
 }

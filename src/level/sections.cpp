@@ -63,27 +63,36 @@ const toml::array* table_array(const toml::table& root, std::string_view key, st
 }
 
 void read_field(const toml::table& root, Level& level, glm::vec3& obstacle_color,
-                Diagnostics& diag) {
-    const toml::table* t = section(root, "field", diag);
+                ReadContext& ctx) {
+    ctx.position_limit = level.field_size / 2.0;
+    const toml::table* t = section(root, "field", ctx.diag);
     if (!t) return;
+    Diagnostics& diag = ctx.diag;
     TableReader r(*t, "[field]", kFieldKeys, diag, kRootKeys);
-    if (auto v = r.number("size", {kMinFieldSize, kMaxFieldSize})) level.field_size = *v;
+    if (r.has("size")) {
+        const auto size = r.number("size", {kMinFieldSize, kMaxFieldSize});
+        if (size) level.field_size = *size;
+        ctx.position_limit = size ? *size / 2.0 : kMaxFieldSize / 2.0;
+    }
     if (auto v = r.boolean("wrap")) level.wrap = *v;
     if (auto v = r.color("obstacle_color")) obstacle_color = *v;
 }
 
-void read_player(const toml::table& root, Level& level, Diagnostics& diag) {
-    const toml::table* t = section(root, "player", diag);
+void read_player(const toml::table& root, Level& level, ReadContext& ctx) {
+    const toml::table* t = section(root, "player", ctx.diag);
     if (!t) return;
-    TableReader r(*t, "[player]", kPlayerKeys, diag, kRootKeys);
-    const double half = level.field_size / 2.0;
-    if (auto v = r.vec3("position", {Range{-half, half}, kHeightRange, Range{-half, half}})) {
-        level.player_start = *v;
+    TableReader r(*t, "[player]", kPlayerKeys, ctx.diag, kRootKeys);
+    const double half = ctx.position_limit;
+    if (r.has("position")) {
+        const auto v = r.vec3("position", {Range{-half, half}, kHeightRange, Range{-half, half}});
+        if (v) level.player_start = *v;
+        ctx.start_known = v.has_value();
     }
     if (auto v = r.number("heading", kHeadingRange)) level.player_heading_deg = *v;
 }
 
-void read_enemies(const toml::table& root, Level& level, Diagnostics& diag) {
+void read_enemies(const toml::table& root, Level& level, ReadContext& ctx) {
+    Diagnostics& diag = ctx.diag;
     EnemyRules& e = level.enemies;
     const double half = level.field_size / 2.0;
     // The default spawn ring suits the default field; a small field pulls it in rather than
@@ -133,8 +142,8 @@ void read_enemies(const toml::table& root, Level& level, Diagnostics& diag) {
     if (auto v = r.integer("super_tank_score", 0, kMaxScore))
         e.super_tank_score = static_cast<int>(*v);
     if (auto v = r.integer("missile_score", 0, kMaxScore)) e.missile_score = static_cast<int>(*v);
-    const auto min_d = r.number("spawn_min_distance", {5.0, half});
-    const auto max_d = r.number("spawn_max_distance", {5.0, half});
+    const auto min_d = r.number("spawn_min_distance", {5.0, ctx.position_limit});
+    const auto max_d = r.number("spawn_max_distance", {5.0, ctx.position_limit});
     if (min_d) e.spawn_min_distance = *min_d;
     if (max_d) e.spawn_max_distance = *max_d;
     // A default never contradicts a value the author wrote: it moves out of the way.

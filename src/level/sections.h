@@ -14,11 +14,22 @@
 
 namespace bz::level::detail {
 
+// Limits shared by several readers (world units unless named otherwise).
+inline constexpr Range kHeightRange{-100.0, 1000.0};
+inline constexpr Range kHeadingRange{-360.0, 360.0};
+inline constexpr double kMinFieldSize = 50.0;
+inline constexpr double kMaxFieldSize = 10000.0;
+
 struct ReadContext {
     Diagnostics& diag;
     const LoadOptions& options;
     ModelRoots model_roots;
     std::vector<std::filesystem::path>& dependencies;
+    // Limits that later checks take from earlier sections. When [field] size or the player's
+    // position is itself wrong, checks that depend on it are relaxed instead of piling up
+    // follow-on errors about a value the author never wrote.
+    double position_limit = kMaxFieldSize / 2.0;  // |x|, |z| of anything placed on the field
+    bool start_known = true;
 };
 
 // The sub-table `key` of `root`, or nullptr when it is absent or not a table (reported).
@@ -31,20 +42,13 @@ const toml::array* table_array(const toml::table& root, std::string_view key, st
 // The keys each table allows, for "unknown key" checks and suggestions.
 std::span<const std::string_view> root_keys();
 
-void read_field(const toml::table& root, Level& level, glm::vec3& obstacle_color,
-                Diagnostics& diag);
-void read_player(const toml::table& root, Level& level, Diagnostics& diag);
-void read_enemies(const toml::table& root, Level& level, Diagnostics& diag);
+void read_field(const toml::table& root, Level& level, glm::vec3& obstacle_color, ReadContext& ctx);
+void read_player(const toml::table& root, Level& level, ReadContext& ctx);
+void read_enemies(const toml::table& root, Level& level, ReadContext& ctx);
 void read_backdrop(const toml::table& root, Level& level, ReadContext& ctx);
 void read_render(const toml::table& root, Level& level, Diagnostics& diag);
 void read_obstacles(const toml::table& root, Level& level, glm::vec3 default_color,
                     ReadContext& ctx);
 void read_camera_path(const toml::table& root, Level& level, ReadContext& ctx);
-
-// Limits shared by several readers (world units unless named otherwise).
-inline constexpr Range kHeightRange{-100.0, 1000.0};
-inline constexpr Range kHeadingRange{-360.0, 360.0};
-inline constexpr double kMinFieldSize = 50.0;
-inline constexpr double kMaxFieldSize = 10000.0;
 
 }  // namespace bz::level::detail

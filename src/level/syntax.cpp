@@ -169,8 +169,9 @@ SyntaxResult parse_toml(std::string_view text, const std::string& file, std::siz
             if (result.errors.empty()) result.table = std::move(table);
             return result;
         } catch (const toml::parse_error& e) {
-            const int line = static_cast<int>(e.source().begin.line);
-            const int column = static_cast<int>(e.source().begin.column);
+            // toml++ counts from 1; the clamp keeps "file:line:col" well-formed regardless.
+            const int line = std::max(1, static_cast<int>(e.source().begin.line));
+            const int column = std::max(1, static_cast<int>(e.source().begin.column));
             result.errors.push_back(
                 {SourcePos{file, line, column}, plain_message(e.description())});
             if (result.errors.size() >= max_errors || line <= blanked_through) return result;

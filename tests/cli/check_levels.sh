@@ -79,7 +79,7 @@ echo "ok: mixed -> exit 1"
 # A missing file is an error of that file, not a usage error.
 run "$work/nope.toml"
 [ $rc -eq 1 ] || fail "missing file: exit $rc"
-grep -qx "$work/nope.toml: error: file not found" "$work/err" || fail "missing file message"
+grep -qx "$work/nope.toml:1:1: error: file not found" "$work/err" || fail "missing file message"
 echo "ok: missing file -> exit 1"
 
 # --quiet prints nothing for clean files.

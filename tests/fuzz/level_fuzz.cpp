@@ -21,7 +21,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     for (const auto& e : result.errors) {
         const std::string line = bz::level::format(e);
         if (line.find('\n') != std::string::npos || e.message.empty()) __builtin_trap();
-        if (e.pos.line < 0 || e.pos.column < 0) __builtin_trap();
+        if (e.pos.line < 1 || e.pos.column < 1) __builtin_trap();  // always file:line:col
     }
     return 0;
 }

@@ -120,7 +120,7 @@ TEST(LoadFile, MissingAndOversizedFiles) {
     const auto missing = load_level_file(dir.path() / "nope.toml");
     ASSERT_EQ(missing.errors.size(), 1u);
     EXPECT_EQ(format(missing.errors[0]),
-              (dir.path() / "nope.toml").string() + ": error: file not found");
+              (dir.path() / "nope.toml").string() + ":1:1: error: file not found");
     const fs::path big = dir.write("big.toml", std::string(2u << 20, '#'));
     const auto too_big = load_level_file(big);
     ASSERT_EQ(too_big.errors.size(), 1u);
