@@ -103,9 +103,14 @@ struct Play {
                      " is not available; using " + std::string(platform::vsync_name(vsync)));
         }
 
-        const render::RenderSettings look = render_settings(settings.preset, lvl);
-        auto make_renderer = [&look](int w, int h) {
-            return std::make_unique<render::Renderer>(look, w, h, gl::TimingMethod::off);
+        // Called again after a hot reload rebuilt the game, so the level's [render] overrides
+        // follow its edits too.
+        const level::LevelWatcher* watched = watcher.get();
+        auto make_renderer = [&settings, watched](int w, int h) {
+            const level::Level* current =
+                watched && watched->current() ? &*watched->current() : nullptr;
+            return std::make_unique<render::Renderer>(render_settings(settings.preset, current), w,
+                                                      h, gl::TimingMethod::off);
         };
 
         platform::Audio audio(log, settings.volume, settings.mute);
