@@ -66,6 +66,10 @@ struct RenderSettings {
     std::optional<double> line_width_px;
     std::optional<double> crease_angle_deg;
     std::optional<double> bloom_strength;
+    // Whether the file set style / preset (else the defaults above): `play` lets a level's
+    // own choice win over the player's settings file, but not a default.
+    bool style_given = false;
+    bool preset_given = false;
 };
 
 struct Level {

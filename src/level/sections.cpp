@@ -163,8 +163,14 @@ void read_render(const toml::table& root, Level& level, Diagnostics& diag) {
     if (!t) return;
     TableReader r(*t, "[render]", kRenderKeys, diag, kRootKeys);
     RenderSettings& s = level.render;
-    if (auto v = r.choice("style", kStyles)) s.style = *v;
-    if (auto v = r.choice("preset", kPresets)) s.preset = *v;
+    if (auto v = r.choice("style", kStyles)) {
+        s.style = *v;
+        s.style_given = true;
+    }
+    if (auto v = r.choice("preset", kPresets)) {
+        s.preset = *v;
+        s.preset_given = true;
+    }
     if (auto v = r.number("line_width", {0.5, 16.0})) s.line_width_px = *v;
     if (auto v = r.number("crease_angle", {0.0, 180.0})) s.crease_angle_deg = *v;
     if (auto v = r.number("bloom_strength", {0.0, 4.0})) s.bloom_strength = *v;
