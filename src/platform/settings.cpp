@@ -201,10 +201,15 @@ SettingsLoad parse_settings(std::string_view text, const std::string& source,
     if (const int i = r.choice(t, "vsync", vsyncs, vsync_name(s.vsync)); i >= 0) {
         parse_vsync(vsyncs[i], &s.vsync);
     }
-    if (const int i = r.choice(t, "preset", presets, s.preset); i >= 0)
+    if (const int i = r.choice(t, "preset", presets, s.preset); i >= 0) {
         s.preset = presets[static_cast<std::size_t>(i)];
+        out.preset_given = true;
+    }
     const std::string styles[] = {"occluded", "arcade"};
-    if (const int i = r.choice(t, "style", styles, s.style); i >= 0) s.style = styles[i];
+    if (const int i = r.choice(t, "style", styles, s.style); i >= 0) {
+        s.style = styles[i];
+        out.style_given = true;
+    }
     const std::string modes[] = {"tank", "drive"};
     if (const int i = r.choice(t, "gamepad", modes, modes[static_cast<int>(s.gamepad)]); i >= 0) {
         s.gamepad = static_cast<GamepadMode>(i);

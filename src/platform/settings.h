@@ -30,6 +30,10 @@ struct SettingsLoad {
     Settings settings;
     std::vector<std::string> errors;  // one line each, ready to print
     bool file_existed = false;
+    // Whether the file set a valid preset / style (else settings keeps the default): `play`
+    // lets a level's preset fill in only where the player named none.
+    bool preset_given = false;
+    bool style_given = false;
     // Only a file that loaded cleanly (or none at all) may be overwritten: a typo in the
     // user's file must not be "fixed" by silently replacing it with defaults.
     bool may_save() const { return errors.empty(); }
