@@ -1,10 +1,30 @@
 #include "game/assets.h"
 
+#include <set>
+#include <utility>
+#include <vector>
+
+#include "core/error.h"
 #include "game/models.h"
 #include "game/obstacle_factories.h"
+#include "geometry/import.h"
 #include "geometry/line_mesh.h"
 
 namespace bz::game {
+
+namespace {
+
+bool same_geometry(const geo::AdjacencyMesh& a, const geo::AdjacencyMesh& b) {
+    return a.positions == b.positions && a.triangles == b.triangles && a.adjacency == b.adjacency &&
+           a.edge_kinds == b.edge_kinds;
+}
+
+std::string where(const level::SourcePos& pos) {
+    if (pos.file.empty()) return {};
+    return pos.file + ":" + std::to_string(pos.line) + ":" + std::to_string(pos.column) + ": ";
+}
+
+}  // namespace
 
 Assets::Assets(const level::Backdrop& b) : library_(std::make_unique<scene::MeshLibrary>()) {
     scene::MeshLibrary& lib = *library_;
@@ -25,6 +45,33 @@ Assets::Assets(const level::Backdrop& b) : library_(std::make_unique<scene::Mesh
     horizon_.moon = add("game:moon", backdrop::moon());
     horizon_.spark = add("game:spark", models::spark());
     factories_ = make_obstacle_factories(lib);
+}
+
+void Assets::reload(const level::Level& level) {
+    // Everything is checked and imported before the library changes.
+    std::vector<std::pair<std::string, geo::AdjacencyMesh>> changed;
+    std::set<std::string> imported;
+    for (const level::ObjectDesc& o : level.obstacles) {
+        if (!factories_.contains(o.kind)) {
+            throw UserError(where(o.pos) + "error: no object kind '" + o.kind + "'");
+        }
+        if (o.model.empty() || !imported.insert(o.model.string()).second) continue;
+        geo::AdjacencyMesh mesh;
+        try {
+            mesh = geo::build_line_mesh(geo::import_model(o.model));
+        } catch (const UserError& e) {
+            throw UserError(where(o.pos) + "error: " + e.what());
+        }
+        const std::optional<scene::MeshId> id = library_->find(o.model.string());
+        if (id && same_geometry(library_->mesh(*id), mesh)) continue;
+        changed.emplace_back(o.model.string(), std::move(mesh));
+    }
+    geo::AdjacencyMesh mountains =
+        geo::build_line_mesh(backdrop::mountains(level.backdrop.mountains));
+    if (!same_geometry(library_->mesh(horizon_.mountains), mountains)) {
+        changed.emplace_back(library_->name(horizon_.mountains), std::move(mountains));
+    }
+    for (auto& [name, mesh] : changed) library_->add(name, std::move(mesh));
 }
 
 }  // namespace bz::game

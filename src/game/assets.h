@@ -23,6 +23,13 @@ class Assets {
     const ModelIds& models() const { return models_; }
     const backdrop::Ids& horizon() const { return horizon_; }
 
+    // Brings the meshes up to date for an edited level, in the same library so that every id
+    // stays valid and the renderer's cache sees a new version: the horizon, and each model the
+    // level names (imported again: its file may have changed). Only meshes whose geometry
+    // changed get a new version. Throws UserError (file:line:col) with nothing changed when
+    // an object's kind is unknown or a model does not import.
+    void reload(const level::Level& level);
+
   private:
     std::unique_ptr<scene::MeshLibrary> library_;  // stable address for the model factory
     scene::FactoryTable factories_;

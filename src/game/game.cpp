@@ -98,8 +98,30 @@ void Game::start_replay(replay::Replay r) {
 }
 
 std::optional<replay::Replay> Game::recording() const {
-    if (!recorder_ || !world_) return std::nullopt;
+    if (!recorder_ || !world_) return ended_recording_;
     return recorder_->finish(*world_);
+}
+
+ReloadReport Game::reload_level(const level::Level& level) {
+    if (playback_) {
+        throw UserError("the level changed during a replay; a replay keeps its own level");
+    }
+    // Everything that can fail is checked before anything changes: the field, the kinds and
+    // the models here, and then both worlds build the same obstacles from the same factories.
+    World::check_field(level);
+    assets_->reload(level);
+    demo_->reload_level(level, assets_->factories());
+    ReloadReport report;
+    if (recorder_ && world_) {
+        report.ended_recording = recorder_->finish(*world_);
+        ended_recording_ = report.ended_recording;
+        recorder_.reset();
+        options_.record = false;
+    }
+    if (world_) report.world = world_->reload_level(level, assets_->factories());
+    level_ = level;
+    level_hash_.reset();
+    return report;
 }
 
 bool Game::take_highscores_changed() {

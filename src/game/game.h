@@ -46,6 +46,14 @@ struct GameOptions {
     double fov_y_deg = 45.0;
 };
 
+// What reload_level() did.
+struct ReloadReport {
+    WorldReload world;  // the game in play (all false when there is none)
+    // A recording the reload ended: replays belong to one level, so it stops at the edit,
+    // with the final state hash of the old level's world. Later games are not recorded.
+    std::optional<replay::Replay> ended_recording;
+};
+
 class Game {
   public:
     // Throws UserError (file:line:col) when the level names an object kind with no factory
@@ -57,6 +65,13 @@ class Game {
 
     // One 60 Hz tick.
     void tick(const TickCommand& command);
+
+    // Takes an edited level into the running game (hot reload): the game in play keeps its
+    // score, lives, screen, tank and hostile (see World::reload_level), the attract demo goes
+    // on in the new level, new games start in it, and meshes() stays the same library with
+    // changed meshes replaced. Throws UserError (file:line:col) with the game unchanged when
+    // the level does not build, and during a replay (a replay keeps its level).
+    ReloadReport reload_level(const level::Level& level);
 
     // What to draw, interpolated `alpha` of the way from the previous tick to the last.
     scene::FrameList frame(double alpha, double aspect) const;
@@ -101,6 +116,7 @@ class Game {
     std::unique_ptr<World> world_;
     std::unique_ptr<World> demo_;
     std::optional<replay::Recorder> recorder_;
+    std::optional<replay::Replay> ended_recording_;  // see ReloadReport
     std::optional<replay::Player> playback_;
     std::optional<replay::Mismatch> mismatch_;
     mutable std::optional<std::uint64_t> level_hash_;

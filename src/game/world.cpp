@@ -55,29 +55,41 @@ double wrap_angle(double a) {
     return a - kPi;
 }
 
+void World::check_field(const level::Level& level) {
+    if (!(level.field_size > 1.0) || !std::isfinite(level.field_size)) {
+        throw UserError(level.file.string() + ": field_size must be a positive number");
+    }
+}
+
+std::vector<scene::Entity> World::build_obstacles(const level::Level& level,
+                                                  const scene::FactoryTable& factories,
+                                                  const Field& field) {
+    check_field(level);
+    std::vector<scene::Entity> out;
+    out.reserve(level.obstacles.size());
+    for (const level::ObjectDesc& o : level.obstacles) {
+        try {
+            scene::Entity e = factories.create(placement_of(o));
+            e.transform.position = glm::dvec3(o.position.x, o.position.y, o.position.z);
+            const glm::dvec2 g = field.wrap(ground(e.transform.position));
+            e.transform.position.x = g.x;
+            e.transform.position.z = g.y;
+            out.push_back(e);
+        } catch (const UserError& err) {
+            throw UserError(where(o.pos) + "error: " + err.what());
+        }
+    }
+    return out;
+}
+
 World::World(const level::Level& level, std::uint64_t seed, const scene::FactoryTable& factories,
              ModelIds models, int lives)
     : field_(level.field_size, level.wrap),
       rules_(level.enemies),
       models_(std::move(models)),
+      obstacles_(build_obstacles(level, factories, field_)),
+      grid_(obstacles_, field_),
       seed_(seed) {
-    if (!(level.field_size > 1.0) || !std::isfinite(level.field_size)) {
-        throw UserError(level.file.string() + ": field_size must be a positive number");
-    }
-    obstacles_.reserve(level.obstacles.size());
-    for (const level::ObjectDesc& o : level.obstacles) {
-        try {
-            scene::Entity e = factories.create(placement_of(o));
-            e.transform.position = glm::dvec3(o.position.x, o.position.y, o.position.z);
-            const glm::dvec2 g = field_.wrap(ground(e.transform.position));
-            e.transform.position.x = g.x;
-            e.transform.position.z = g.y;
-            obstacles_.push_back(e);
-        } catch (const UserError& err) {
-            throw UserError(where(o.pos) + "error: " + err.what());
-        }
-    }
-    grid_ = ObstacleGrid(obstacles_, field_);
     style_ = level.render.style == "arcade" ? scene::LineStyle::arcade : scene::LineStyle::occluded;
 
     cur_.rng = Rng(seed);

@@ -2,6 +2,7 @@
 // The Battlezone simulation: a fixed 60 Hz step driven by one TickCommand per tick, seeded,
 // with no clock and no other input, so the same seed and commands give the same game.
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "game/events.h"
@@ -36,6 +37,14 @@ struct Awareness {
     bool motion_blocked = false;
 };
 
+// What a level reload did to the game in play.
+struct WorldReload {
+    bool player_moved = false;   // it was inside an obstacle or off the new field (or wrapped
+                                 // onto a smaller one)
+    bool hostile_moved = false;  // likewise (placed anew, or gone when nowhere was free), or
+                                 // wrapped onto a smaller field
+};
+
 struct RadarBlip {
     glm::dvec2 offset{0.0};  // relative to the player, rotated so +y is straight ahead, x right
     double distance = 0.0;
@@ -48,6 +57,15 @@ class World {
           ModelIds models, int lives = 3);
 
     void step(const TickCommand& command);
+
+    // Swaps in an edited level while the game goes on: obstacles, field size and wrap, enemy
+    // rules and style change; score, lives, timers and every moving thing stay. The tank and
+    // the hostile move only when the new level has them inside an obstacle or off the field.
+    // Deterministic (the same state and level give the same state). Throws UserError naming
+    // file:line:col, with nothing changed, when the level does not build.
+    WorldReload reload_level(const level::Level& level, const scene::FactoryTable& factories);
+    // Throws UserError unless the level's field is one a world can have.
+    static void check_field(const level::Level& level);
 
     // FNV-1a over every field of the current state (positions, timers, score, the RNG...).
     std::uint64_t state_hash() const;
@@ -98,6 +116,8 @@ class World {
     void award_bonuses();
 
     bool try_spawn_hostile();
+    // A legal place for a new hostile of `kind` around the player, or none after a few tries.
+    std::optional<glm::dvec2> spawn_spot(HostileKind kind);
     void place_hostile(HostileKind kind, glm::dvec2 position, double yaw);
     void fire_shell(const scene::Entity& from, bool from_player, double speed, double range);
     void destroy_hostile();
@@ -111,6 +131,18 @@ class World {
     bool blocked(glm::dvec2 p, double radius, bool for_player) const;
     glm::dvec2 player_ground() const { return ground(cur_.player.body.transform.position); }
     glm::dvec2 view_to_world(glm::dvec2 view_offset) const;
+
+    // The level's obstacles placed on `field`; throws UserError (file:line:col).
+    static std::vector<scene::Entity> build_obstacles(const level::Level& level,
+                                                      const scene::FactoryTable& factories,
+                                                      const Field& field);
+    // After a reload (world_reload.cpp): move what the new level leaves in an illegal place.
+    bool settle_player();
+    bool settle_hostile();
+    void settle_saucer_and_shells();
+    // The nearest place within the field where a circle of `radius` touches no obstacle;
+    // `from` itself when nothing is free.
+    glm::dvec2 free_spot_near(glm::dvec2 from, double radius) const;
 
     Field field_;
     level::EnemyRules rules_;

@@ -63,6 +63,13 @@ bool World::try_spawn_hostile() {
         pick -= weight[i];
     }
 
+    const std::optional<glm::dvec2> p = spawn_spot(kind);
+    if (!p) return false;
+    place_hostile(kind, *p, yaw_of(field_.delta(*p, player_ground())));
+    return true;
+}
+
+std::optional<glm::dvec2> World::spawn_spot(HostileKind kind) {
     const double radius =
         kind == HostileKind::missile ? tuning::kMissileRadius : tuning::kTankRadius;
     const double lo = std::max(10.0, rules_.spawn_min_distance);
@@ -75,10 +82,9 @@ bool World::try_spawn_hostile() {
         // Never inside (or touching) an obstacle, and on the field when it does not wrap.
         if (!field_.contains(p, radius + 1.0)) continue;
         if (obstacle_at(p, radius + 2.0) != nullptr) continue;
-        place_hostile(kind, p, yaw_of(field_.delta(p, player_ground())));
-        return true;
+        return p;
     }
-    return false;
+    return std::nullopt;
 }
 
 void World::place_hostile(HostileKind kind, glm::dvec2 position, double yaw) {
