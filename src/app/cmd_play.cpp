@@ -8,6 +8,7 @@
 
 #include "app/cli_args.h"
 #include "app/commands.h"
+#include "app/play_look.h"
 #include "app/play_loop.h"
 #include "app/play_options.h"
 #include "app/play_sessions.h"
@@ -27,19 +28,6 @@ bool offscreen_allowed(const PlayOptions& o) {
     return o.headless_test || (env && std::strcmp(env, "1") == 0);
 }
 
-// The level's optional look overrides on top of the chosen preset.
-render::RenderSettings render_settings(const std::string& preset, const level::Level* lvl) {
-    render::RenderSettings r = render::preset(preset);
-    if (!lvl) return r;
-    if (lvl->render.line_width_px)
-        r.line_half_width_px = static_cast<float>(*lvl->render.line_width_px * 0.5);
-    if (lvl->render.crease_angle_deg)
-        r.crease_angle_deg = static_cast<float>(*lvl->render.crease_angle_deg);
-    if (lvl->render.bloom_strength)
-        r.bloom_strength = static_cast<float>(*lvl->render.bloom_strength);
-    return r;
-}
-
 struct Play {
     const PlayOptions& options;
     const platform::PrefPaths& paths;
@@ -55,10 +43,18 @@ struct Play {
         for (const auto& e : loaded.errors) log.warn(e);
         platform::Settings& settings = loaded.settings;
         if (!loaded.file_existed) save(settings);  // a commented file to edit, on first start
-        if (options.preset) settings.preset = *options.preset;
-        if (options.style) settings.style = *options.style;
-        if (options.vsync) settings.vsync = *options.vsync;
+        // Command-line choices stay out of `settings`: it is saved back when the player changes
+        // the volume or the window mode, and they are for this run only.
+        const platform::Vsync wanted_vsync = options.vsync.value_or(settings.vsync);
         const bool fullscreen = options.fullscreen.value_or(settings.fullscreen);
+        LookSources look;
+        look.cli_style = options.style;
+        look.cli_preset = options.preset;
+        // The file just written on first start names the defaults; count them, so that the
+        // first run looks like every later one.
+        look.settings_style = settings.style;
+        look.settings_style_given = loaded.style_given || !loaded.file_existed;
+        if (loaded.preset_given || !loaded.file_existed) look.settings_preset = settings.preset;
 
         // The level before the window, so a broken level file fails fast and plainly.
         std::unique_ptr<level::LevelWatcher> watcher;
@@ -97,20 +93,15 @@ struct Play {
         co.debug = options.frames > 0 || std::getenv("BEAMZONE_GL_DEBUG") != nullptr;
         platform::GlContext context(co);
         log.info("OpenGL renderer: " + context.renderer_name());
-        const platform::Vsync vsync = context.set_vsync(settings.vsync);
-        if (vsync != settings.vsync) {
-            log.info("vsync " + std::string(platform::vsync_name(settings.vsync)) +
+        const platform::Vsync vsync = context.set_vsync(wanted_vsync);
+        if (vsync != wanted_vsync) {
+            log.info("vsync " + std::string(platform::vsync_name(wanted_vsync)) +
                      " is not available; using " + std::string(platform::vsync_name(vsync)));
         }
 
-        // Called again after a hot reload rebuilt the game, so the level's [render] overrides
-        // follow its edits too.
-        const level::LevelWatcher* watched = watcher.get();
-        auto make_renderer = [&settings, watched](int w, int h) {
-            const level::Level* current =
-                watched && watched->current() ? &*watched->current() : nullptr;
-            return std::make_unique<render::Renderer>(render_settings(settings.preset, current), w,
-                                                      h, gl::TimingMethod::off);
+        auto choose = [look](const level::Level* current) { return choose_look(look, current); };
+        auto make_renderer = [](const render::RenderSettings& r, int w, int h) {
+            return std::make_unique<render::Renderer>(r, w, h, gl::TimingMethod::off);
         };
 
         platform::Audio audio(log, settings.volume, settings.mute);
@@ -135,11 +126,9 @@ struct Play {
         config.frames = options.frames;
         config.screenshot_at = options.screenshot_at;
         config.edit = options.edit;
-        config.style =
-            settings.style == "arcade" ? scene::LineStyle::arcade : scene::LineStyle::occluded;
         config.screenshots = paths.screenshots;
-        LoopParts parts{context,       make_renderer, audio, input,   gamepads,
-                        watcher.get(), overlay,       log,   settings};
+        LoopParts parts{context,  choose,        make_renderer, audio, input,
+                        gamepads, watcher.get(), overlay,       log,   settings};
         const LoopResult result = run_play_loop(*session, parts, config);
         session.reset();  // flushes a recording before we report
 

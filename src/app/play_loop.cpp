@@ -24,10 +24,11 @@ class Loop {
 
     LoopResult run() {
         if (p_.watcher) last_generation_ = p_.watcher->generation();
+        look_ = p_.look(current_level());
+        p_.log.info("look: " + look_.summary);
         int w = 0, h = 0;
         p_.context.drawable_size(w, h);
-        renderer_ = p_.make_renderer(std::max(w, 1), std::max(h, 1));
-        mesh_generation_ = session_.mesh_generation();
+        renderer_ = p_.make_renderer(look_.render, std::max(w, 1), std::max(h, 1));
         std::uint64_t last_counter = SDL_GetPerformanceCounter();
         const double counter_hz = static_cast<double>(SDL_GetPerformanceFrequency());
         while (running_) {
@@ -143,6 +144,18 @@ class Loop {
         }
     }
 
+    const level::Level* current_level() const {
+        return p_.watcher && p_.watcher->current() ? &*p_.watcher->current() : nullptr;
+    }
+
+    // After a good reload: the level's [render] section may have changed.
+    void update_look() {
+        PlayLook next = p_.look(current_level());
+        renderer_->set_settings(next.render);
+        if (next.summary != look_.summary) p_.log.info("look: " + next.summary);
+        look_ = std::move(next);
+    }
+
     void reload_shaders() {
         std::string error;
         if (renderer_->reload_shaders(&error)) {
@@ -168,6 +181,7 @@ class Loop {
             last_generation_ = p_.watcher->generation();
             try {
                 session_.level_changed(*p_.watcher->current());
+                update_look();
                 p_.log.info("level reloaded: " + p_.watcher->file().string());
                 p_.overlay.notify("level reloaded");
             } catch (const std::exception& e) {
@@ -217,18 +231,13 @@ class Loop {
     void draw() {
         int w = 0, h = 0;
         p_.context.drawable_size(w, h);  // pixels, not window points: right on HiDPI screens
-        if (session_.mesh_generation() != mesh_generation_) {
-            mesh_generation_ = session_.mesh_generation();
-            renderer_.reset();  // its GL objects go before the new one allocates its own
-            renderer_ = p_.make_renderer(std::max(w, 1), std::max(h, 1));
-        }
         if (w > 0 && h > 0 && (w != renderer_->width() || h != renderer_->height())) {
             renderer_->resize(w, h);
         }
         const double aspect =
             static_cast<double>(renderer_->width()) / std::max(1, renderer_->height());
         scene::FrameList frame = session_.frame(alpha_, aspect);
-        frame.style = config_.style;
+        frame.style = look_.style;
         p_.overlay.draw(frame.hud, aspect);
         if (result_.frames + 1 == config_.screenshot_at) screenshot_requested_ = true;
         if (screenshot_requested_) {
@@ -269,7 +278,7 @@ class Loop {
     const LoopConfig& config_;
     game::FixedStep step_;
     std::unique_ptr<render::Renderer> renderer_;
-    std::uint64_t mesh_generation_ = 0;
+    PlayLook look_;
     LoopResult result_;
     bool running_ = true;
     bool minimized_ = false;

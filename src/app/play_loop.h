@@ -6,6 +6,7 @@
 #include <memory>
 #include <string>
 
+#include "app/play_look.h"
 #include "app/play_overlay.h"
 #include "app/play_session.h"
 #include "core/log.h"
@@ -23,15 +24,20 @@ struct LoopConfig {
     int frames = 0;         // > 0: stop after this many frames, each exactly one tick long
     int screenshot_at = 0;  // > 0: take a screenshot on this frame (1-based)
     bool edit = false;      // free-fly camera controls instead of tank controls
-    scene::LineStyle style = scene::LineStyle::occluded;
     std::filesystem::path screenshots;
 };
 
 struct LoopParts {
     platform::GlContext& context;
-    // Makes a renderer of the given size; called at the start and again whenever the session's
-    // meshes became a different library (its mesh cache is keyed by id and version).
-    std::function<std::unique_ptr<render::Renderer>(int width, int height)> make_renderer;
+    // The look for a level (nullptr: the built-in one); asked at the start and again after
+    // every good reload, so the level's [render] section follows its edits.
+    std::function<PlayLook(const level::Level* level)> look;
+    // Makes the one renderer of the run. Sessions keep one mesh library for good (a reload
+    // replaces meshes in it, bumping versions the renderer's cache notices), so it is never
+    // made again.
+    std::function<std::unique_ptr<render::Renderer>(const render::RenderSettings& settings,
+                                                    int width, int height)>
+        make_renderer;
     platform::Audio& audio;
     platform::Input& input;
     platform::Gamepads& gamepads;

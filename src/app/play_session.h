@@ -1,7 +1,6 @@
 #pragma once
 // What the play loop drives: the game itself, or the --edit viewer. The loop owns the window,
 // input, timing, audio, hot reload and overlays; a session owns what is simulated and drawn.
-#include <cstdint>
 #include <vector>
 
 #include "level/level.h"
@@ -36,7 +35,9 @@ class PlaySession {
     virtual const scene::MeshLibrary& meshes() const = 0;
     // Sounds of the ticks since the last call.
     virtual SessionSounds take_sounds() = 0;
-    // A hot reload produced a new good level: rebuild, keeping the player where they are.
+    // A hot reload produced a new good level: take it in, keeping what is running. meshes()
+    // must stay the same library (replacing meshes in it is fine). Throws UserError, with the
+    // session unchanged, when the level cannot be used.
     virtual void level_changed(const level::Level& level) = 0;
     // Game actions the player pressed (pause, start, back); window-level ones stay in the loop.
     virtual void on_action(platform::Action) {}
@@ -46,9 +47,6 @@ class PlaySession {
     virtual bool finished() const { return false; }
     // True when the run failed in a way the exit code should show (a replay that diverged).
     virtual bool failed() const { return false; }
-    // Changes whenever meshes() became a different library (a rebuilt game after a reload):
-    // the renderer's mesh cache, keyed by mesh id and version, must then start afresh.
-    virtual std::uint64_t mesh_generation() const { return 0; }
 };
 
 }  // namespace bz::app

@@ -1,7 +1,7 @@
 #include "app/play_sessions.h"
 
 #include <chrono>
-#include <numbers>
+#include <cstdio>
 #include <utility>
 
 #include "core/error.h"
@@ -18,8 +18,6 @@
 namespace bz::app {
 
 namespace {
-
-constexpr double kRadToDeg = 180.0 / std::numbers::pi;
 
 std::uint64_t clock_seed() {
     return static_cast<std::uint64_t>(std::chrono::system_clock::now().time_since_epoch().count());
@@ -119,30 +117,41 @@ class GameSession final : public PlaySession {
             log_.warn("level changed during a replay; the replay keeps the level it started with");
             return;
         }
-        // A new game on the new level, with the tank where it was and the game in the same
-        // mode (playing stays playing). Score and lives start over: a level edit is a test run.
-        level::Level next = lvl;
-        game::GameOptions o = options_;
-        o.highscores = game_->highscores();
-        const bool in_play = game_->world() && (game_->screen() == game::Screen::playing ||
-                                                game_->screen() == game::Screen::paused);
-        if (in_play) {
-            const scene::Transform& t = game_->world()->state().player.body.transform;
-            next.player_start = {t.position.x, 0.0, t.position.z};
-            next.player_heading_deg = t.yaw * kRadToDeg;
-            o.attract = false;
+        // The game goes on in the edited level: score, lives, screen and the tank stay.
+        const game::ReloadReport r = game_->reload_level(lvl);
+        if (r.ended_recording) end_recording(*r.ended_recording);
+        if (const game::World* w = game_->world()) {
+            const glm::dvec3& at = w->state().player.body.transform.position;
+            char where[64];
+            std::snprintf(where, sizeof where, "(%.1f, %.1f)", at.x, at.z);
+            log_.info(
+                "level taken into the running game at tick " + std::to_string(w->state().tick) +
+                ": score " + std::to_string(w->score()) + ", lives " + std::to_string(w->lives()) +
+                ", tank at " + where +
+                (r.world.player_moved ? " (moved out of an obstacle or onto the field)" : "") +
+                (r.world.hostile_moved ? "; the enemy was moved to a free place" : ""));
         }
-        auto rebuilt = std::make_unique<game::Game>(std::move(next), o, font_);
-        if (game_->take_highscores_changed()) save_scores();
-        game_ = std::move(rebuilt);
-        ++mesh_generation_;
     }
 
     bool finished() const override { return game_->replay_finished(); }
     bool failed() const override { return game_->replay_mismatch().has_value(); }
-    std::uint64_t mesh_generation() const override { return mesh_generation_; }
 
   private:
+    // A replay belongs to one level, so a reload ends the recording; saved now, and nothing
+    // more is recorded this run.
+    void end_recording(const game::replay::Replay& rec) {
+        if (record_path_.empty()) return;
+        const std::string path = std::exchange(record_path_, std::string());
+        try {
+            game::replay::save(path, rec);
+            log_.info("the level changed, so the recording ends (a replay belongs to one level): " +
+                      std::to_string(rec.commands.size()) + " ticks saved to " + path +
+                      "; the rest of this run is not recorded");
+        } catch (const std::exception& e) {
+            log_.error(std::string("cannot save the recording: ") + e.what());
+        }
+    }
+
     void save_scores() {
         try {
             game::save_highscores(high_scores_path_, game_->highscores());
@@ -176,7 +185,6 @@ class GameSession final : public PlaySession {
     float engine_ = 0.0f;
     bool pause_ = false, start_ = false, back_ = false;
     bool replay_reported_ = false;
-    std::uint64_t mesh_generation_ = 0;
 };
 
 // --edit: the level's objects and horizon from a free-flying camera; nothing moves but the
@@ -185,10 +193,10 @@ class EditSession final : public PlaySession {
   public:
     explicit EditSession(level::Level lvl)
         : level_(std::move(lvl)),
+          assets_(std::make_unique<game::Assets>(level_.backdrop)),
           camera_(level_.player_start + glm::dvec3(0.0, 6.0, 0.0), level_.player_heading_deg,
-                  -10.0) {
-        rebuild();
-    }
+                  -10.0),
+          obstacles_(build(level_)) {}
 
     void tick(const platform::InputState&) override { ++ticks_; }
     void update(const platform::FlyControls& fly, double dt) override { camera_.update(fly, dt); }
@@ -218,26 +226,18 @@ class EditSession final : public PlaySession {
     SessionSounds take_sounds() override { return {}; }
 
     void level_changed(const level::Level& lvl) override {
-        level::Level previous = std::move(level_);
+        // The same assets, brought up to date (a changed horizon or model file too), so the
+        // renderer keeps its cache. Checks and imports before anything changes.
+        game::World::check_field(lvl);
+        assets_->reload(lvl);
+        obstacles_ = build(lvl);
         level_ = lvl;
-        try {
-            rebuild();
-        } catch (...) {
-            level_ = std::move(previous);
-            throw;
-        }
     }
-    std::uint64_t mesh_generation() const override { return mesh_generation_; }
 
   private:
-    void rebuild() {
-        // Fresh assets, so a changed horizon or model file is rebuilt too. A world builds the
-        // obstacles through the factory table; its simulation never runs.
-        auto assets = std::make_unique<game::Assets>(level_.backdrop);
-        const game::World world(level_, 0, assets->factories(), assets->models());
-        obstacles_ = world.obstacles();
-        assets_ = std::move(assets);
-        ++mesh_generation_;
+    // A world builds the obstacles through the factory table; its simulation never runs.
+    std::vector<scene::Entity> build(const level::Level& lvl) const {
+        return game::World(lvl, 0, assets_->factories(), assets_->models()).obstacles();
     }
 
     level::Level level_;
@@ -245,7 +245,6 @@ class EditSession final : public PlaySession {
     platform::FreeFlyCamera camera_;
     std::vector<scene::Entity> obstacles_;
     std::uint64_t ticks_ = 0;
-    std::uint64_t mesh_generation_ = 0;
 };
 
 level::Level chosen_level(const SessionOptions& o) {

@@ -1,0 +1,65 @@
+#include "app/play_look.h"
+
+#include <cstdio>
+
+namespace bz::app {
+
+namespace {
+
+std::string number(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%g", v);
+    return buf;
+}
+
+}  // namespace
+
+PlayLook choose_look(const LookSources& s, const level::Level* level) {
+    const level::RenderSettings* lv = level ? &level->render : nullptr;
+    std::string style, style_from, preset, preset_from;
+    if (s.cli_style) {
+        style = *s.cli_style;
+        style_from = "command line";
+    } else if (lv && lv->style_given) {
+        style = lv->style;
+        style_from = "level";
+    } else {
+        style = s.settings_style;
+        style_from = s.settings_style_given ? "settings file" : "default";
+    }
+    if (s.cli_preset) {
+        preset = *s.cli_preset;
+        preset_from = "command line";
+    } else if (s.settings_preset) {
+        preset = *s.settings_preset;
+        preset_from = "settings file";
+    } else if (lv && lv->preset_given) {
+        preset = lv->preset;
+        preset_from = "level";
+    } else {
+        preset = render::RenderSettings{}.preset;
+        preset_from = "default";
+    }
+
+    PlayLook look;
+    look.style = style == "arcade" ? scene::LineStyle::arcade : scene::LineStyle::occluded;
+    look.render = render::preset(preset);
+    look.summary =
+        "style " + style + " (" + style_from + "), preset " + preset + " (" + preset_from + ")";
+    if (!lv) return look;
+    if (lv->line_width_px) {
+        look.render.line_half_width_px = static_cast<float>(*lv->line_width_px * 0.5);
+        look.summary += ", line width " + number(*lv->line_width_px) + " px (level)";
+    }
+    if (lv->crease_angle_deg) {
+        look.render.crease_angle_deg = static_cast<float>(*lv->crease_angle_deg);
+        look.summary += ", crease angle " + number(*lv->crease_angle_deg) + " deg (level)";
+    }
+    if (lv->bloom_strength) {
+        look.render.bloom_strength = static_cast<float>(*lv->bloom_strength);
+        look.summary += ", bloom strength " + number(*lv->bloom_strength) + " (level)";
+    }
+    return look;
+}
+
+}  // namespace bz::app

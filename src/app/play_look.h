@@ -1,0 +1,37 @@
+#pragma once
+// How `play` draws: the line style and the renderer settings, from the command line, the
+// level's [render] section and the player's settings file.
+//   style:  --style, else the level's style (part of its design), else the settings file
+//   preset: --preset, else the settings file, else the level's preset (the player's machine
+//           decides the speed a level can afford)
+//   line width, crease angle, bloom strength: the level's, where it sets them
+#include <optional>
+#include <string>
+
+#include "level/level.h"
+#include "render/settings.h"
+#include "scene/frame_list.h"
+
+namespace bz::app {
+
+struct LookSources {
+    std::optional<std::string> cli_style;
+    std::optional<std::string> cli_preset;
+    std::string settings_style = "occluded";     // the settings file's, or its default
+    bool settings_style_given = false;           // false: the file does not name one
+    std::optional<std::string> settings_preset;  // none: the settings file does not name one
+};
+
+struct PlayLook {
+    scene::LineStyle style = scene::LineStyle::occluded;
+    render::RenderSettings render;
+    // For the log, e.g. "style arcade (level), preset fast (command line), line width 3 px
+    // (level)".
+    std::string summary;
+};
+
+// `level` may be null (the built-in level). Throws UserError for a preset the renderer does
+// not know (the level loader and the settings file already refuse those).
+PlayLook choose_look(const LookSources& sources, const level::Level* level);
+
+}  // namespace bz::app
