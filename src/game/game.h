@@ -95,8 +95,8 @@ class Game {
     bool replay_finished() const { return playback_ && playback_->done(); }
     const std::optional<replay::Mismatch>& replay_mismatch() const { return mismatch_; }
 
-    // The current (or last) game's recording, with its final state hash; empty when not
-    // recording or before the first game.
+    // The current (or last) game's recording, with its final state hash, or the one a level
+    // reload ended; empty when not recording or before the first game.
     std::optional<replay::Replay> recording() const;
 
   private:
