@@ -8,6 +8,11 @@
 namespace bz::app {
 
 void limit_memory_for_untrusted_input() {
+#if defined(__SANITIZE_ADDRESS__)
+    // ASan maps its shadow memory and allocator arenas up front, which a data-segment cap
+    // would starve; sanitizer runs cap allocations with ASAN_OPTIONS=max_allocation_size_mb.
+    return;
+#endif
     unsigned long long mb = 8192;
     if (const char* env = std::getenv("BEAMZONE_MEMORY_LIMIT_MB"); env && *env) {
         mb = std::strtoull(env, nullptr, 10);
