@@ -17,7 +17,8 @@ void plot_frame_times(const RunResult& run, const std::string& title, const scen
         for (double ms : f.pass_ms) sum += std::max(ms, 0.0);
         top = std::max({top, sum, f.ms_between});
     }
-    Chart chart(canvas, nice_axis(0.0, n, "frame"), nice_axis(0.0, top * 1.05, "milliseconds"), title);
+    Chart chart(canvas, nice_axis(0.0, n, "frame"), nice_axis(0.0, top * 1.05, "milliseconds"),
+                title);
     chart.draw_frame();
     const glm::vec3 other{0.8f, 0.8f, 0.8f};
     for (std::size_t i = 0; i < run.frames.size(); ++i) {
@@ -29,7 +30,8 @@ void plot_frame_times(const RunResult& run, const std::string& title, const scen
             canvas.fill_rect(chart.map(x0, base), chart.map(x1, base + ms), series_color(p));
             base += ms;
         }
-        if (f.ms_between > base) canvas.fill_rect(chart.map(x0, base), chart.map(x1, f.ms_between), other);
+        if (f.ms_between > base)
+            canvas.fill_rect(chart.map(x0, base), chart.map(x1, f.ms_between), other);
     }
     for (std::size_t i = 1; i < run.frames.size(); ++i) {
         canvas.line(chart.map(static_cast<double>(i) - 0.5, run.frames[i - 1].ms_between),
@@ -38,7 +40,8 @@ void plot_frame_times(const RunResult& run, const std::string& title, const scen
     int row = 0;
     chart.legend_entry(row++, "whole frame (line)", kInk);
     chart.legend_entry(row++, "outside passes", other);
-    for (std::size_t p = run.pass_names.size(); p-- > 0;) chart.legend_entry(row++, run.pass_names[p], series_color(p));
+    for (std::size_t p = run.pass_names.size(); p-- > 0;)
+        chart.legend_entry(row++, run.pass_names[p], series_color(p));
     canvas.save(out);
 }
 
@@ -64,14 +67,16 @@ std::vector<glm::vec2> place_labels(const Canvas& canvas, const std::vector<glm:
         bool found = false;
         for (float ring = 1.0f; ring <= 6.0f && !found; ring += 1.0f) {
             const float dy = (height + 4.0f) * ring;
-            const glm::vec2 offsets[] = {{9.0f, dy - height - 2.0f}, {9.0f, -dy + 2.0f},
-                                         {-9.0f - w, dy - height - 2.0f}, {-9.0f - w, -dy + 2.0f},
-                                         {-w * 0.5f, dy + 4.0f}, {-w * 0.5f, -dy - height}};
+            const glm::vec2 offsets[] = {
+                {9.0f, dy - height - 2.0f}, {9.0f, -dy + 2.0f},     {-9.0f - w, dy - height - 2.0f},
+                {-9.0f - w, -dy + 2.0f},    {-w * 0.5f, dy + 4.0f}, {-w * 0.5f, -dy - height}};
             for (const glm::vec2& o : offsets) {
                 const glm::vec2 at = points[i] + o;
                 const Box b{at - glm::vec2(2.0f), at + glm::vec2(w + 2.0f, height + 2.0f)};
                 if (b.lo.x < 0.0f || b.hi.x > static_cast<float>(canvas.width())) continue;
-                if (std::any_of(taken.begin(), taken.end(), [&](const Box& t) { return t.overlaps(b); })) continue;
+                if (std::any_of(taken.begin(), taken.end(),
+                                [&](const Box& t) { return t.overlaps(b); }))
+                    continue;
                 best = at;
                 taken.push_back(b);
                 found = true;
@@ -95,7 +100,8 @@ void plot_tradeoff(const std::vector<TradeoffPoint>& points, const std::string& 
     }
     const double pad = std::max((1.0 - ymin) * 0.25, 0.002);
     Chart chart(canvas, nice_axis(0.0, xmax * 1.15, "p50 frame time (ms)"),
-                nice_axis(std::max(0.0, ymin - pad), 1.0, "F1 against the exact reference (mean, bar to min)"),
+                nice_axis(std::max(0.0, ymin - pad), 1.0,
+                          "F1 against the exact reference (mean, bar to min)"),
                 title);
     chart.draw_frame();
     std::vector<glm::vec2> at;
@@ -116,8 +122,9 @@ void plot_tradeoff(const std::vector<TradeoffPoint>& points, const std::string& 
     canvas.save(out);
 }
 
-void plot_scaling(const std::vector<ScalingPoint>& points, const LineFit& fit, const std::string& title,
-                  const scene::VectorFont* font, const std::filesystem::path& out) {
+void plot_scaling(const std::vector<ScalingPoint>& points, const LineFit& fit,
+                  const std::string& title, const scene::VectorFont* font,
+                  const std::filesystem::path& out) {
     Canvas canvas(1000, 700, kPaper, font);
     double xmax = 0.0, ymax = 0.0;
     for (const ScalingPoint& p : points) {
@@ -128,16 +135,17 @@ void plot_scaling(const std::vector<ScalingPoint>& points, const LineFit& fit, c
                 nice_axis(0.0, ymax * 1.15, "p50 frame time (ms)"), title);
     chart.draw_frame();
     const double x_end = xmax * 1.05;
-    canvas.line(chart.map(0.0, fit.intercept), chart.map(x_end, fit.intercept + fit.slope * x_end * 1e6),
-                series_color(1), 1.5f);
+    canvas.line(chart.map(0.0, fit.intercept),
+                chart.map(x_end, fit.intercept + fit.slope * x_end * 1e6), series_color(1), 1.5f);
     for (std::size_t i = 0; i < points.size(); ++i) {
         const glm::vec2 at = chart.map(points[i].triangles / 1e6, points[i].p50_ms);
         canvas.disc(at, 5.0f, series_color(0));
-        canvas.text(points[i].label, at + glm::vec2(-10.0f, 12.0f), 11.0f, kInk, scene::TextAlign::right);
+        canvas.text(points[i].label, at + glm::vec2(-10.0f, 12.0f), 11.0f, kInk,
+                    scene::TextAlign::right);
     }
     char buf[128];
-    std::snprintf(buf, sizeof buf, "fit: %.2f ms per 100k triangles + %.1f ms (r2 %.3f)", fit.slope * 1e5,
-                  fit.intercept, fit.r2);
+    std::snprintf(buf, sizeof buf, "fit: %.2f ms per 100k triangles + %.1f ms (r2 %.3f)",
+                  fit.slope * 1e5, fit.intercept, fit.r2);
     chart.legend_entry(0, buf, series_color(1));
     canvas.save(out);
 }

@@ -30,7 +30,8 @@ struct ScalingPoint {
     double triangles = 0.0;  // submitted per frame
     double p50_ms = 0.0;
 };
-void plot_scaling(const std::vector<ScalingPoint>& points, const LineFit& fit, const std::string& title,
-                  const scene::VectorFont* font, const std::filesystem::path& out);
+void plot_scaling(const std::vector<ScalingPoint>& points, const LineFit& fit,
+                  const std::string& title, const scene::VectorFont* font,
+                  const std::filesystem::path& out);
 
 }  // namespace bz::app

@@ -32,9 +32,12 @@ const char* depth_name(render::DepthFormat d) {
 
 const char* timing_name(gl::TimingMethod m) {
     switch (m) {
-        case gl::TimingMethod::cpu_finish: return "cpu_finish";
-        case gl::TimingMethod::gpu_queries: return "gpu_queries";
-        case gl::TimingMethod::off: break;
+        case gl::TimingMethod::cpu_finish:
+            return "cpu_finish";
+        case gl::TimingMethod::gpu_queries:
+            return "gpu_queries";
+        case gl::TimingMethod::off:
+            break;
     }
     return "off";
 }
@@ -42,11 +45,13 @@ const char* timing_name(gl::TimingMethod m) {
 const char* timing_note(gl::TimingMethod m) {
     switch (m) {
         case gl::TimingMethod::cpu_finish:
-            return "passes timed with glFinish + CPU clock (software rasteriser: timer queries miss its "
+            return "passes timed with glFinish + CPU clock (software rasteriser: timer queries "
+                   "miss its "
                    "vertex and geometry work)";
         case gl::TimingMethod::gpu_queries:
             return "passes timed with GL_TIME_ELAPSED queries, read back a few frames late";
-        case gl::TimingMethod::off: break;
+        case gl::TimingMethod::off:
+            break;
     }
     return "passes not timed";
 }
@@ -86,12 +91,14 @@ std::string frames_csv(const std::vector<RunResult>& runs) {
     out << ",ObjectsDrawn,ObjectsCulled,TrianglesSubmitted,FeatureEdges\n";
     for (const RunResult& r : runs) {
         for (const FrameRecord& f : r.frames) {
-            out << r.label << ',' << f.frame << ',' << f.seconds << ',' << f.ms_between << ',' << f.ms_cpu_busy;
+            out << r.label << ',' << f.frame << ',' << f.seconds << ',' << f.ms_between << ','
+                << f.ms_cpu_busy;
             for (const std::string& p : passes) {
                 const auto it = std::find(r.pass_names.begin(), r.pass_names.end(), p);
                 const auto i = static_cast<std::size_t>(it - r.pass_names.begin());
                 out << ',';
-                if (it != r.pass_names.end() && i < f.pass_ms.size() && f.pass_ms[i] >= 0.0) out << f.pass_ms[i];
+                if (it != r.pass_names.end() && i < f.pass_ms.size() && f.pass_ms[i] >= 0.0)
+                    out << f.pass_ms[i];
             }
             out << ',' << f.stats.objects_drawn << ',' << f.stats.objects_culled << ','
                 << f.stats.triangles_submitted << ',' << f.stats.feature_edges << '\n';
@@ -138,20 +145,30 @@ void write_run(JsonWriter& j, const RunResult& r) {
     j.field("mean", t.mean_ms).field("p50", t.p50_ms).field("p95", t.p95_ms).field("p99", t.p99_ms);
     j.field("max", t.max_ms).field("min", t.min_ms);
     j.end_object();
-    j.key("fps").begin_object().field("mean", t.mean_fps).field("low_1pct", t.low_1pct_fps).end_object();
-    j.field("cpu_busy_mean_ms", mean_of(r.frames, [](const FrameRecord& f) { return f.ms_cpu_busy; }));
+    j.key("fps")
+        .begin_object()
+        .field("mean", t.mean_fps)
+        .field("low_1pct", t.low_1pct_fps)
+        .end_object();
+    j.field("cpu_busy_mean_ms",
+            mean_of(r.frames, [](const FrameRecord& f) { return f.ms_cpu_busy; }));
     j.key("passes_mean_ms").begin_object();
-    for (std::size_t p = 0; p < r.pass_names.size(); ++p) j.field(r.pass_names[p], mean_pass_ms(r, p));
+    for (std::size_t p = 0; p < r.pass_names.size(); ++p)
+        j.field(r.pass_names[p], mean_pass_ms(r, p));
     j.end_object();
     j.key("scene_per_frame").begin_object();
-    j.field("objects_drawn_mean", mean_of(r.frames, [](const FrameRecord& f) { return f.stats.objects_drawn; }));
-    j.field("objects_culled_mean", mean_of(r.frames, [](const FrameRecord& f) { return f.stats.objects_culled; }));
+    j.field("objects_drawn_mean",
+            mean_of(r.frames, [](const FrameRecord& f) { return f.stats.objects_drawn; }));
+    j.field("objects_culled_mean",
+            mean_of(r.frames, [](const FrameRecord& f) { return f.stats.objects_culled; }));
     j.field("triangles_submitted_mean",
             mean_of(r.frames, [](const FrameRecord& f) { return f.stats.triangles_submitted; }));
     j.field("triangles_submitted_max",
             max_of(r.frames, [](const FrameRecord& f) { return f.stats.triangles_submitted; }));
-    j.field("feature_edges_mean", mean_of(r.frames, [](const FrameRecord& f) { return f.stats.feature_edges; }));
-    j.field("feature_edges_max", max_of(r.frames, [](const FrameRecord& f) { return f.stats.feature_edges; }));
+    j.field("feature_edges_mean",
+            mean_of(r.frames, [](const FrameRecord& f) { return f.stats.feature_edges; }));
+    j.field("feature_edges_max",
+            max_of(r.frames, [](const FrameRecord& f) { return f.stats.feature_edges; }));
     j.end_object();
 }
 
@@ -171,27 +188,32 @@ std::string summary_json(const BenchMeta& meta, const std::vector<RunResult>& ru
 }
 
 void print_summary_table(std::FILE* out, const BenchMeta& m, const std::vector<RunResult>& runs) {
-    std::fprintf(out, "\n%s, %dx%d, %d frames (+%d warm-up) at 1/60 s, %s\n", m.level.c_str(), m.width, m.height,
-                 m.frames, m.warmup, m.camera.c_str());
-    std::fprintf(out, "%s on %s; load average %.2f -> %.2f\n", timing_name(m.timing), m.gl_renderer.c_str(),
-                 m.load_before, m.load_after);
-    std::fprintf(out, "%-24s %8s %8s %8s %8s %8s %9s %9s\n", "config", "mean ms", "p50", "p95", "p99", "max",
-                 "1%low fps", "tris/frm");
+    std::fprintf(out, "\n%s, %dx%d, %d frames (+%d warm-up) at 1/60 s, %s\n", m.level.c_str(),
+                 m.width, m.height, m.frames, m.warmup, m.camera.c_str());
+    std::fprintf(out, "%s on %s; load average %.2f -> %.2f\n", timing_name(m.timing),
+                 m.gl_renderer.c_str(), m.load_before, m.load_after);
+    std::fprintf(out, "%-24s %8s %8s %8s %8s %8s %9s %9s\n", "config", "mean ms", "p50", "p95",
+                 "p99", "max", "1%low fps", "tris/frm");
     for (const RunResult& r : runs) {
         const FrameTimeStats& t = r.stats;
-        const double tris = mean_of(r.frames, [](const FrameRecord& f) { return f.stats.triangles_submitted; });
-        std::fprintf(out, "%-24s %8.2f %8.2f %8.2f %8.2f %8.2f %9.1f %9.0f\n", r.label.c_str(), t.mean_ms, t.p50_ms,
-                     t.p95_ms, t.p99_ms, t.max_ms, t.low_1pct_fps, tris);
+        const double tris =
+            mean_of(r.frames, [](const FrameRecord& f) { return f.stats.triangles_submitted; });
+        std::fprintf(out, "%-24s %8.2f %8.2f %8.2f %8.2f %8.2f %9.1f %9.0f\n", r.label.c_str(),
+                     t.mean_ms, t.p50_ms, t.p95_ms, t.p99_ms, t.max_ms, t.low_1pct_fps, tris);
     }
     for (const RunResult& r : runs) {
         std::fprintf(out, "  %-22s passes (mean ms):", r.label.c_str());
         for (std::size_t p = 0; p < r.pass_names.size(); ++p) {
             std::fprintf(out, " %s %.2f", r.pass_names[p].c_str(), mean_pass_ms(r, p));
         }
-        const double drawn = mean_of(r.frames, [](const FrameRecord& f) { return f.stats.objects_drawn; });
-        const double culled = mean_of(r.frames, [](const FrameRecord& f) { return f.stats.objects_culled; });
-        const double edges = mean_of(r.frames, [](const FrameRecord& f) { return f.stats.feature_edges; });
-        std::fprintf(out, " | objects %.0f drawn %.0f culled, %.0f feature edges\n", drawn, culled, edges);
+        const double drawn =
+            mean_of(r.frames, [](const FrameRecord& f) { return f.stats.objects_drawn; });
+        const double culled =
+            mean_of(r.frames, [](const FrameRecord& f) { return f.stats.objects_culled; });
+        const double edges =
+            mean_of(r.frames, [](const FrameRecord& f) { return f.stats.feature_edges; });
+        std::fprintf(out, " | objects %.0f drawn %.0f culled, %.0f feature edges\n", drawn, culled,
+                     edges);
     }
 }
 

@@ -25,11 +25,13 @@ std::size_t column(std::vector<std::string>& names, const std::string& name) {
 
 }  // namespace
 
-RunResult start_run(const BenchFrames& bf, const std::string& label, const render::RenderSettings& settings) {
+RunResult start_run(const BenchFrames& bf, const std::string& label,
+                    const render::RenderSettings& settings) {
     RunResult out;
     out.label = label;
     out.settings = settings;
-    out.frames.resize(static_cast<std::size_t>(std::max(0, static_cast<int>(bf.frames.size()) - bf.warmup)));
+    out.frames.resize(
+        static_cast<std::size_t>(std::max(0, static_cast<int>(bf.frames.size()) - bf.warmup)));
     for (std::size_t k = 0; k < out.frames.size(); ++k) {
         out.frames[k].frame = static_cast<int>(k);
         out.frames[k].seconds = bf.seconds[k + static_cast<std::size_t>(bf.warmup)];
@@ -37,8 +39,8 @@ RunResult start_run(const BenchFrames& bf, const std::string& label, const rende
     return out;
 }
 
-void run_chunk(render::Renderer& r, const BenchFrames& bf, const scene::MeshLibrary& meshes, int first, int count,
-               int warm, RunResult& run, const Progress& progress) {
+void run_chunk(render::Renderer& r, const BenchFrames& bf, const scene::MeshLibrary& meshes,
+               int first, int count, int warm, RunResult& run, const Progress& progress) {
     r.set_settings(run.settings);
     run.timing = r.timing_method();
     const int latency = r.pass_times_latency();
@@ -50,7 +52,8 @@ void run_chunk(render::Renderer& r, const BenchFrames& bf, const scene::MeshLibr
     std::vector<Clock::time_point> starts(static_cast<std::size_t>(count) + 1);
     for (int i = begin; i < end + latency; ++i) {
         const bool timed = i >= bf.warmup + first && i < end;
-        const scene::FrameList& f = bf.frames[static_cast<std::size_t>(std::min({i, end - 1, last}))];
+        const scene::FrameList& f =
+            bf.frames[static_cast<std::size_t>(std::min({i, end - 1, last}))];
         const int k = i - bf.warmup;  // timed frame number
         const Clock::time_point t0 = Clock::now();
         if (timed) starts[static_cast<std::size_t>(i - (bf.warmup + first))] = t0;
@@ -114,8 +117,10 @@ void ProgressBar::operator()() {
     last_draw_ = now;
     constexpr int kWidth = 30;
     const int filled = std::min(done_, total_) * kWidth / total_;
-    std::fprintf(stderr, "\r%-28s [%s%s] %d/%d", label_.c_str(), std::string(static_cast<std::size_t>(filled), '#').c_str(),
-                 std::string(static_cast<std::size_t>(kWidth - filled), '.').c_str(), done_, total_);
+    std::fprintf(stderr, "\r%-28s [%s%s] %d/%d", label_.c_str(),
+                 std::string(static_cast<std::size_t>(filled), '#').c_str(),
+                 std::string(static_cast<std::size_t>(kWidth - filled), '.').c_str(), done_,
+                 total_);
     if (last) std::fputc('\n', stderr);
     std::fflush(stderr);
 }

@@ -20,11 +20,11 @@ struct BenchFrames {
 };
 
 struct FrameRecord {
-    int frame = 0;               // 0 = the first timed frame
-    double seconds = 0.0;        // simulated time
-    double ms_between = 0.0;     // this frame's start to the next one's (MsBetweenPresents)
-                                 // (the last of a stretch: to the end of its glFinish)
-    double ms_cpu_busy = 0.0;    // until render() returned; glFinish waits after it
+    int frame = 0;                // 0 = the first timed frame
+    double seconds = 0.0;         // simulated time
+    double ms_between = 0.0;      // this frame's start to the next one's (MsBetweenPresents)
+                                  // (the last of a stretch: to the end of its glFinish)
+    double ms_cpu_busy = 0.0;     // until render() returned; glFinish waits after it
     std::vector<double> pass_ms;  // in RunResult::pass_names order; < 0 when not reported
     render::FrameStats stats;
 };
@@ -43,26 +43,28 @@ using Progress = std::function<void()>;
 
 // Renders every frame (warm-up ones untimed) with `settings`, reading pass times `latency`
 // frames late for timer queries (extra frames are drawn at the end to flush them).
-RunResult run_frames(render::Renderer& renderer, const BenchFrames& frames, const scene::MeshLibrary& meshes,
-                     const std::string& label, const render::RenderSettings& settings,
-                     const Progress& progress);
+RunResult run_frames(render::Renderer& renderer, const BenchFrames& frames,
+                     const scene::MeshLibrary& meshes, const std::string& label,
+                     const render::RenderSettings& settings, const Progress& progress);
 
 // The same in pieces, for interleaving several configurations so that a machine whose load
 // drifts during the run treats them alike: start_run() once, run_chunk() for consecutive
 // stretches of timed frames (each after `warm` untimed frames that lead into it), then
 // finish_run() for the statistics.
-RunResult start_run(const BenchFrames& frames, const std::string& label, const render::RenderSettings& settings);
-void run_chunk(render::Renderer& renderer, const BenchFrames& frames, const scene::MeshLibrary& meshes, int first,
-               int count, int warm, RunResult& run, const Progress& progress);
+RunResult start_run(const BenchFrames& frames, const std::string& label,
+                    const render::RenderSettings& settings);
+void run_chunk(render::Renderer& renderer, const BenchFrames& frames,
+               const scene::MeshLibrary& meshes, int first, int count, int warm, RunResult& run,
+               const Progress& progress);
 void finish_run(RunResult& run);
 
 // A text progress bar on stderr: redrawn in place on a terminal, one line per run otherwise.
 class ProgressBar {
-public:
+  public:
     ProgressBar(std::string label, int total);
     void operator()();  // one more step done
 
-private:
+  private:
     std::string label_;
     int total_;
     int done_ = 0;

@@ -19,7 +19,8 @@ std::size_t library_triangles(const scene::MeshLibrary& lib) {
 scene::MeshLibrary subdivided(const scene::MeshLibrary& src, int levels) {
     scene::MeshLibrary out;
     for (scene::MeshId id = 0; id < src.size(); ++id) {
-        const scene::MeshId added = out.add(src.name(id), geo::subdivide_flat(src.mesh(id), levels));
+        const scene::MeshId added =
+            out.add(src.name(id), geo::subdivide_flat(src.mesh(id), levels));
         if (added != id) throw std::logic_error("subdivided library: mesh ids moved");
     }
     return out;
@@ -28,8 +29,8 @@ scene::MeshLibrary subdivided(const scene::MeshLibrary& src, int levels) {
 }  // namespace
 
 ScalingResult run_scaling(const BenchFrames& bf, const scene::MeshLibrary& meshes,
-                          const render::RenderSettings& settings, int width, int height, gl::TimingMethod timing,
-                          std::size_t max_tris, bool show_progress) {
+                          const render::RenderSettings& settings, int width, int height,
+                          gl::TimingMethod timing, std::size_t max_tris, bool show_progress) {
     ScalingResult r;
     const std::size_t base = library_triangles(meshes);
     std::vector<double> xs, ys;
@@ -37,12 +38,14 @@ ScalingResult run_scaling(const BenchFrames& bf, const scene::MeshLibrary& meshe
         const std::size_t factor = std::size_t{1} << (2 * level);
         const std::string label = std::to_string(factor) + "x";
         if (base * factor > max_tris) {
-            r.skipped.push_back(label + ": " + std::to_string(base * factor) + " triangles in the library, over the " +
-                                std::to_string(max_tris) + " cap");
+            r.skipped.push_back(label + ": " + std::to_string(base * factor) +
+                                " triangles in the library, over the " + std::to_string(max_tris) +
+                                " cap");
             continue;
         }
         // A fresh renderer per library: GPU meshes are cached by id, and the ids repeat.
-        const scene::MeshLibrary lib = level == 0 ? scene::MeshLibrary{} : subdivided(meshes, level);
+        const scene::MeshLibrary lib =
+            level == 0 ? scene::MeshLibrary{} : subdivided(meshes, level);
         const scene::MeshLibrary& use = level == 0 ? meshes : lib;
         render::Renderer fresh(settings, width, height, timing);
         ProgressBar bar("scaling " + label, static_cast<int>(bf.frames.size()) - bf.warmup);
@@ -50,7 +53,8 @@ ScalingResult run_scaling(const BenchFrames& bf, const scene::MeshLibrary& meshe
         if (show_progress) progress = [&bar] { bar(); };
         RunResult run = run_frames(fresh, bf, use, "scaling-" + label, settings, progress);
         double tris = 0.0;
-        for (const FrameRecord& f : run.frames) tris += static_cast<double>(f.stats.triangles_submitted);
+        for (const FrameRecord& f : run.frames)
+            tris += static_cast<double>(f.stats.triangles_submitted);
         tris /= static_cast<double>(std::max<std::size_t>(run.frames.size(), 1));
         r.points.push_back({label, tris, run.stats.p50_ms});
         xs.push_back(tris);
@@ -65,7 +69,8 @@ std::string scaling_json(const BenchMeta& meta, const ScalingResult& r) {
     JsonWriter j;
     j.begin_object();
     write_meta(j, meta);
-    j.field("method", "every mesh flat-subdivided 1 -> 4 per level: same surfaces and feature lines");
+    j.field("method",
+            "every mesh flat-subdivided 1 -> 4 per level: same surfaces and feature lines");
     j.key("points").begin_array();
     for (std::size_t i = 0; i < r.points.size(); ++i) {
         j.begin_object();

@@ -13,15 +13,16 @@ namespace bz::app {
 struct ScalingResult {
     std::vector<ScalingPoint> points;
     std::vector<RunResult> runs;
-    LineFit fit;  // p50 ms over triangles submitted per frame
+    LineFit fit;                       // p50 ms over triangles submitted per frame
     std::vector<std::string> skipped;  // factors left out, and why
 };
 
 // `max_library_triangles` caps the subdivided library's size (memory): larger factors are
 // skipped and named in `skipped`.
 ScalingResult run_scaling(const BenchFrames& frames, const scene::MeshLibrary& meshes,
-                          const render::RenderSettings& settings, int width, int height, gl::TimingMethod timing,
-                          std::size_t max_library_triangles, bool show_progress);
+                          const render::RenderSettings& settings, int width, int height,
+                          gl::TimingMethod timing, std::size_t max_library_triangles,
+                          bool show_progress);
 
 std::string scaling_json(const BenchMeta& meta, const ScalingResult& result);
 

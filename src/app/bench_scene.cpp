@@ -1,6 +1,7 @@
 #include "app/bench_scene.h"
 
 #include <cmath>
+#include <cstdio>
 
 #include "core/error.h"
 #include "game/autopilot.h"
@@ -17,7 +18,8 @@ constexpr double kWholeField = 1e12;
 
 }  // namespace
 
-std::optional<scene::Camera> camera_on_path(const level::Level& level, double seconds, double fov_y_deg) {
+std::optional<scene::Camera> camera_on_path(const level::Level& level, double seconds,
+                                            double fov_y_deg) {
     const auto& keys = level.camera_path;
     if (keys.empty()) return std::nullopt;
     scene::Camera c;
@@ -44,21 +46,25 @@ std::optional<scene::Camera> camera_on_path(const level::Level& level, double se
     return c;
 }
 
-BenchScene::BenchScene(level::Level level, std::optional<game::replay::Replay> replay, double fov_y_deg)
-    : level_(std::move(level)), assets_(std::make_unique<game::Assets>(level_.backdrop)), fov_(fov_y_deg) {
+BenchScene::BenchScene(level::Level level, std::optional<game::replay::Replay> replay,
+                       double fov_y_deg)
+    : level_(std::move(level)),
+      assets_(std::make_unique<game::Assets>(level_.backdrop)),
+      fov_(fov_y_deg) {
     std::uint64_t seed = 1;
     int lives = 3;
     if (replay) {
         const std::uint64_t want = game::replay::level_hash(level_);
         if (replay->header.level_hash != want) {
-            throw UserError("the replay was recorded on a different level (" + replay->header.level +
-                            ") than " + level_.file.string());
+            throw UserError("the replay was recorded on a different level (" +
+                            replay->header.level + ") than " + level_.file.string());
         }
         seed = replay->header.seed;
         lives = replay->header.lives;
         player_.emplace(std::move(*replay));
     }
-    world_ = std::make_unique<game::World>(level_, seed, assets_->factories(), assets_->models(), lives);
+    world_ =
+        std::make_unique<game::World>(level_, seed, assets_->factories(), assets_->models(), lives);
     try {
         font_ = std::make_unique<scene::VectorFont>(scene::VectorFont::load_default());
     } catch (const UserError&) {
@@ -68,14 +74,18 @@ BenchScene::BenchScene(level::Level level, std::optional<game::replay::Replay> r
 
 BenchScene::~BenchScene() = default;
 
-double BenchScene::seconds() const { return static_cast<double>(ticks_) * kBenchStep; }
+double BenchScene::seconds() const {
+    return static_cast<double>(ticks_) * kBenchStep;
+}
 
 std::string BenchScene::camera_description() const {
     if (player_) return "replay (" + std::to_string(player_->replay().commands.size()) + " ticks)";
-    if (level_.camera_path.empty()) return "player view driven by the autopilot (the level has no camera path)";
+    if (level_.camera_path.empty())
+        return "player view driven by the autopilot (the level has no camera path)";
     const double len = level_.camera_path.back().time - level_.camera_path.front().time;
     char buf[96];
-    std::snprintf(buf, sizeof buf, "camera path (%zu keys, %.1f s, repeated)", level_.camera_path.size(), len);
+    std::snprintf(buf, sizeof buf, "camera path (%zu keys, %.1f s, repeated)",
+                  level_.camera_path.size(), len);
     return buf;
 }
 
@@ -97,7 +107,8 @@ bool BenchScene::next(scene::FrameList& out, double aspect) {
         out = world_->interpolated_frame(1.0, fov_, kWholeField);
         out.camera = *camera_on_path(level_, seconds(), fov_);
     }
-    game::backdrop::append_items(out.items, level_.backdrop, assets_->horizon(), out.camera.eye, seconds());
+    game::backdrop::append_items(out.items, level_.backdrop, assets_->horizon(), out.camera.eye,
+                                 seconds());
     game::hud::View view;
     view.aspect = aspect;
     view.fov_y_deg = fov_;

@@ -21,13 +21,15 @@ inline constexpr double kBenchStep = 1.0 / 60.0;  // simulated seconds per frame
 
 // The camera on a level's path at `seconds`: eye and target interpolated linearly between
 // keys, the path repeated after its last key. Nothing when the level has no path.
-std::optional<scene::Camera> camera_on_path(const level::Level& level, double seconds, double fov_y_deg);
+std::optional<scene::Camera> camera_on_path(const level::Level& level, double seconds,
+                                            double fov_y_deg);
 
 class BenchScene {
-public:
+  public:
     // Throws UserError when the level's objects or models do not load, or the replay was
     // recorded on another level.
-    BenchScene(level::Level level, std::optional<game::replay::Replay> replay, double fov_y_deg = 45.0);
+    BenchScene(level::Level level, std::optional<game::replay::Replay> replay,
+               double fov_y_deg = 45.0);
     ~BenchScene();
 
     // Steps one tick and returns the frame at the new time. False when the replay has ended.
@@ -38,7 +40,7 @@ public:
     std::string camera_description() const;
     const level::Level& level() const { return level_; }
 
-private:
+  private:
     level::Level level_;
     std::unique_ptr<game::Assets> assets_;
     std::unique_ptr<game::World> world_;

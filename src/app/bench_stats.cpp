@@ -12,7 +12,8 @@ double percentile(std::span<const double> values, double pct) {
     std::vector<double> v(values.begin(), values.end());
     std::sort(v.begin(), v.end());
     const double rank = std::ceil(pct / 100.0 * static_cast<double>(v.size()));
-    const auto i = static_cast<std::size_t>(std::clamp(rank, 1.0, static_cast<double>(v.size()))) - 1;
+    const auto i =
+        static_cast<std::size_t>(std::clamp(rank, 1.0, static_cast<double>(v.size()))) - 1;
     return v[i];
 }
 
@@ -30,7 +31,8 @@ FrameTimeStats frame_time_stats(std::span<const double> ms) {
     s.min_ms = v.front();
     const std::size_t worst = std::max<std::size_t>(1, v.size() / 100);
     const double worst_mean =
-        std::accumulate(v.end() - static_cast<std::ptrdiff_t>(worst), v.end(), 0.0) / static_cast<double>(worst);
+        std::accumulate(v.end() - static_cast<std::ptrdiff_t>(worst), v.end(), 0.0) /
+        static_cast<double>(worst);
     s.low_1pct_fps = worst_mean > 0.0 ? 1000.0 / worst_mean : 0.0;
     s.mean_fps = s.mean_ms > 0.0 ? 1000.0 / s.mean_ms : 0.0;
     return s;

@@ -48,18 +48,22 @@ std::vector<SweepConfig> sweep_configs() {
     for (const std::string& name : render::preset_names()) {
         out.push_back({name, "preset " + name, render::preset(name)});
     }
-    SweepConfig outline{"image-outline", "baseline: Sobel on prepass depth + normals, balanced bloom",
+    SweepConfig outline{"image-outline",
+                        "baseline: Sobel on prepass depth + normals, balanced bloom",
                         render::preset("balanced")};
     outline.settings.method = render::LineMethod::image_outline;
     out.push_back(outline);
-    SweepConfig no_cull{"balanced-no-culling", "balanced, frustum culling off", render::preset("balanced")};
+    SweepConfig no_cull{"balanced-no-culling", "balanced, frustum culling off",
+                        render::preset("balanced")};
     no_cull.settings.frustum_culling = false;
     out.push_back(no_cull);
-    SweepConfig no_lod{"balanced-no-lod", "balanced, distance LOD off (no simplified meshes, one crease angle)",
+    SweepConfig no_lod{"balanced-no-lod",
+                       "balanced, distance LOD off (no simplified meshes, one crease angle)",
                        render::preset("balanced")};
     no_lod.settings.lod = false;
     out.push_back(no_lod);
-    SweepConfig no_inst{"balanced-no-instancing", "balanced, one draw call per object instead of per model",
+    SweepConfig no_inst{"balanced-no-instancing",
+                        "balanced, one draw call per object instead of per model",
                         render::preset("balanced")};
     no_inst.settings.instancing = false;
     out.push_back(no_inst);
@@ -78,8 +82,8 @@ std::vector<int> sampled_frames(int timed, int samples) {
     return out;
 }
 
-SweepResult run_sweep(const BenchFrames& bf, const scene::MeshLibrary& meshes, int width, int height,
-                      gl::TimingMethod timing, const SweepOptions& o) {
+SweepResult run_sweep(const BenchFrames& bf, const scene::MeshLibrary& meshes, int width,
+                      int height, gl::TimingMethod timing, const SweepOptions& o) {
     SweepResult result;
     const int timed = static_cast<int>(bf.frames.size()) - bf.warmup;
     result.sampled = sampled_frames(timed, o.samples);
@@ -97,12 +101,16 @@ SweepResult run_sweep(const BenchFrames& bf, const scene::MeshLibrary& meshes, i
     ProgressBar ref_bar("reference masks (CPU)", static_cast<int>(result.sampled.size()));
     for (std::size_t k = 0; k < result.sampled.size(); ++k) {
         geo::ReferenceStats st;
-        refs.push_back(render::reference_frame_mask(frame_of(result.sampled[k]), meshes, width, height, {}, &st));
+        refs.push_back(render::reference_frame_mask(frame_of(result.sampled[k]), meshes, width,
+                                                    height, {}, &st));
         result.reference_rays += st.rays;
-        if (!o.masks_dir.empty()) write_png(mask_path("reference", result.sampled[k]), Image{width, height, 1, refs.back()});
+        if (!o.masks_dir.empty())
+            write_png(mask_path("reference", result.sampled[k]),
+                      Image{width, height, 1, refs.back()});
         if (o.progress) ref_bar();
     }
-    result.reference_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    result.reference_ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 
     const std::vector<SweepConfig> configs = sweep_configs();
     std::vector<std::unique_ptr<render::Renderer>> renderers;
@@ -129,10 +137,12 @@ SweepResult run_sweep(const BenchFrames& bf, const scene::MeshLibrary& meshes, i
         finish_run(runs[c]);
         std::vector<geo::MaskScore> scores;
         for (std::size_t k = 0; k < result.sampled.size(); ++k) {
-            const std::vector<std::uint8_t> mask = renderers[c]->render_mask(frame_of(result.sampled[k]), meshes);
+            const std::vector<std::uint8_t> mask =
+                renderers[c]->render_mask(frame_of(result.sampled[k]), meshes);
             scores.push_back(geo::score_masks(mask, refs[k], width, height, 1));
             if (!o.masks_dir.empty()) {
-                write_png(mask_path(configs[c].label, result.sampled[k]), Image{width, height, 1, mask});
+                write_png(mask_path(configs[c].label, result.sampled[k]),
+                          Image{width, height, 1, mask});
             }
         }
         result.rows.push_back({configs[c], std::move(runs[c]), summarise(std::move(scores))});
@@ -158,16 +168,19 @@ std::vector<Goal> judge_goals(const std::vector<SweepRow>& rows) {
     }
     if (balanced && outline) {
         const double ratio = balanced->run.stats.p50_ms / std::max(outline->run.stats.p50_ms, 1e-9);
-        goals.push_back({"balanced: F1 above the image-space baseline", balanced->score.mean_f1 > outline->score.mean_f1,
-                         fmt("balanced mean F1 %.4f, baseline %.4f", balanced->score.mean_f1, outline->score.mean_f1)});
+        goals.push_back({"balanced: F1 above the image-space baseline",
+                         balanced->score.mean_f1 > outline->score.mean_f1,
+                         fmt("balanced mean F1 %.4f, baseline %.4f", balanced->score.mean_f1,
+                             outline->score.mean_f1)});
         goals.push_back({"balanced: p50 <= 1.5 x p50 of the baseline", ratio <= 1.5,
-                         fmt("balanced p50 %.2f ms, baseline p50 %.2f ms: %.2fx", balanced->run.stats.p50_ms,
-                             outline->run.stats.p50_ms, ratio)});
+                         fmt("balanced p50 %.2f ms, baseline p50 %.2f ms: %.2fx",
+                             balanced->run.stats.p50_ms, outline->run.stats.p50_ms, ratio)});
     }
     return goals;
 }
 
-std::string sweep_json(const BenchMeta& meta, const SweepResult& r, const std::vector<Goal>& goals) {
+std::string sweep_json(const BenchMeta& meta, const SweepResult& r,
+                       const std::vector<Goal>& goals) {
     JsonWriter j;
     j.begin_object();
     write_meta(j, meta);
@@ -184,7 +197,8 @@ std::string sweep_json(const BenchMeta& meta, const SweepResult& r, const std::v
         write_run(j, row.run);
         j.key("f1").begin_object();
         j.field("mean", row.score.mean_f1).field("min", row.score.min_f1);
-        j.field("precision_mean", row.score.mean_precision).field("recall_mean", row.score.mean_recall);
+        j.field("precision_mean", row.score.mean_precision)
+            .field("recall_mean", row.score.mean_recall);
         j.key("per_frame").begin_array();
         for (const geo::MaskScore& s : row.score.per_sample) j.value(s.f1);
         j.end_array();
@@ -194,7 +208,11 @@ std::string sweep_json(const BenchMeta& meta, const SweepResult& r, const std::v
     j.end_array();
     j.key("goals").begin_array();
     for (const Goal& g : goals) {
-        j.begin_object().field("goal", g.name).field("met", g.met).field("measured", g.detail).end_object();
+        j.begin_object()
+            .field("goal", g.name)
+            .field("met", g.met)
+            .field("measured", g.detail)
+            .end_object();
     }
     j.end_array();
     j.end_object();
@@ -202,18 +220,20 @@ std::string sweep_json(const BenchMeta& meta, const SweepResult& r, const std::v
 }
 
 void print_sweep_table(std::FILE* out, const SweepResult& r, const std::vector<Goal>& goals) {
-    std::fprintf(out, "\n%-24s %8s %8s %8s %8s %8s %8s %8s %10s\n", "config", "p50 ms", "p95", "p99", "mean", "F1",
-                 "min F1", "prec", "recall");
+    std::fprintf(out, "\n%-24s %8s %8s %8s %8s %8s %8s %8s %10s\n", "config", "p50 ms", "p95",
+                 "p99", "mean", "F1", "min F1", "prec", "recall");
     for (const SweepRow& row : r.rows) {
         const FrameTimeStats& t = row.run.stats;
-        std::fprintf(out, "%-24s %8.2f %8.2f %8.2f %8.2f %8.4f %8.4f %8.4f %10.4f\n", row.config.label.c_str(),
-                     t.p50_ms, t.p95_ms, t.p99_ms, t.mean_ms, row.score.mean_f1, row.score.min_f1,
-                     row.score.mean_precision, row.score.mean_recall);
+        std::fprintf(out, "%-24s %8.2f %8.2f %8.2f %8.2f %8.4f %8.4f %8.4f %10.4f\n",
+                     row.config.label.c_str(), t.p50_ms, t.p95_ms, t.p99_ms, t.mean_ms,
+                     row.score.mean_f1, row.score.min_f1, row.score.mean_precision,
+                     row.score.mean_recall);
     }
-    std::fprintf(out, "F1 at 1 px tolerance over %zu frames; reference masks took %.1f s of CPU\n", r.sampled.size(),
-                 r.reference_ms / 1000.0);
+    std::fprintf(out, "F1 at 1 px tolerance over %zu frames; reference masks took %.1f s of CPU\n",
+                 r.sampled.size(), r.reference_ms / 1000.0);
     for (const Goal& g : goals) {
-        std::fprintf(out, "goal %-46s %-6s %s\n", g.name.c_str(), g.met ? "MET" : "MISSED", g.detail.c_str());
+        std::fprintf(out, "goal %-46s %-6s %s\n", g.name.c_str(), g.met ? "MET" : "MISSED",
+                     g.detail.c_str());
     }
 }
 

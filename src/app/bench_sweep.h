@@ -47,7 +47,7 @@ struct Goal {
 std::vector<Goal> judge_goals(const std::vector<SweepRow>& rows);
 
 struct SweepOptions {
-    int samples = 6;                  // frames scored against the reference
+    int samples = 6;  // frames scored against the reference
     // The timed frames are split into this many stretches, run round-robin over the
     // configurations (each with its own renderer), so load that drifts during a long run on a
     // shared machine does not favour whichever configuration ran when it was quiet.
@@ -59,17 +59,18 @@ struct SweepOptions {
 
 struct SweepResult {
     std::vector<SweepRow> rows;
-    std::vector<int> sampled;         // timed-frame numbers scored
-    double reference_ms = 0.0;        // CPU time of all reference masks
+    std::vector<int> sampled;   // timed-frame numbers scored
+    double reference_ms = 0.0;  // CPU time of all reference masks
     std::size_t reference_rays = 0;
 };
 
 // Runs every configuration on `frames` (already simulated). Reference masks are computed once
 // per sampled frame.
-SweepResult run_sweep(const BenchFrames& frames, const scene::MeshLibrary& meshes, int width, int height,
-                      gl::TimingMethod timing, const SweepOptions& options);
+SweepResult run_sweep(const BenchFrames& frames, const scene::MeshLibrary& meshes, int width,
+                      int height, gl::TimingMethod timing, const SweepOptions& options);
 
-std::string sweep_json(const BenchMeta& meta, const SweepResult& result, const std::vector<Goal>& goals);
+std::string sweep_json(const BenchMeta& meta, const SweepResult& result,
+                       const std::vector<Goal>& goals);
 void print_sweep_table(std::FILE* out, const SweepResult& result, const std::vector<Goal>& goals);
 
 // The frames (timed-frame numbers) a sweep scores: `samples` spread evenly.

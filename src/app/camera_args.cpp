@@ -8,15 +8,22 @@
 namespace bz::app {
 
 bool parse_camera_option(std::string_view a, ArgCursor& cur, CameraArgs& o) {
-    if (a == "--eye") o.eye = parse_vec3(a, cur.value(a));
-    else if (a == "--target") o.target = parse_vec3(a, cur.value(a));
-    else if (a == "--up") o.up = parse_vec3(a, cur.value(a));
-    else if (a == "--fov") o.fov = parse_number(a, cur.value(a));
-    else if (a == "--near") o.near = parse_number(a, cur.value(a));
-    else if (a == "--far") o.far = parse_number(a, cur.value(a));
-    else if (a == "--size") {
+    if (a == "--size") {
         o.size = parse_size(a, cur.value(a));
         return true;
+    }
+    if (a == "--eye") {
+        o.eye = parse_vec3(a, cur.value(a));
+    } else if (a == "--target") {
+        o.target = parse_vec3(a, cur.value(a));
+    } else if (a == "--up") {
+        o.up = parse_vec3(a, cur.value(a));
+    } else if (a == "--fov") {
+        o.fov = parse_number(a, cur.value(a));
+    } else if (a == "--near") {
+        o.near = parse_number(a, cur.value(a));
+    } else if (a == "--far") {
+        o.far = parse_number(a, cur.value(a));
     } else {
         return false;
     }

@@ -1,10 +1,9 @@
 #pragma once
 // The camera options shared by `render` and `reference` (--eye --target --up --fov --near
 // --far --size), so both put the camera in exactly the same place for the same arguments.
+#include <glm/glm.hpp>
 #include <optional>
 #include <string_view>
-
-#include <glm/glm.hpp>
 
 #include "app/cli_args.h"
 #include "geometry/mesh.h"

@@ -82,7 +82,8 @@ Options parse(Args args) {
             preset_given = true;
         } else if (a == "--sweep" || a == "--scaling") {
             const Mode m = a == "--sweep" ? Mode::sweep : Mode::scaling;
-            if (o.mode != Mode::single && o.mode != m) throw UsageError("--sweep and --scaling exclude each other");
+            if (o.mode != Mode::single && o.mode != m)
+                throw UsageError("--sweep and --scaling exclude each other");
             o.mode = m;
         } else if (a == "--out") {
             o.out = cur.value(a);
@@ -106,7 +107,8 @@ Options parse(Args args) {
         }
     }
     if (o.level.empty()) throw UsageError("no LEVEL given");
-    if (preset_given && o.mode == Mode::sweep) throw UsageError("--preset and --sweep exclude each other (the sweep runs every preset)");
+    if (preset_given && o.mode == Mode::sweep)
+        throw UsageError("--preset and --sweep exclude each other (the sweep runs every preset)");
     if (o.mode == Mode::scaling && !o.frames_given) o.frames = 40;
     // Seven configurations: fewer frames each keep a sweep on llvmpipe within minutes.
     if (o.mode == Mode::sweep && !o.frames_given) o.frames = 240;
@@ -133,22 +135,27 @@ BenchFrames simulate(BenchScene& scene, const Options& o, double aspect) {
         bf.seconds.push_back(scene.seconds());
     }
     if (static_cast<int>(bf.frames.size()) <= o.warmup) {
-        throw UserError(o.replay + ": the replay has " + std::to_string(bf.frames.size()) + " ticks, not more than the " +
-                        std::to_string(o.warmup) + " warm-up frames");
+        throw UserError(o.replay + ": the replay has " + std::to_string(bf.frames.size()) +
+                        " ticks, not more than the " + std::to_string(o.warmup) +
+                        " warm-up frames");
     }
     return bf;
 }
 
-void write_text(const fs::path& p, const std::string& s) { write_file_atomic(p, s); }
+void write_text(const fs::path& p, const std::string& s) {
+    write_file_atomic(p, s);
+}
 
 int run(const Options& o) {
     level::LoadResult loaded = level::load_level_file(o.level);
     if (!loaded.ok()) {
-        for (const level::Diagnostic& d : loaded.errors) std::fprintf(stderr, "%s\n", level::format(d).c_str());
+        for (const level::Diagnostic& d : loaded.errors)
+            std::fprintf(stderr, "%s\n", level::format(d).c_str());
         return 1;
     }
     const std::string preset_name = o.preset.empty() ? loaded.level->render.preset : o.preset;
-    render::RenderSettings settings = render::preset(preset_name.empty() ? "balanced" : preset_name);
+    render::RenderSettings settings =
+        render::preset(preset_name.empty() ? "balanced" : preset_name);
     settings.count_edges = true;
     std::optional<game::replay::Replay> replay;
     if (!o.replay.empty()) replay = game::replay::load(o.replay);
@@ -194,7 +201,8 @@ int run(const Options& o) {
         fs::create_directories(so.masks_dir, ec);
         if (ec) throw UserError(so.masks_dir.string() + ": cannot create: " + ec.message());
         so.rounds = o.rounds;
-        const SweepResult result = run_sweep(frames, scene.meshes(), o.size.x, o.size.y, timing, so);
+        const SweepResult result =
+            run_sweep(frames, scene.meshes(), o.size.x, o.size.y, timing, so);
         meta.load_after = load_average();
         const std::vector<Goal> goals = judge_goals(result.rows);
         std::vector<TradeoffPoint> points;
@@ -205,38 +213,47 @@ int run(const Options& o) {
                              out / ("frametime_" + r.config.label + ".png"));
         }
         write_text(out / "sweep.json", sweep_json(meta, result, goals));
-        plot_tradeoff(points, "speed vs accuracy, " + fs::path(o.level).filename().string(), font, out / "tradeoff.png");
+        plot_tradeoff(points, "speed vs accuracy, " + fs::path(o.level).filename().string(), font,
+                      out / "tradeoff.png");
         for (const SweepRow& r : result.rows) {
-            if (r.config.label == "balanced") plot_frame_times(r.run, "balanced: frame time by pass", font, out / "frametime.png");
+            if (r.config.label == "balanced")
+                plot_frame_times(r.run, "balanced: frame time by pass", font,
+                                 out / "frametime.png");
         }
         print_summary_table(stdout, meta, runs);
         print_sweep_table(stdout, result, goals);
     } else if (o.mode == Mode::scaling) {
-        const ScalingResult result =
-            run_scaling(frames, scene.meshes(), settings, o.size.x, o.size.y, timing, 60'000'000, true);
+        const ScalingResult result = run_scaling(frames, scene.meshes(), settings, o.size.x,
+                                                 o.size.y, timing, 60'000'000, true);
         meta.load_after = load_average();
         runs = result.runs;
         write_text(out / "scaling.json", scaling_json(meta, result));
-        plot_scaling(result.points, result.fit, "frame time against triangles, " + fs::path(o.level).filename().string(),
-                     font, out / "scaling.png");
-        if (!runs.empty()) plot_frame_times(runs.front(), "1x: frame time by pass", font, out / "frametime.png");
+        plot_scaling(result.points, result.fit,
+                     "frame time against triangles, " + fs::path(o.level).filename().string(), font,
+                     out / "scaling.png");
+        if (!runs.empty())
+            plot_frame_times(runs.front(), "1x: frame time by pass", font, out / "frametime.png");
         print_summary_table(stdout, meta, runs);
-        std::printf("growth: %.2f ms per 100k triangles submitted (fit intercept %.2f ms, r2 %.3f)\n",
-                    result.fit.slope * 1e5, result.fit.intercept, result.fit.r2);
+        std::printf(
+            "growth: %.2f ms per 100k triangles submitted (fit intercept %.2f ms, r2 %.3f)\n",
+            result.fit.slope * 1e5, result.fit.intercept, result.fit.r2);
         for (const std::string& s : result.skipped) std::printf("skipped %s\n", s.c_str());
     } else {
         render::Renderer renderer(settings, o.size.x, o.size.y, timing);
         ProgressBar bar(settings.preset, meta.frames);
-        runs.push_back(run_frames(renderer, frames, scene.meshes(), settings.preset, settings, [&bar] { bar(); }));
+        runs.push_back(run_frames(renderer, frames, scene.meshes(), settings.preset, settings,
+                                  [&bar] { bar(); }));
         meta.load_after = load_average();
-        plot_frame_times(runs.front(), settings.preset + ": frame time by pass", font, out / "frametime.png");
+        plot_frame_times(runs.front(), settings.preset + ": frame time by pass", font,
+                         out / "frametime.png");
         print_summary_table(stdout, meta, runs);
     }
     write_text(out / "summary.json", summary_json(meta, runs));
     write_text(out / "frames.csv", frames_csv(runs));
     std::printf("wrote %s/\n", o.out.c_str());
     if (context->debug().error_count() > 0) {
-        std::fprintf(stderr, "beamzone bench: %d OpenGL error(s) reported\n", context->debug().error_count());
+        std::fprintf(stderr, "beamzone bench: %d OpenGL error(s) reported\n",
+                     context->debug().error_count());
         return 1;
     }
     return 0;

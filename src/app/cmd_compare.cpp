@@ -73,13 +73,16 @@ int cmd_compare(Args args) {
     const Image test = read_png(o.test, 1);
     const Image ref = read_png(o.ref, 1);
     if (test.width != ref.width || test.height != ref.height) {
-        throw UserError(o.test + " is " + std::to_string(test.width) + "x" + std::to_string(test.height) + " but " +
-                        o.ref + " is " + std::to_string(ref.width) + "x" + std::to_string(ref.height) +
+        throw UserError(o.test + " is " + std::to_string(test.width) + "x" +
+                        std::to_string(test.height) + " but " + o.ref + " is " +
+                        std::to_string(ref.width) + "x" + std::to_string(ref.height) +
                         ": masks must have the same size");
     }
-    const geo::MaskScore s = geo::score_masks(lit_pixels(test), lit_pixels(ref), test.width, test.height, o.tol);
-    std::printf("precision %.4f recall %.4f f1 %.4f (test %zu lit, reference %zu lit, tolerance %d px)\n",
-                s.precision, s.recall, s.f1, s.test_lit, s.ref_lit, o.tol);
+    const geo::MaskScore s =
+        geo::score_masks(lit_pixels(test), lit_pixels(ref), test.width, test.height, o.tol);
+    std::printf(
+        "precision %.4f recall %.4f f1 %.4f (test %zu lit, reference %zu lit, tolerance %d px)\n",
+        s.precision, s.recall, s.f1, s.test_lit, s.ref_lit, o.tol);
     return 0;
 }
 

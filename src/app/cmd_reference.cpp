@@ -50,15 +50,23 @@ Options parse(Args args) {
     while (!cur.done()) {
         const std::string_view a = cur.next();
         if (parse_camera_option(a, cur, o.camera)) continue;
-        if (a == "--level") o.level = cur.value(a);
-        else if (a == "--time") o.time = parse_number(a, cur.value(a));
-        else if (a == "--crease") o.crease = parse_number(a, cur.value(a));
-        else if (a == "--mask" || a == "--out") o.mask = cur.value(a);
-        else if (a == "--style") {
+        if (a == "--level") {
+            o.level = cur.value(a);
+        } else if (a == "--time") {
+            o.time = parse_number(a, cur.value(a));
+        } else if (a == "--crease") {
+            o.crease = parse_number(a, cur.value(a));
+        } else if (a == "--mask" || a == "--out") {
+            o.mask = cur.value(a);
+        } else if (a == "--style") {
             const std::string_view s = cur.value(a);
-            if (s == "occluded") o.style = scene::LineStyle::occluded;
-            else if (s == "arcade") o.style = scene::LineStyle::arcade;
-            else throw UsageError("--style: expected occluded or arcade");
+            if (s == "occluded") {
+                o.style = scene::LineStyle::occluded;
+            } else if (s == "arcade") {
+                o.style = scene::LineStyle::arcade;
+            } else {
+                throw UsageError("--style: expected occluded or arcade");
+            }
         } else if (!a.empty() && a[0] == '-') {
             throw UsageError("unknown option " + std::string(a));
         } else if (o.input.empty()) {
@@ -75,7 +83,8 @@ Options parse(Args args) {
         if (!o.input.empty()) throw UsageError("give either INPUT or --level, not both");
         if (!o.time) throw UsageError("--level needs --time SECONDS");
         if (*o.time < 0.0 || *o.time > 3600.0) throw UsageError("--time must be in [0, 3600]");
-        if (o.camera.any_view_option) throw UsageError("--level takes its camera from the level's path: only --size applies");
+        if (o.camera.any_view_option)
+            throw UsageError("--level takes its camera from the level's path: only --size applies");
     }
     if (!(o.crease > 0.0 && o.crease <= 180.0)) throw UsageError("--crease must be in (0, 180]");
     return o;
@@ -100,7 +109,8 @@ int run(const Options& o) {
     if (!o.level.empty()) {
         level::LoadResult loaded = level::load_level_file(o.level);
         if (!loaded.ok()) {
-            for (const level::Diagnostic& d : loaded.errors) std::fprintf(stderr, "%s\n", level::format(d).c_str());
+            for (const level::Diagnostic& d : loaded.errors)
+                std::fprintf(stderr, "%s\n", level::format(d).c_str());
             return 1;
         }
         BenchScene scene(std::move(*loaded.level), std::nullopt);
@@ -113,16 +123,20 @@ int run(const Options& o) {
         const geo::Bounds bounds = geo::compute_bounds(mesh.positions);
         scene::MeshLibrary meshes;
         scene::FrameList frame;
-        frame.items.push_back({meshes.add(o.input, std::move(mesh)), glm::dmat4(1.0), glm::vec3(1.0f), 1.0f, true});
+        frame.items.push_back(
+            {meshes.add(o.input, std::move(mesh)), glm::dmat4(1.0), glm::vec3(1.0f), 1.0f, true});
         frame.camera = camera_for(o.camera, bounds);
         frame.style = o.style;
         mask = render::reference_frame_mask(frame, meshes, size.x, size.y, ro, &stats);
     }
-    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    const double ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     write_png(o.mask, Image{size.x, size.y, 1, std::move(mask)});
-    std::printf("%s: %zu lit pixels; %zu feature edges (%zu on screen), %zu occluder triangles, %zu rays, %.0f ms\n",
-                o.mask.c_str(), stats.lit_pixels, stats.feature_edges, stats.drawn_edges, stats.occluder_triangles,
-                stats.rays, ms);
+    std::printf(
+        "%s: %zu lit pixels; %zu feature edges (%zu on screen), %zu occluder triangles, %zu rays, "
+        "%.0f ms\n",
+        o.mask.c_str(), stats.lit_pixels, stats.feature_edges, stats.drawn_edges,
+        stats.occluder_triangles, stats.rays, ms);
     return 0;
 }
 

@@ -8,7 +8,7 @@
 namespace bz::app {
 
 class JsonWriter {
-public:
+  public:
     JsonWriter& begin_object();
     JsonWriter& end_object();
     JsonWriter& begin_array();
@@ -27,7 +27,7 @@ public:
     }
     const std::string& str() const { return out_; }
 
-private:
+  private:
     void before_value();
     void newline();
     std::string out_;

@@ -8,7 +8,9 @@ namespace bz::app {
 
 namespace {
 
-std::uint8_t to_byte(float v) { return static_cast<std::uint8_t>(std::clamp(v, 0.0f, 1.0f) * 255.0f + 0.5f); }
+std::uint8_t to_byte(float v) {
+    return static_cast<std::uint8_t>(std::clamp(v, 0.0f, 1.0f) * 255.0f + 0.5f);
+}
 
 float segment_distance(glm::vec2 p, glm::vec2 a, glm::vec2 b) {
     const glm::vec2 ab = b - a;
@@ -21,7 +23,8 @@ float segment_distance(glm::vec2 p, glm::vec2 a, glm::vec2 b) {
 
 Canvas::Canvas(int width, int height, glm::vec3 background, const scene::VectorFont* font)
     : width_(std::max(width, 1)), height_(std::max(height, 1)), font_(font) {
-    image_ = Image{width_, height_, 4, std::vector<std::uint8_t>(static_cast<std::size_t>(width_) * height_ * 4)};
+    image_ = Image{width_, height_, 4,
+                   std::vector<std::uint8_t>(static_cast<std::size_t>(width_) * height_ * 4)};
     for (std::size_t i = 0; i < image_.pixels.size(); i += 4) {
         image_.pixels[i] = to_byte(background.r);
         image_.pixels[i + 1] = to_byte(background.g);
@@ -34,7 +37,8 @@ void Canvas::blend(int x, int y, glm::vec3 c, float alpha) {
     if (x < 0 || y < 0 || x >= width_ || y >= height_ || alpha <= 0.0f) return;
     alpha = std::min(alpha, 1.0f);
     // Row 0 of the image is the top.
-    const std::size_t i = (static_cast<std::size_t>(height_ - 1 - y) * width_ + static_cast<std::size_t>(x)) * 4;
+    const std::size_t i =
+        (static_cast<std::size_t>(height_ - 1 - y) * width_ + static_cast<std::size_t>(x)) * 4;
     for (int k = 0; k < 3; ++k) {
         const float old = image_.pixels[i + static_cast<std::size_t>(k)] / 255.0f;
         image_.pixels[i + static_cast<std::size_t>(k)] = to_byte(old + (c[k] - old) * alpha);
@@ -43,8 +47,10 @@ void Canvas::blend(int x, int y, glm::vec3 c, float alpha) {
 
 void Canvas::fill_rect(glm::vec2 lo, glm::vec2 hi, glm::vec3 color) {
     const glm::vec2 a = glm::min(lo, hi), b = glm::max(lo, hi);
-    const int x0 = std::max(0, static_cast<int>(std::floor(a.x))), x1 = std::min(width_ - 1, static_cast<int>(std::ceil(b.x)) - 1);
-    const int y0 = std::max(0, static_cast<int>(std::floor(a.y))), y1 = std::min(height_ - 1, static_cast<int>(std::ceil(b.y)) - 1);
+    const int x0 = std::max(0, static_cast<int>(std::floor(a.x))),
+              x1 = std::min(width_ - 1, static_cast<int>(std::ceil(b.x)) - 1);
+    const int y0 = std::max(0, static_cast<int>(std::floor(a.y))),
+              y1 = std::min(height_ - 1, static_cast<int>(std::ceil(b.y)) - 1);
     for (int y = y0; y <= y1; ++y) {
         for (int x = x0; x <= x1; ++x) {
             // Partial coverage at the rectangle's fractional edges.
@@ -59,20 +65,25 @@ void Canvas::fill_rect(glm::vec2 lo, glm::vec2 hi, glm::vec3 color) {
 void Canvas::line(glm::vec2 a, glm::vec2 b, glm::vec3 color, float width) {
     const float r = std::max(width, 0.5f) * 0.5f;
     const glm::vec2 lo = glm::min(a, b) - (r + 1.0f), hi = glm::max(a, b) + (r + 1.0f);
-    const int x0 = std::max(0, static_cast<int>(lo.x)), x1 = std::min(width_ - 1, static_cast<int>(hi.x));
-    const int y0 = std::max(0, static_cast<int>(lo.y)), y1 = std::min(height_ - 1, static_cast<int>(hi.y));
+    const int x0 = std::max(0, static_cast<int>(lo.x)),
+              x1 = std::min(width_ - 1, static_cast<int>(hi.x));
+    const int y0 = std::max(0, static_cast<int>(lo.y)),
+              y1 = std::min(height_ - 1, static_cast<int>(hi.y));
     for (int y = y0; y <= y1; ++y) {
         for (int x = x0; x <= x1; ++x) {
-            const float d = segment_distance({static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f}, a, b);
+            const float d = segment_distance(
+                {static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f}, a, b);
             blend(x, y, color, std::clamp(r + 0.5f - d, 0.0f, 1.0f));
         }
     }
 }
 
-void Canvas::disc(glm::vec2 centre, float radius, glm::vec3 color) { line(centre, centre, color, radius * 2.0f); }
+void Canvas::disc(glm::vec2 centre, float radius, glm::vec3 color) {
+    line(centre, centre, color, radius * 2.0f);
+}
 
-void Canvas::text(std::string_view s, glm::vec2 origin, float height, glm::vec3 color, scene::TextAlign align,
-                  bool vertical) {
+void Canvas::text(std::string_view s, glm::vec2 origin, float height, glm::vec3 color,
+                  scene::TextAlign align, bool vertical) {
     if (!font_ || s.empty()) return;
     std::vector<scene::HudLine> strokes;
     font_->draw(strokes, s, {0.0f, 0.0f}, height, color, align);
@@ -87,8 +98,12 @@ void Canvas::text(std::string_view s, glm::vec2 origin, float height, glm::vec3 
     }
 }
 
-float Canvas::text_width(std::string_view s, float height) const { return font_ ? font_->width(s, height) : 0.0f; }
+float Canvas::text_width(std::string_view s, float height) const {
+    return font_ ? font_->width(s, height) : 0.0f;
+}
 
-void Canvas::save(const std::filesystem::path& path) const { write_png(path, image_); }
+void Canvas::save(const std::filesystem::path& path) const {
+    write_png(path, image_);
+}
 
 }  // namespace bz::app

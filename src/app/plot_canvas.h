@@ -3,9 +3,8 @@
 // text (Hershey font through scene::VectorFont) on an RGB image, saved with bz::write_png.
 // Coordinates are pixels with y up from the bottom-left, like the rest of the renderer.
 #include <filesystem>
-#include <string_view>
-
 #include <glm/glm.hpp>
+#include <string_view>
 
 #include "core/image_io.h"
 #include "scene/vector_font.h"
@@ -13,7 +12,7 @@
 namespace bz::app {
 
 class Canvas {
-public:
+  public:
     // `font` may be null: text is then left out.
     Canvas(int width, int height, glm::vec3 background, const scene::VectorFont* font);
 
@@ -32,7 +31,7 @@ public:
     const Image& image() const { return image_; }
     void save(const std::filesystem::path& path) const;  // atomic; throws UserError
 
-private:
+  private:
     void blend(int x, int y, glm::vec3 color, float alpha);
     int width_;
     int height_;

@@ -48,7 +48,8 @@ Chart::Chart(Canvas& canvas, Axis x, Axis y, std::string title)
 
 glm::vec2 Chart::map(double x, double y) const {
     const double fx = (x - x_.lo) / (x_.hi - x_.lo), fy = (y - y_.lo) / (y_.hi - y_.lo);
-    return {lo_.x + static_cast<float>(fx) * (hi_.x - lo_.x), lo_.y + static_cast<float>(fy) * (hi_.y - lo_.y)};
+    return {lo_.x + static_cast<float>(fx) * (hi_.x - lo_.x),
+            lo_.y + static_cast<float>(fy) * (hi_.y - lo_.y)};
 }
 
 void Chart::draw_frame() {
@@ -58,7 +59,8 @@ void Chart::draw_frame() {
         const glm::vec2 p = map(v, y_.lo);
         canvas_.line({p.x, lo_.y}, {p.x, hi_.y}, kGrid);
         canvas_.line({p.x, lo_.y}, {p.x, lo_.y - 5.0f}, kInk);
-        canvas_.text(tick_label(v, sx), {p.x, lo_.y - 20.0f}, kTickText, kInk, scene::TextAlign::center);
+        canvas_.text(tick_label(v, sx), {p.x, lo_.y - 20.0f}, kTickText, kInk,
+                     scene::TextAlign::center);
     }
     for (double v = std::ceil(y_.lo / sy - 1e-9) * sy; v <= y_.hi + sy * 1e-6; v += sy) {
         const glm::vec2 p = map(x_.lo, v);
@@ -70,9 +72,10 @@ void Chart::draw_frame() {
     canvas_.line(lo_, {hi_.x, lo_.y}, kInk, 1.5f);
     canvas_.line(lo_, {lo_.x, hi_.y}, kInk, 1.5f);
     canvas_.text(x_.label, {(lo_.x + hi_.x) * 0.5f, 18.0f}, 13.0f, kInk, scene::TextAlign::center);
-    canvas_.text(y_.label, {28.0f, (lo_.y + hi_.y) * 0.5f}, 13.0f, kInk, scene::TextAlign::center, true);
-    canvas_.text(title_, {(lo_.x + hi_.x) * 0.5f, static_cast<float>(canvas_.height()) - 30.0f}, 15.0f, kInk,
-                 scene::TextAlign::center);
+    canvas_.text(y_.label, {28.0f, (lo_.y + hi_.y) * 0.5f}, 13.0f, kInk, scene::TextAlign::center,
+                 true);
+    canvas_.text(title_, {(lo_.x + hi_.x) * 0.5f, static_cast<float>(canvas_.height()) - 30.0f},
+                 15.0f, kInk, scene::TextAlign::center);
 }
 
 void Chart::legend_entry(int row, const std::string& name, glm::vec3 color) {

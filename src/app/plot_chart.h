@@ -21,7 +21,7 @@ std::string tick_label(double v, double step);
 Axis nice_axis(double lo, double hi, std::string label, int target_ticks = 6);
 
 class Chart {
-public:
+  public:
     // The plot area leaves margins for labels inside the canvas.
     Chart(Canvas& canvas, Axis x, Axis y, std::string title);
     glm::vec2 map(double x, double y) const;
@@ -32,7 +32,7 @@ public:
     glm::vec2 plot_lo() const { return lo_; }
     glm::vec2 plot_hi() const { return hi_; }
 
-private:
+  private:
     Canvas& canvas_;
     Axis x_, y_;
     std::string title_;

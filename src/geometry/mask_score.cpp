@@ -11,17 +11,22 @@ namespace {
 // Box dilation by tol, separably: rows then columns.
 std::vector<std::uint8_t> dilate(std::span<const std::uint8_t> m, int w, int h, int tol) {
     std::vector<std::uint8_t> rows(m.size(), 0), out(m.size(), 0);
-    auto at = [w](int x, int y) { return static_cast<std::size_t>(y) * static_cast<std::size_t>(w) + static_cast<std::size_t>(x); };
+    auto at = [w](int x, int y) {
+        return static_cast<std::size_t>(y) * static_cast<std::size_t>(w) +
+               static_cast<std::size_t>(x);
+    };
     for (int y = 0; y < h; ++y) {
         for (int x = 0; x < w; ++x) {
             if (!m[at(x, y)]) continue;
-            for (int dx = std::max(0, x - tol); dx <= std::min(w - 1, x + tol); ++dx) rows[at(dx, y)] = 1;
+            for (int dx = std::max(0, x - tol); dx <= std::min(w - 1, x + tol); ++dx)
+                rows[at(dx, y)] = 1;
         }
     }
     for (int y = 0; y < h; ++y) {
         for (int x = 0; x < w; ++x) {
             if (!rows[at(x, y)]) continue;
-            for (int dy = std::max(0, y - tol); dy <= std::min(h - 1, y + tol); ++dy) out[at(x, dy)] = 1;
+            for (int dy = std::max(0, y - tol); dy <= std::min(h - 1, y + tol); ++dy)
+                out[at(x, dy)] = 1;
         }
     }
     return out;
@@ -42,11 +47,13 @@ double fraction_near(std::span<const std::uint8_t> from, const std::vector<std::
 
 }  // namespace
 
-MaskScore score_masks(std::span<const std::uint8_t> test, std::span<const std::uint8_t> ref, int width,
-                      int height, int tol) {
-    if (width < 1 || height < 1 || tol < 0) throw std::invalid_argument("score_masks: bad size or tolerance");
+MaskScore score_masks(std::span<const std::uint8_t> test, std::span<const std::uint8_t> ref,
+                      int width, int height, int tol) {
+    if (width < 1 || height < 1 || tol < 0)
+        throw std::invalid_argument("score_masks: bad size or tolerance");
     const std::size_t n = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
-    if (test.size() != n || ref.size() != n) throw std::invalid_argument("score_masks: mask sizes differ");
+    if (test.size() != n || ref.size() != n)
+        throw std::invalid_argument("score_masks: mask sizes differ");
     MaskScore s;
     s.precision = fraction_near(test, dilate(ref, width, height, tol), s.test_lit);
     s.recall = fraction_near(ref, dilate(test, width, height, tol), s.ref_lit);

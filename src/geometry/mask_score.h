@@ -18,7 +18,7 @@ struct MaskScore {
 // (2 tol + 1)^2 square around a pixel (Chebyshev distance <= tol). An empty mask counts as
 // fully precise (nothing wrong was drawn) and as fully recalled only if the other is empty too.
 // Throws std::invalid_argument when the sizes do not match or tol < 0.
-MaskScore score_masks(std::span<const std::uint8_t> test, std::span<const std::uint8_t> ref, int width,
-                      int height, int tolerance_px);
+MaskScore score_masks(std::span<const std::uint8_t> test, std::span<const std::uint8_t> ref,
+                      int width, int height, int tolerance_px);
 
 }  // namespace bz::geo

@@ -17,8 +17,10 @@ using detail::FeatureEdge;
 
 void check_inputs(std::span<const ReferenceInstance> instances, const ReferenceView& v,
                   const ReferenceOptions& o) {
-    if (v.width < 1 || v.height < 1) throw std::invalid_argument("reference: image size must be >= 1x1");
-    if (!(v.fov_y_deg > 0.0 && v.fov_y_deg < 180.0)) throw std::invalid_argument("reference: fov must be in (0, 180)");
+    if (v.width < 1 || v.height < 1)
+        throw std::invalid_argument("reference: image size must be >= 1x1");
+    if (!(v.fov_y_deg > 0.0 && v.fov_y_deg < 180.0))
+        throw std::invalid_argument("reference: fov must be in (0, 180)");
     if (!(v.near > 0.0 && v.far > v.near && std::isfinite(v.far))) {
         throw std::invalid_argument("reference: need 0 < near < far < inf");
     }
@@ -39,8 +41,8 @@ std::vector<glm::dvec3> view_positions(const ReferenceInstance& inst) {
     return out;
 }
 
-void add_occluders(const ReferenceInstance& inst, std::uint32_t index, const std::vector<glm::dvec3>& vp,
-                   std::vector<detail::BvhTriangle>& out) {
+void add_occluders(const ReferenceInstance& inst, std::uint32_t index,
+                   const std::vector<glm::dvec3>& vp, std::vector<detail::BvhTriangle>& out) {
     const std::vector<std::uint32_t>& t = inst.mesh->triangles;
     for (std::size_t i = 0; i + 2 < t.size(); i += 3) {
         out.push_back({vp[t[i]], vp[t[i + 1]], vp[t[i + 2]], index, t[i], t[i + 1], t[i + 2]});
@@ -48,9 +50,9 @@ void add_occluders(const ReferenceInstance& inst, std::uint32_t index, const std
 }
 
 class Visibility {
-public:
-    Visibility(const detail::TriangleBvh& bvh, const detail::Projection& p, const ReferenceOptions& o,
-               ReferenceStats& stats)
+  public:
+    Visibility(const detail::TriangleBvh& bvh, const detail::Projection& p,
+               const ReferenceOptions& o, ReferenceStats& stats)
         : bvh_(bvh), proj_(p), options_(o), stats_(stats) {}
 
     // Is the point of `e` at window parameter u visible from the eye?
@@ -66,7 +68,7 @@ public:
         return !bvh_.any_hit(glm::dvec3(0.0), point, t_min, t_max, {f.instance, f.va, f.vb});
     }
 
-private:
+  private:
     const detail::TriangleBvh& bvh_;
     detail::Projection proj_;
     const ReferenceOptions& options_;
@@ -76,9 +78,10 @@ private:
 // Samples visibility along the on-screen part of the edge and marks the pixels crossed by each
 // visible stretch; where visibility changes between two samples, bisection finds the switch.
 void draw_edge(const ClippedEdge& e, const FeatureEdge& f, const Visibility& visible,
-               const detail::Projection& p, const ReferenceOptions& o, std::vector<std::uint8_t>& mask,
-               ReferenceStats& stats) {
-    const auto range = detail::clip_to_rect(e.sa, e.sb, {-1.0, -1.0}, {p.width + 1.0, p.height + 1.0});
+               const detail::Projection& p, const ReferenceOptions& o,
+               std::vector<std::uint8_t>& mask, ReferenceStats& stats) {
+    const auto range =
+        detail::clip_to_rect(e.sa, e.sb, {-1.0, -1.0}, {p.width + 1.0, p.height + 1.0});
     if (!range) return;
     ++stats.drawn_edges;
     const double u0 = (*range)[0], u1 = (*range)[1];
@@ -102,7 +105,8 @@ void draw_edge(const ClippedEdge& e, const FeatureEdge& f, const Visibility& vis
                 (visible(e, f, mid) == prev ? lo : hi) = mid;
             }
             if (prev) {
-                stats.lit_pixels += detail::mark_segment(mask, p.width, p.height, window(run_start), window(lo));
+                stats.lit_pixels +=
+                    detail::mark_segment(mask, p.width, p.height, window(run_start), window(lo));
                 in_run = false;
             } else {
                 run_start = hi;
@@ -115,7 +119,9 @@ void draw_edge(const ClippedEdge& e, const FeatureEdge& f, const Visibility& vis
         prev = vis;
         prev_u = u;
     }
-    if (in_run) stats.lit_pixels += detail::mark_segment(mask, p.width, p.height, window(run_start), window(u1));
+    if (in_run)
+        stats.lit_pixels +=
+            detail::mark_segment(mask, p.width, p.height, window(run_start), window(u1));
 }
 
 }  // namespace
@@ -140,7 +146,8 @@ std::vector<std::uint8_t> reference_mask(std::span<const ReferenceInstance> inst
     const detail::Projection proj = detail::Projection::of(view);
     const Visibility visible(bvh, proj, options, stats);
 
-    std::vector<std::uint8_t> mask(static_cast<std::size_t>(view.width) * static_cast<std::size_t>(view.height), 0);
+    std::vector<std::uint8_t> mask(
+        static_cast<std::size_t>(view.width) * static_cast<std::size_t>(view.height), 0);
     for (const FeatureEdge& f : edges) {
         const auto clipped = detail::clip_edge(f.a, f.b, proj);
         if (clipped) draw_edge(*clipped, f, visible, proj, options, mask, stats);

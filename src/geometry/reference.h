@@ -16,10 +16,9 @@
 //  - A pixel is lit iff a visible part of an edge crosses its unit square.
 #include <cstddef>
 #include <cstdint>
+#include <glm/glm.hpp>
 #include <span>
 #include <vector>
-
-#include <glm/glm.hpp>
 
 #include "geometry/mesh.h"
 
@@ -41,17 +40,17 @@ struct ReferenceView {
 };
 
 struct ReferenceOptions {
-    bool occlusion = true;            // false: every feature edge shows (the arcade style)
-    double samples_per_pixel = 4.0;   // visibility samples along each edge, per pixel of length
-    int refine_steps = 8;             // bisection steps where visibility changes between samples
-    double relative_epsilon = 1e-7;   // a hit at t >= 1 - eps (t = 1 at the point) does not hide
+    bool occlusion = true;           // false: every feature edge shows (the arcade style)
+    double samples_per_pixel = 4.0;  // visibility samples along each edge, per pixel of length
+    int refine_steps = 8;            // bisection steps where visibility changes between samples
+    double relative_epsilon = 1e-7;  // a hit at t >= 1 - eps (t = 1 at the point) does not hide
 };
 
 struct ReferenceStats {
-    std::size_t feature_edges = 0;        // edges found, before clipping
-    std::size_t drawn_edges = 0;          // edges left after clipping that touch the viewport
+    std::size_t feature_edges = 0;  // edges found, before clipping
+    std::size_t drawn_edges = 0;    // edges left after clipping that touch the viewport
     std::size_t occluder_triangles = 0;
-    std::size_t rays = 0;                 // visibility queries
+    std::size_t rays = 0;  // visibility queries
     std::size_t lit_pixels = 0;
 };
 

@@ -15,7 +15,9 @@ constexpr int kMaxDepth = 60;
 // despite rounding.
 constexpr double kEdgeSlack = 1e-12;
 
-glm::dvec3 centroid(const BvhTriangle& t) { return (t.p0 + t.p1 + t.p2) / 3.0; }
+glm::dvec3 centroid(const BvhTriangle& t) {
+    return (t.p0 + t.p1 + t.p2) / 3.0;
+}
 
 bool excluded_by(const BvhTriangle& t, const ExcludedEdge& e) {
     if (t.instance != e.instance) return false;
@@ -68,7 +70,8 @@ TriangleBvh::TriangleBvh(std::vector<BvhTriangle> triangles) : triangles_(std::m
 std::uint32_t TriangleBvh::build(std::uint32_t first, std::uint32_t count, int depth) {
     const auto index = static_cast<std::uint32_t>(nodes_.size());
     nodes_.push_back({});
-    glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
+    glm::dvec3 lo(std::numeric_limits<double>::infinity()),
+        hi(-std::numeric_limits<double>::infinity());
     glm::dvec3 clo = lo, chi = hi;
     for (std::uint32_t i = first; i < first + count; ++i) {
         const BvhTriangle& t = triangles_[i];
@@ -86,7 +89,8 @@ std::uint32_t TriangleBvh::build(std::uint32_t first, std::uint32_t count, int d
         nodes_[index].count = count;
         return index;
     }
-    const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
+    const int axis =
+        extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
     const std::uint32_t half = count / 2;
     std::nth_element(triangles_.begin() + first, triangles_.begin() + first + half,
                      triangles_.begin() + first + count,
@@ -100,8 +104,8 @@ std::uint32_t TriangleBvh::build(std::uint32_t first, std::uint32_t count, int d
     return index;
 }
 
-bool TriangleBvh::any_hit(const glm::dvec3& origin, const glm::dvec3& dir, double t_min, double t_max,
-                          const ExcludedEdge& excluded) const {
+bool TriangleBvh::any_hit(const glm::dvec3& origin, const glm::dvec3& dir, double t_min,
+                          double t_max, const ExcludedEdge& excluded) const {
     if (nodes_.empty() || !(t_min <= t_max)) return false;
     const glm::dvec3 inv_dir = 1.0 / dir;
     std::array<std::uint32_t, 2 * kMaxDepth + 8> stack{};

@@ -2,9 +2,8 @@
 // A bounding-volume hierarchy over triangles in double precision, answering one question for
 // the CPU reference: does a segment hit any triangle (other than an excluded edge's faces)?
 #include <cstdint>
-#include <vector>
-
 #include <glm/glm.hpp>
+#include <vector>
 
 namespace bz::geo::detail {
 
@@ -22,7 +21,7 @@ struct ExcludedEdge {
 };
 
 class TriangleBvh {
-public:
+  public:
     explicit TriangleBvh(std::vector<BvhTriangle> triangles);
 
     // True if origin + t * dir hits a non-excluded triangle for some t in [t_min, t_max].
@@ -32,7 +31,7 @@ public:
 
     std::size_t size() const { return triangles_.size(); }
 
-private:
+  private:
     struct Node {
         glm::dvec3 lo{0.0}, hi{0.0};
         std::uint32_t first = 0;  // leaf: first triangle; inner: right child (left is next)

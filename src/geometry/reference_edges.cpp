@@ -23,7 +23,9 @@ glm::dvec3 unit(const glm::dvec3& n) {
     return len > 0.0 ? n / len : glm::dvec3(0.0);
 }
 
-glm::dvec3 object_pos(const AdjacencyMesh& m, std::uint32_t i) { return glm::dvec3(m.positions[i]); }
+glm::dvec3 object_pos(const AdjacencyMesh& m, std::uint32_t i) {
+    return glm::dvec3(m.positions[i]);
+}
 
 std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) {
     return (std::uint64_t{std::min(a, b)} << 32) | std::max(a, b);
@@ -41,7 +43,8 @@ void find_feature_edges(const ReferenceInstance& inst, std::uint32_t instance_in
         const std::uint32_t* adj = &m.adjacency[t * 6];
         const glm::dvec3 n_view = face_normal(vp[adj[0]], vp[adj[2]], vp[adj[4]]);
         const bool front = glm::dot(n_view, -vp[adj[0]]) > 0.0;
-        const glm::dvec3 n_obj = unit(face_normal(object_pos(m, adj[0]), object_pos(m, adj[2]), object_pos(m, adj[4])));
+        const glm::dvec3 n_obj =
+            unit(face_normal(object_pos(m, adj[0]), object_pos(m, adj[2]), object_pos(m, adj[4])));
         for (int e = 0; e < 3; ++e) {
             const std::uint32_t v0 = adj[2 * e], va = adj[2 * e + 1], v1 = adj[(2 * e + 2) % 6];
             FeatureEdge fe{vp[v0], vp[v1], instance_index, v0, v1, FeatureKind::boundary};
@@ -56,9 +59,10 @@ void find_feature_edges(const ReferenceInstance& inst, std::uint32_t instance_in
                 continue;
             }
             if (front != neighbour_front) continue;  // the other face owns this silhouette
-            if (v0 > v1) continue;                    // each crease once
+            if (v0 > v1) continue;                   // each crease once
             // geometry/dihedral.cpp's cosine, kept in double.
-            const glm::dvec3 m_obj = unit(face_normal(object_pos(m, v0), object_pos(m, va), object_pos(m, v1)));
+            const glm::dvec3 m_obj =
+                unit(face_normal(object_pos(m, v0), object_pos(m, va), object_pos(m, v1)));
             if (glm::dot(n_obj, m_obj) < inst.cos_crease) {
                 fe.kind = FeatureKind::crease;
                 out.push_back(fe);

@@ -35,12 +35,16 @@ std::optional<ClippedEdge> clip_edge(glm::dvec3 a, glm::dvec3 b, const Projectio
     double da = -a.z, db = -b.z;
     if (da < p.near && db < p.near) return std::nullopt;
     if (da > p.far && db > p.far) return std::nullopt;
-    if (da < p.near) a = glm::mix(a, b, (p.near - da) / (db - da));
-    else if (db < p.near) b = glm::mix(b, a, (p.near - db) / (da - db));
+    if (da < p.near)
+        a = glm::mix(a, b, (p.near - da) / (db - da));
+    else if (db < p.near)
+        b = glm::mix(b, a, (p.near - db) / (da - db));
     da = -a.z;
     db = -b.z;
-    if (da > p.far) a = glm::mix(a, b, (da - p.far) / (da - db));
-    else if (db > p.far) b = glm::mix(b, a, (db - p.far) / (db - da));
+    if (da > p.far)
+        a = glm::mix(a, b, (da - p.far) / (da - db));
+    else if (db > p.far)
+        b = glm::mix(b, a, (db - p.far) / (db - da));
 
     // Clip space is affine in view space, so clipping there moves the view points alike.
     glm::dvec4 ca = p.clip(a), cb = p.clip(b);
@@ -90,7 +94,8 @@ std::optional<glm::dvec2> clip_to_rect(glm::dvec2 sa, glm::dvec2 sb, glm::dvec2 
 
 bool crosses_pixel(glm::dvec2 c, glm::dvec2 a, glm::dvec2 b) {
     const glm::dvec2 lo = glm::min(a, b), hi = glm::max(a, b);
-    if (hi.x < c.x - 0.5 || lo.x >= c.x + 0.5 || hi.y < c.y - 0.5 || lo.y >= c.y + 0.5) return false;
+    if (hi.x < c.x - 0.5 || lo.x >= c.x + 0.5 || hi.y < c.y - 0.5 || lo.y >= c.y + 0.5)
+        return false;
     const glm::dvec2 d = b - a;
     const glm::dvec2 n(-d.y, d.x);
     return std::abs(glm::dot(n, c - a)) <= 0.5 * (std::abs(n.x) + std::abs(n.y));
@@ -121,8 +126,9 @@ std::size_t mark_segment(std::vector<std::uint8_t>& mask, int width, int height,
         const int xb = std::min(width - 1, static_cast<int>(std::floor(xhi)) + 1);
         for (int x = xa; x <= xb; ++x) {
             if (!crosses_pixel({x + 0.5, y + 0.5}, a, b)) continue;
-            auto& px = mask[static_cast<std::size_t>(height - 1 - y) * static_cast<std::size_t>(width) +
-                            static_cast<std::size_t>(x)];
+            auto& px =
+                mask[static_cast<std::size_t>(height - 1 - y) * static_cast<std::size_t>(width) +
+                     static_cast<std::size_t>(x)];
             if (!px) ++added;
             px = 255;
         }

@@ -2,10 +2,9 @@
 // The screen side of the CPU reference: clipping an edge the way the geometry shader does,
 // mapping between screen and view-space positions along it, and marking crossed pixels.
 #include <cstdint>
+#include <glm/glm.hpp>
 #include <optional>
 #include <vector>
-
-#include <glm/glm.hpp>
 
 #include "geometry/reference.h"
 

@@ -16,6 +16,7 @@ struct SimplifyOptions {
 // A welded adjacency mesh with fewer triangles, or nothing when the mesh is small or the
 // simplifier could not reduce it enough within the error. Boundary edges are kept in place
 // (they are always feature lines).
-std::optional<AdjacencyMesh> simplify_line_mesh(const AdjacencyMesh& mesh, const SimplifyOptions& options = {});
+std::optional<AdjacencyMesh> simplify_line_mesh(const AdjacencyMesh& mesh,
+                                                const SimplifyOptions& options = {});
 
 }  // namespace bz::geo

@@ -18,7 +18,8 @@ TriMesh split(const TriMesh& in) {
     mid.reserve(in.indices.size());
     auto midpoint = [&](std::uint32_t a, std::uint32_t b) {
         const std::uint64_t key = (std::uint64_t{std::min(a, b)} << 32) | std::max(a, b);
-        const auto [it, added] = mid.try_emplace(key, static_cast<std::uint32_t>(out.positions.size()));
+        const auto [it, added] =
+            mid.try_emplace(key, static_cast<std::uint32_t>(out.positions.size()));
         if (added) out.positions.push_back((in.positions[a] + in.positions[b]) * 0.5f);
         return it->second;
     };
@@ -33,7 +34,8 @@ TriMesh split(const TriMesh& in) {
 }  // namespace
 
 AdjacencyMesh subdivide_flat(const AdjacencyMesh& mesh, int levels) {
-    if (levels < 0 || levels > 6) throw std::invalid_argument("subdivide_flat: levels must be in [0, 6]");
+    if (levels < 0 || levels > 6)
+        throw std::invalid_argument("subdivide_flat: levels must be in [0, 6]");
     TriMesh m{mesh.positions, mesh.triangles};
     for (int i = 0; i < levels; ++i) m = split(m);
     return build_line_mesh(m);

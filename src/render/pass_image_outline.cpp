@@ -23,8 +23,9 @@ void pass_outline_prepass(const PassContext& ctx) {
     for (const Batch& b : ctx.batches.batches) {
         const GpuMesh& mesh = ctx.gpu_meshes.get(ctx.meshes, b.mesh, b.lod);
         mesh.prepass_vao.bind();
-        glDrawElementsInstancedBaseInstance(GL_TRIANGLES, mesh.triangle_index_count, GL_UNSIGNED_INT,
-                                            nullptr, b.instance_count, b.first_instance);
+        glDrawElementsInstancedBaseInstance(GL_TRIANGLES, mesh.triangle_index_count,
+                                            GL_UNSIGNED_INT, nullptr, b.instance_count,
+                                            b.first_instance);
     }
 }
 
@@ -42,7 +43,8 @@ void pass_image_outline(const PassContext& ctx, bool mask_mode) {
     p.set("u_proj_b", ctx.cam.proj_b);
     p.set("u_depth_zero_to_one", ctx.cam.zero_to_one ? 1 : 0);
     p.set("u_depth_threshold", ctx.settings.outline_depth_threshold);
-    const double half = static_cast<double>(ctx.settings.crease_angle_deg) * 3.14159265358979323846 / 360.0;
+    const double half =
+        static_cast<double>(ctx.settings.crease_angle_deg) * 3.14159265358979323846 / 360.0;
     p.set("u_normal_threshold", static_cast<float>(2.0 * std::sin(half)));
     p.set("u_color", glm::vec3(0.25f, 1.0f, 0.35f));
     ctx.targets.depth.bind(0);

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "render/batches.h"
@@ -32,11 +31,13 @@ std::vector<std::uint8_t> reference_frame_mask(const scene::FrameList& frame,
         if (o.mirror_lod_creases) {
             // Same projected radius as build_batches computes.
             const geo::Bounds& b = meshes.bounds(item.mesh);
-            const glm::dvec3 centre = glm::dvec3(inst.model_view * glm::dvec4(glm::dvec3(b.center()), 1.0));
+            const glm::dvec3 centre =
+                glm::dvec3(inst.model_view * glm::dvec4(glm::dvec3(b.center()), 1.0));
             const glm::dmat4& mv = inst.model_view;
-            const double scale = std::sqrt(std::max({glm::dot(glm::dvec3(mv[0]), glm::dvec3(mv[0])),
-                                                     glm::dot(glm::dvec3(mv[1]), glm::dvec3(mv[1])),
-                                                     glm::dot(glm::dvec3(mv[2]), glm::dvec3(mv[2]))}));
+            const double scale =
+                std::sqrt(std::max({glm::dot(glm::dvec3(mv[0]), glm::dvec3(mv[0])),
+                                    glm::dot(glm::dvec3(mv[1]), glm::dvec3(mv[1])),
+                                    glm::dot(glm::dvec3(mv[2]), glm::dvec3(mv[2]))}));
             const double radius = static_cast<double>(b.radius()) * scale;
             const double depth = std::max(-centre.z, c.near);
             const double radius_px = radius * cot / depth * height * 0.5;

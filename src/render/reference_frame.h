@@ -21,7 +21,8 @@ struct ReferenceFrameOptions {
 
 std::vector<std::uint8_t> reference_frame_mask(const scene::FrameList& frame,
                                                const scene::MeshLibrary& meshes, int width,
-                                               int height, const ReferenceFrameOptions& options = {},
+                                               int height,
+                                               const ReferenceFrameOptions& options = {},
                                                geo::ReferenceStats* stats = nullptr);
 
 }  // namespace bz::render

@@ -11,7 +11,9 @@ namespace {
 
 level::Level level_with_path() {
     level::Level lv = game::default_level();
-    lv.camera_path = {{0.0, {0, 5, 0}, {0, 5, -10}}, {2.0, {20, 5, 0}, {20, 5, -10}}, {4.0, {20, 25, 0}, {20, 5, -10}}};
+    lv.camera_path = {{0.0, {0, 5, 0}, {0, 5, -10}},
+                      {2.0, {20, 5, 0}, {20, 5, -10}},
+                      {4.0, {20, 25, 0}, {20, 5, -10}}};
     return lv;
 }
 

@@ -8,8 +8,12 @@
 namespace bz::geo {
 namespace {
 
-std::vector<std::uint8_t> blank() { return std::vector<std::uint8_t>(20 * 10, 0); }
-void set(std::vector<std::uint8_t>& m, int x, int y) { m[static_cast<std::size_t>(y * 20 + x)] = 255; }
+std::vector<std::uint8_t> blank() {
+    return std::vector<std::uint8_t>(20 * 10, 0);
+}
+void set(std::vector<std::uint8_t>& m, int x, int y) {
+    m[static_cast<std::size_t>(y * 20 + x)] = 255;
+}
 
 TEST(MaskScore, IdenticalMasksScoreOne) {
     auto a = blank();
@@ -39,8 +43,8 @@ TEST(MaskScore, OnePixelShiftIsForgivenOnlyWithTolerance) {
 TEST(MaskScore, PrecisionAndRecallCountTheRightSide) {
     auto ref = blank(), test = blank();
     for (int x = 0; x < 10; ++x) set(ref, x, 2);
-    for (int x = 0; x < 5; ++x) set(test, x, 2);    // half the reference
-    for (int x = 0; x < 5; ++x) set(test, x, 8);    // plus as many wrong pixels
+    for (int x = 0; x < 5; ++x) set(test, x, 2);  // half the reference
+    for (int x = 0; x < 5; ++x) set(test, x, 8);  // plus as many wrong pixels
     const MaskScore s = score_masks(test, ref, 20, 10, 1);
     EXPECT_DOUBLE_EQ(s.precision, 0.5);
     EXPECT_DOUBLE_EQ(s.recall, 0.6);  // x = 5 is within 1 px of the test's x = 4
@@ -54,7 +58,8 @@ TEST(MaskScore, EmptyMasks) {
     const MaskScore s = score_masks(blank(), ref, 20, 10, 1);
     EXPECT_EQ(s.recall, 0.0);
     EXPECT_EQ(s.f1, 0.0);
-    EXPECT_THROW(score_masks(blank(), std::vector<std::uint8_t>(5), 20, 10, 1), std::invalid_argument);
+    EXPECT_THROW(score_masks(blank(), std::vector<std::uint8_t>(5), 20, 10, 1),
+                 std::invalid_argument);
     EXPECT_THROW(score_masks(blank(), blank(), 20, 10, -1), std::invalid_argument);
 }
 

@@ -6,9 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <random>
-
 #include <glm/gtc/matrix_transform.hpp>
+#include <random>
 
 #include "geometry/line_mesh.h"
 #include "geometry/primitives.h"
@@ -40,18 +39,21 @@ glm::dmat4 look(glm::dvec3 eye, glm::dvec3 target = glm::dvec3(0.0)) {
 
 // Marks whole segments (world space, seen through `view_m`) with the reference's own clipping
 // and crossing rule: what the mask must be when exactly these edges are visible.
-std::vector<std::uint8_t> expected(const Segments& segs, const glm::dmat4& view_m, const ReferenceView& v) {
+std::vector<std::uint8_t> expected(const Segments& segs, const glm::dmat4& view_m,
+                                   const ReferenceView& v) {
     std::vector<std::uint8_t> m(static_cast<std::size_t>(kW * kH), 0);
     const auto p = detail::Projection::of(v);
     for (const auto& [a, b] : segs) {
-        const auto c = detail::clip_edge(glm::dvec3(view_m * glm::dvec4(a, 1.0)), glm::dvec3(view_m * glm::dvec4(b, 1.0)), p);
+        const auto c = detail::clip_edge(glm::dvec3(view_m * glm::dvec4(a, 1.0)),
+                                         glm::dvec3(view_m * glm::dvec4(b, 1.0)), p);
         if (c) detail::mark_segment(m, kW, kH, c->sa, c->sb);
     }
     return m;
 }
 
 std::size_t lit(const std::vector<std::uint8_t>& m) {
-    return static_cast<std::size_t>(std::count_if(m.begin(), m.end(), [](auto x) { return x != 0; }));
+    return static_cast<std::size_t>(
+        std::count_if(m.begin(), m.end(), [](auto x) { return x != 0; }));
 }
 
 // The 12 edges of a cube of half size h, split into those seen from the (+,+,+) octant and
@@ -97,15 +99,18 @@ TEST(Reference, ObjectBehindAnotherLeavesNoTrace) {
     const AdjacencyMesh small = build_line_mesh(box({0.5, 0.5, 0.5}));
     const glm::dmat4 v = look({0.0, 0.0, 10.0});
     const ReferenceInstance front{&big, v, 0.5, true};
-    const ReferenceInstance behind{&small, v * glm::translate(glm::dmat4(1.0), {0.0, 0.0, -5.0}), 0.5, true};
+    const ReferenceInstance behind{&small, v * glm::translate(glm::dmat4(1.0), {0.0, 0.0, -5.0}),
+                                   0.5, true};
     const ReferenceInstance both[] = {front, behind};
     EXPECT_EQ(reference_mask(both, view()), reference_mask({&front, 1}, view()));
     // A non-occluder in front hides nothing but shows itself.
-    const ReferenceInstance ghost{&small, v * glm::translate(glm::dmat4(1.0), {0.0, 0.0, 4.0}), 0.5, false};
+    const ReferenceInstance ghost{&small, v * glm::translate(glm::dmat4(1.0), {0.0, 0.0, 4.0}), 0.5,
+                                  false};
     const ReferenceInstance with_ghost[] = {front, ghost};
     const auto m = reference_mask(with_ghost, view());
     const auto f = reference_mask({&front, 1}, view());
-    for (std::size_t i = 0; i < m.size(); ++i) ASSERT_GE(m[i], f[i]) << "pixel " << i << " lost behind a non-occluder";
+    for (std::size_t i = 0; i < m.size(); ++i)
+        ASSERT_GE(m[i], f[i]) << "pixel " << i << " lost behind a non-occluder";
     EXPECT_GT(lit(m), lit(f));
 }
 
@@ -114,8 +119,9 @@ TEST(Reference, PartlyHiddenEdgeIsCutWhereTheOccluderEnds) {
     const AdjacencyMesh bar = build_line_mesh(box({3.0, 0.1, 0.1}));
     const AdjacencyMesh wall = build_line_mesh(box({1.0, 1.0, 0.05}));
     const glm::dmat4 v = look({0.0, 0.0, 10.0});
-    const ReferenceInstance insts[] = {{&bar, v * glm::translate(glm::dmat4(1.0), {0.0, 0.0, -1.0}), 0.5, true},
-                                       {&wall, v, 0.5, true}};
+    const ReferenceInstance insts[] = {
+        {&bar, v * glm::translate(glm::dmat4(1.0), {0.0, 0.0, -1.0}), 0.5, true},
+        {&wall, v, 0.5, true}};
     const auto m = reference_mask(insts, view());
     // Window x of the wall's sides: no bar pixels strictly between them except the wall's own.
     const auto p = detail::Projection::of(view());
@@ -129,7 +135,8 @@ TEST(Reference, PartlyHiddenEdgeIsCutWhereTheOccluderEnds) {
     }
     // Outside the wall the bar's edges do show.
     int outside = 0;
-    for (int y = row - 3; y <= row + 3; ++y) outside += m[static_cast<std::size_t>(y * kW + static_cast<int>(left) - 10)] ? 1 : 0;
+    for (int y = row - 3; y <= row + 3; ++y)
+        outside += m[static_cast<std::size_t>(y * kW + static_cast<int>(left) - 10)] ? 1 : 0;
     EXPECT_GE(outside, 2);
 }
 
@@ -137,11 +144,13 @@ TEST(Reference, NearPlaneClipsAndBehindTheCameraIsEmpty) {
     const AdjacencyMesh cube = build_line_mesh(box({1, 1, 1}));
     // Behind the camera: nothing at all.
     const glm::dmat4 v = look({0.0, 0.0, 5.0});
-    const ReferenceInstance behind{&cube, v * glm::translate(glm::dmat4(1.0), {0.0, 0.0, 10.0}), 0.5, true};
+    const ReferenceInstance behind{&cube, v * glm::translate(glm::dmat4(1.0), {0.0, 0.0, 10.0}),
+                                   0.5, true};
     EXPECT_EQ(lit(reference_mask({&behind, 1}, view())), 0u);
     // Straddling the near plane: the edges crossing it are clipped, not wrapped around.
     // (The cube spans view depths 1 to 3; the near plane at 1.5 cuts its four side edges.)
-    const ReferenceInstance straddle{&cube, v * glm::translate(glm::dmat4(1.0), {0.0, 0.0, 3.0}), 0.5, true};
+    const ReferenceInstance straddle{&cube, v * glm::translate(glm::dmat4(1.0), {0.0, 0.0, 3.0}),
+                                     0.5, true};
     const auto m = reference_mask({&straddle, 1}, view(1.5, 100.0));
     EXPECT_GT(lit(m), 0u);
     ReferenceOptions arcade;
@@ -149,8 +158,9 @@ TEST(Reference, NearPlaneClipsAndBehindTheCameraIsEmpty) {
     Segments vis, hid;
     cube_edges(1.0, vis, hid);
     vis.insert(vis.end(), hid.begin(), hid.end());
-    EXPECT_EQ(reference_mask({&straddle, 1}, view(1.5, 100.0), arcade),
-              expected(vis, v * glm::translate(glm::dmat4(1.0), {0.0, 0.0, 3.0}), view(1.5, 100.0)));
+    EXPECT_EQ(
+        reference_mask({&straddle, 1}, view(1.5, 100.0), arcade),
+        expected(vis, v * glm::translate(glm::dmat4(1.0), {0.0, 0.0, 3.0}), view(1.5, 100.0)));
     // Seen from inside the cut-open box every edge left is visible, so occlusion changes
     // nothing.
     EXPECT_EQ(m, reference_mask({&straddle, 1}, view(1.5, 100.0), arcade));
@@ -182,7 +192,10 @@ TEST(Reference, RejectsBadInput) {
 AdjacencyMesh hinge(double dihedral_deg) {
     const double a = glm::radians(dihedral_deg);
     TriMesh m;
-    m.positions = {{0, 0, 0}, {0, 0, 1}, {1, 0, 0}, {1, 0, 1},
+    m.positions = {{0, 0, 0},
+                   {0, 0, 1},
+                   {1, 0, 0},
+                   {1, 0, 1},
                    {static_cast<float>(-std::cos(a)), static_cast<float>(std::sin(a)), 0.0f},
                    {static_cast<float>(-std::cos(a)), static_cast<float>(std::sin(a)), 1.0f}};
     // Quad 1 in y = 0 facing +y; quad 2 turned up by `a` about the z axis, sharing edge 0-1.
@@ -193,12 +206,13 @@ AdjacencyMesh hinge(double dihedral_deg) {
 std::size_t creases(const AdjacencyMesh& mesh, double cos_crease) {
     const ReferenceInstance inst{&mesh, look({0.3, 5.0, 0.5}, {0.0, 0.0, 0.5}), cos_crease, true};
     std::vector<glm::dvec3> vp;
-    for (const auto& p : mesh.positions) vp.push_back(glm::dvec3(inst.model_view * glm::dvec4(glm::dvec3(p), 1.0)));
+    for (const auto& p : mesh.positions)
+        vp.push_back(glm::dvec3(inst.model_view * glm::dvec4(glm::dvec3(p), 1.0)));
     std::vector<detail::FeatureEdge> edges;
     detail::find_feature_edges(inst, 0, vp, edges);
-    return static_cast<std::size_t>(std::count_if(edges.begin(), edges.end(), [](const detail::FeatureEdge& e) {
-        return e.kind == detail::FeatureKind::crease;
-    }));
+    return static_cast<std::size_t>(std::count_if(
+        edges.begin(), edges.end(),
+        [](const detail::FeatureEdge& e) { return e.kind == detail::FeatureKind::crease; }));
 }
 
 TEST(Reference, CreaseThresholdIsResolvedInDouble) {
@@ -219,7 +233,8 @@ TEST(ReferenceRaster, CrossingMarksMatchBruteForce) {
         detail::mark_segment(fast, 64, 48, a, b);
         for (int y = 0; y < 48; ++y) {
             for (int x = 0; x < 64; ++x) {
-                if (detail::crosses_pixel({x + 0.5, y + 0.5}, a, b)) brute[static_cast<std::size_t>((47 - y) * 64 + x)] = 255;
+                if (detail::crosses_pixel({x + 0.5, y + 0.5}, a, b))
+                    brute[static_cast<std::size_t>((47 - y) * 64 + x)] = 255;
             }
         }
         ASSERT_EQ(fast, brute) << "segment " << i;
@@ -246,18 +261,23 @@ TEST(ReferenceBvh, AnswersLikeBruteForce) {
     std::vector<detail::BvhTriangle> tris;
     for (std::uint32_t i = 0; i < 400; ++i) {
         const glm::dvec3 c(u(rng), u(rng), u(rng) - 20.0);
-        tris.push_back({c + glm::dvec3(small(rng), small(rng), small(rng)), c + glm::dvec3(small(rng), small(rng), small(rng)),
-                        c + glm::dvec3(small(rng), small(rng), small(rng)), i % 3, 3 * i, 3 * i + 1, 3 * i + 2});
+        tris.push_back({c + glm::dvec3(small(rng), small(rng), small(rng)),
+                        c + glm::dvec3(small(rng), small(rng), small(rng)),
+                        c + glm::dvec3(small(rng), small(rng), small(rng)), i % 3, 3 * i, 3 * i + 1,
+                        3 * i + 2});
     }
     const detail::TriangleBvh bvh(tris);
     EXPECT_EQ(bvh.size(), tris.size());
     int hits = 0;
     for (int q = 0; q < 2000; ++q) {
         const glm::dvec3 end(u(rng), u(rng), u(rng) - 20.0);
-        const detail::ExcludedEdge ex{static_cast<std::uint32_t>(q % 3), static_cast<std::uint32_t>(q), static_cast<std::uint32_t>(q + 1)};
+        const detail::ExcludedEdge ex{static_cast<std::uint32_t>(q % 3),
+                                      static_cast<std::uint32_t>(q),
+                                      static_cast<std::uint32_t>(q + 1)};
         bool brute = false;
         for (const auto& t : tris) {
-            const bool own = t.instance == ex.instance && (t.v0 == ex.va || t.v1 == ex.va || t.v2 == ex.va) &&
+            const bool own = t.instance == ex.instance &&
+                             (t.v0 == ex.va || t.v1 == ex.va || t.v2 == ex.va) &&
                              (t.v0 == ex.vb || t.v1 == ex.vb || t.v2 == ex.vb);
             const double h = detail::intersect(t, glm::dvec3(0.0), end);
             if (!own && h >= 0.05 && h <= 0.95) brute = true;

@@ -12,7 +12,7 @@
 namespace {
 
 class ImageOutlineTest : public bz::test::RenderTest {
-protected:
+  protected:
     void SetUp() override {
         RenderTest::SetUp();
         add_item(add_mesh("cube", bz::geo::box(glm::vec3(0.5f))));

@@ -17,10 +17,12 @@ namespace {
 
 using bz::test::RenderTest;
 
-glm::dmat4 at(double x, double y, double z) { return glm::translate(glm::dmat4(1.0), {x, y, z}); }
+glm::dmat4 at(double x, double y, double z) {
+    return glm::translate(glm::dmat4(1.0), {x, y, z});
+}
 
 class SceneModellingTest : public RenderTest {
-protected:
+  protected:
     void SetUp() override {
         RenderTest::SetUp();
         settings.lod = false;
@@ -32,7 +34,8 @@ protected:
     }
 
     bz::render::FrameBatches batches() const {
-        const auto cam = bz::render::camera_matrices(frame.camera, static_cast<double>(kWidth) / kHeight, settings.depth);
+        const auto cam = bz::render::camera_matrices(
+            frame.camera, static_cast<double>(kWidth) / kHeight, settings.depth);
         return bz::render::build_batches(frame, meshes, cam, settings, kHeight);
     }
 };
@@ -65,17 +68,18 @@ TEST_F(SceneModellingTest, OneGpuMeshPerModelSharedByItsInstances) {
 TEST_F(SceneModellingTest, FrustumCullingSkipsOnlyWhatCannotShow) {
     const auto cube = add_mesh("cube", bz::geo::box(glm::vec3(0.5f)));
     const auto hidden_model = add_mesh("behind_only", bz::geo::uv_sphere(0.5f, 8, 16));
-    for (int i = 0; i < 5; ++i) add_item(cube, at(-3.0 + 1.5 * i, 0.0, 0.0));     // in view
-    for (int i = 0; i < 7; ++i) add_item(cube, at(-3.0 + i, 0.0, 30.0));          // behind the eye
-    for (int i = 0; i < 3; ++i) add_item(cube, at(60.0 + 2.0 * i, 0.0, 0.0));     // far to the right
-    add_item(hidden_model, at(0.0, 0.0, 40.0));                                    // behind, own model
-    add_item(cube, at(0.0, 0.0, -600.0));                                          // beyond far
+    for (int i = 0; i < 5; ++i) add_item(cube, at(-3.0 + 1.5 * i, 0.0, 0.0));  // in view
+    for (int i = 0; i < 7; ++i) add_item(cube, at(-3.0 + i, 0.0, 30.0));       // behind the eye
+    for (int i = 0; i < 3; ++i) add_item(cube, at(60.0 + 2.0 * i, 0.0, 0.0));  // far to the right
+    add_item(hidden_model, at(0.0, 0.0, 40.0));                                // behind, own model
+    add_item(cube, at(0.0, 0.0, -600.0));                                      // beyond far
 
     auto b = batches();
     EXPECT_EQ(b.stats.objects_drawn, 5u);
     EXPECT_EQ(b.stats.objects_culled, 12u);
     const bz::test::Mask culled = mask("culling_on");
-    EXPECT_EQ(renderer->gpu_mesh_uploads(), 1u) << "a model whose every instance is culled stays on the CPU";
+    EXPECT_EQ(renderer->gpu_mesh_uploads(), 1u)
+        << "a model whose every instance is culled stays on the CPU";
 
     settings.frustum_culling = false;
     b = batches();
@@ -92,7 +96,7 @@ TEST_F(SceneModellingTest, FrustumCullingSkipsOnlyWhatCannotShow) {
 
 TEST_F(SceneModellingTest, FarObjectsDrawSimplifiedMeshes) {
     const auto ball = add_mesh("ball", bz::geo::uv_sphere(1.0f, 32, 64));
-    add_item(ball, at(0.0, 0.0, 6.0));      // near: full detail
+    add_item(ball, at(0.0, 0.0, 6.0));       // near: full detail
     add_item(ball, at(-30.0, 0.0, -250.0));  // far: a few pixels across
     settings.lod = true;
     const auto b = batches();

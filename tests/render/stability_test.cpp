@@ -7,7 +7,6 @@
 
 #include <cmath>
 #include <cstdio>
-
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "geometry/mask_score.h"
@@ -27,10 +26,12 @@ struct Outcome {
     bool finite = true;
 };
 
-const char* depth_name(DepthFormat d) { return d == DepthFormat::reversed_f32 ? "reversed_f32" : "conventional_d24"; }
+const char* depth_name(DepthFormat d) {
+    return d == DepthFormat::reversed_f32 ? "reversed_f32" : "conventional_d24";
+}
 
 class StabilityTest : public bz::test::RenderTest {
-protected:
+  protected:
     void SetUp() override {
         RenderTest::SetUp();
         // The reference is full detail: no distance LOD on the GPU side either.
@@ -41,7 +42,8 @@ protected:
     void reset_scene() {
         meshes = {};
         frame.items.clear();
-        renderer = std::make_unique<bz::render::Renderer>(settings, kWidth, kHeight, bz::gl::TimingMethod::off);
+        renderer = std::make_unique<bz::render::Renderer>(settings, kWidth, kHeight,
+                                                          bz::gl::TimingMethod::off);
     }
 
     // Renders the current frame with `depth`, scores it against the reference, checks the
@@ -49,14 +51,15 @@ protected:
     Outcome check(const std::string& name, DepthFormat depth) {
         settings.depth = depth;
         const bz::test::Mask gpu = mask(name + "_" + depth_name(depth));
-        const std::vector<std::uint8_t> ref = bz::render::reference_frame_mask(frame, meshes, kWidth, kHeight);
+        const std::vector<std::uint8_t> ref =
+            bz::render::reference_frame_mask(frame, meshes, kWidth, kHeight);
         Outcome o;
         o.score = geo::score_masks(gpu.pixels, ref, kWidth, kHeight, 1);
         renderer->render(frame, meshes, bz::render::Renderer::kOffscreen);
         for (float v : renderer->read_lines_hdr()) o.finite = o.finite && std::isfinite(v);
-        std::printf("[stability] %-28s %-16s F1 %.4f  P %.4f  R %.4f  (gpu %zu px, ref %zu px)%s\n", name.c_str(),
-                    depth_name(depth), o.score.f1, o.score.precision, o.score.recall, o.score.test_lit,
-                    o.score.ref_lit, o.finite ? "" : "  NON-FINITE");
+        std::printf("[stability] %-28s %-16s F1 %.4f  P %.4f  R %.4f  (gpu %zu px, ref %zu px)%s\n",
+                    name.c_str(), depth_name(depth), o.score.f1, o.score.precision, o.score.recall,
+                    o.score.test_lit, o.score.ref_lit, o.finite ? "" : "  NON-FINITE");
         return o;
     }
 
@@ -79,7 +82,8 @@ protected:
         const auto box = add_mesh("box", geo::box(glm::vec3(0.5f)));
         const auto slab = add_mesh("slab", geo::box(glm::vec3(6.0f, 0.1f, 6.0f)));
         const auto ball = add_mesh("ball", geo::uv_sphere(0.6f, 16, 32));
-        const glm::dmat4 place = glm::scale(glm::translate(glm::dmat4(1.0), offset), glm::dvec3(scale));
+        const glm::dmat4 place =
+            glm::scale(glm::translate(glm::dmat4(1.0), offset), glm::dvec3(scale));
         add_item(slab, place * glm::translate(glm::dmat4(1.0), {0.0, -0.1, 0.0}));
         add_item(box, place * glm::translate(glm::dmat4(1.0), {0.0, 0.5, 0.0}));
         add_item(box, place * glm::translate(glm::dmat4(1.0), {0.6, 0.5, -1.6}));
@@ -96,7 +100,8 @@ TEST_F(StabilityTest, NearFarRatios) {
     build_scene();
     // Seen from 60 units with a narrow lens: depth precision is spent by distance, not by
     // what the picture shows.
-    frame.camera.eye = frame.camera.target + glm::normalize(frame.camera.eye - frame.camera.target) * 60.0;
+    frame.camera.eye =
+        frame.camera.target + glm::normalize(frame.camera.eye - frame.camera.target) * 60.0;
     frame.camera.fov_y_deg = 7.0;
     struct Planes {
         double near, far;
@@ -104,8 +109,9 @@ TEST_F(StabilityTest, NearFarRatios) {
     };
     // 24-bit fixed-point depth runs out of precision as near shrinks: the default format
     // (reversed-Z float) keeps a constant relative precision at every depth.
-    for (const Planes p : {Planes{1.0, 100.0, true}, Planes{0.1, 1e3, true}, Planes{1e-2, 1e4, true},
-                           Planes{1e-3, 1e5, false}, Planes{1e-4, 1e6, false}}) {
+    for (const Planes p :
+         {Planes{1.0, 100.0, true}, Planes{0.1, 1e3, true}, Planes{1e-2, 1e4, true},
+          Planes{1e-3, 1e5, false}, Planes{1e-4, 1e6, false}}) {
         frame.camera.near = p.near;
         frame.camera.far = p.far;
         char name[64];
@@ -186,12 +192,18 @@ geo::TriMesh sliver_box(int n) {
             // Fan from corner (-,-) to points along the far edges (+, t) and (t, +).
             const auto base = static_cast<std::uint32_t>(m.positions.size());
             m.positions.push_back(corner(-0.5f, -0.5f));
-            for (int i = 0; i <= n; ++i) m.positions.push_back(corner(0.5f, -0.5f + static_cast<float>(i) / static_cast<float>(n)));
-            for (int i = n - 1; i >= 0; --i) m.positions.push_back(corner(-0.5f + static_cast<float>(i) / static_cast<float>(n), 0.5f));
+            for (int i = 0; i <= n; ++i)
+                m.positions.push_back(
+                    corner(0.5f, -0.5f + static_cast<float>(i) / static_cast<float>(n)));
+            for (int i = n - 1; i >= 0; --i)
+                m.positions.push_back(
+                    corner(-0.5f + static_cast<float>(i) / static_cast<float>(n), 0.5f));
             for (std::uint32_t i = 1; i < static_cast<std::uint32_t>(2 * n + 1); ++i) {
                 // Winding so the face points along +axis * side.
-                if (side > 0) m.indices.insert(m.indices.end(), {base, base + i, base + i + 1});
-                else m.indices.insert(m.indices.end(), {base, base + i + 1, base + i});
+                if (side > 0)
+                    m.indices.insert(m.indices.end(), {base, base + i, base + i + 1});
+                else
+                    m.indices.insert(m.indices.end(), {base, base + i + 1, base + i});
             }
         }
     }
@@ -217,7 +229,8 @@ TEST_F(StabilityTest, SliversAndLongThinTriangles) {
 geo::TriMesh hinge(double deg) {
     const double a = glm::radians(deg);
     geo::TriMesh m;
-    const auto c = static_cast<float>(-4.0 * std::cos(a)), s = static_cast<float>(4.0 * std::sin(a));
+    const auto c = static_cast<float>(-4.0 * std::cos(a)),
+               s = static_cast<float>(4.0 * std::sin(a));
     m.positions = {{0, 0, -2}, {0, 0, 2}, {4, 0, -2}, {4, 0, 2}, {c, s, -2}, {c, s, 2}};
     m.indices = {0, 1, 2, 2, 1, 3, 0, 4, 1, 1, 4, 5};
     return m;
@@ -237,7 +250,8 @@ TEST_F(StabilityTest, CreaseAngleThresholdIsResolved) {
     for (const double deg : {60.0 + 1e-4, 60.0 - 1e-4}) {
         reset_scene();
         add_item(add_mesh("hinge", hinge(deg)));
-        const Outcome o = check(k == 0 ? "hinge 60+1e-4 deg" : "hinge 60-1e-4 deg", DepthFormat::reversed_f32);
+        const Outcome o =
+            check(k == 0 ? "hinge 60+1e-4 deg" : "hinge 60-1e-4 deg", DepthFormat::reversed_f32);
         EXPECT_TRUE(o.finite);
         EXPECT_EQ(o.score.f1, 1.0) << deg;
         lit[k++] = o.score.ref_lit;
