@@ -134,6 +134,10 @@ BenchFrames simulate(BenchScene& scene, const Options& o, double aspect) {
         bf.frames.push_back(f);
         bf.seconds.push_back(scene.seconds());
     }
+    if (static_cast<int>(bf.frames.size()) < total && static_cast<int>(bf.frames.size()) > o.warmup) {
+        std::fprintf(stderr, "note: %s ends after %zu ticks: timing %zu frames, not %d\n", o.replay.c_str(),
+                     bf.frames.size(), bf.frames.size() - static_cast<std::size_t>(o.warmup), o.frames);
+    }
     if (static_cast<int>(bf.frames.size()) <= o.warmup) {
         throw UserError(o.replay + ": the replay has " + std::to_string(bf.frames.size()) +
                         " ticks, not more than the " + std::to_string(o.warmup) +
