@@ -9,8 +9,8 @@ flat in vec2 g_p0;
 flat in vec2 g_p1;
 flat in vec2 g_inv_depth;
 flat in vec3 g_edge_plane;
-flat in vec4 g_face_pos;
-flat in vec4 g_face_neg;
+flat in vec3 g_face_pos;
+flat in vec3 g_face_neg;
 flat in vec2 g_nudge;
 flat in vec3 g_color;
 
@@ -37,15 +37,15 @@ void main() {
 #endif
     float t = closest_t(p, g_p0, g_p1);
     vec2 spine = mix(g_p0, g_p1, t);
-    float line_depth = 1.0 / mix(g_inv_depth.x, g_inv_depth.y, t);
+    float line_inv = mix(g_inv_depth.x, g_inv_depth.y, t);  // 1/depth is affine on screen
 #ifdef MASK_MODE
     if (!crosses_pixel(p, g_p0, g_p1)) discard;
-    if (!spine_visible(spine, line_depth, g_edge_plane, g_face_pos, g_face_neg, g_nudge)) discard;
+    if (!spine_visible(spine, line_inv, g_edge_plane, g_face_pos, g_face_neg, g_nudge)) discard;
     o_color = vec4(1.0);
 #else
     float dist = distance(p, spine);
     if (dist >= u_half_width) discard;
-    if (!spine_visible(spine, line_depth, g_edge_plane, g_face_pos, g_face_neg, g_nudge)) discard;
+    if (!spine_visible(spine, line_inv, g_edge_plane, g_face_pos, g_face_neg, g_nudge)) discard;
     o_color = vec4(g_color * beam_profile(dist, u_half_width), 1.0);
 #endif
 }

@@ -34,8 +34,9 @@ flat out vec2 g_p0;              // spine end points, window pixels
 flat out vec2 g_p1;
 flat out vec2 g_inv_depth;       // 1 / view depth at p0 and p1 (linear in screen space)
 flat out vec3 g_edge_plane;      // view-space plane through the eye and the edge
-flat out vec4 g_face_pos;        // plane (n, n.p) of the face on the edge plane's positive side
-flat out vec4 g_face_neg;        // ... negative side; all zero: compare with the spine's depth
+flat out vec3 g_face_pos;        // plane of the face on the edge plane's positive side, as
+                                 // n / (n.p) so that 1/depth along a ray r is dot(plane, r)
+flat out vec3 g_face_neg;        // ... negative side; all zero: compare with the spine's depth
 flat out vec2 g_nudge;           // pixel offset that moves a silhouette sample off its own face
 flat out vec3 g_color;
 
@@ -83,12 +84,17 @@ vec3 ray_at(vec2 px) {
     return vec3(ndc.x / u_proj[0][0], ndc.y / u_proj[1][1], -1.0);
 }
 
-vec4 plane_of(vec3 n, vec3 p) { return vec4(n, dot(n, p)); }
+// The plane through p with normal n, scaled so that dot(plane, X) = 1 on it. A plane through
+// the eye (seen exactly edge-on) has no such form: zero, which means "use the spine's depth".
+vec3 plane_of(vec3 n, vec3 p) {
+    float k = dot(n, p);
+    return abs(k) > 1e-30 ? n / k : vec3(0.0);
+}
 
 // kind: 0 = crease (faces on both sides), 1 = silhouette, 2 = boundary-like (one face).
 // `face` is this triangle's plane, `other` the neighbour's (creases only); `opp` is this
 // triangle's vertex off the edge, which tells on which side of the edge the face lies.
-void emit_edge(int i0, int i1, int kind, vec4 face, vec4 other, vec3 opp) {
+void emit_edge(int i0, int i1, int kind, vec3 face, vec3 other, vec3 opp) {
     vec3 a = v_in[i0].view_pos, b = v_in[i1].view_pos;
     // The plane through the eye and the (unclipped) edge, oriented so the face is positive.
     vec3 m = cross(a, b);
@@ -104,8 +110,8 @@ void emit_edge(int i0, int i1, int kind, vec4 face, vec4 other, vec3 opp) {
     float h = u_half_width;
 
     g_edge_plane = m;
-    g_face_pos = kind == 1 ? vec4(0.0) : face;
-    g_face_neg = kind == 0 ? other : vec4(0.0);
+    g_face_pos = kind == 1 ? vec3(0.0) : face;
+    g_face_neg = kind == 0 ? other : vec3(0.0);
     g_nudge = vec2(0.0);
     if (kind == 1) {
         // Sample the depth just outside the front face, where the background or an occluder is.
@@ -129,14 +135,14 @@ void main() {
     vec3 p0 = v_in[0].view_pos, p2 = v_in[2].view_pos, p4 = v_in[4].view_pos;
     vec3 n_view = face_normal(p0, p2, p4);
     bool front = dot(n_view, -p0) > 0.0;
-    vec4 face = plane_of(n_view, p0);
+    vec3 face = plane_of(n_view, p0);
     float cos_crease = instance_params(v_in[0].instance).x;
     int base = gl_PrimitiveIDIn * 3;
 
     for (int e = 0; e < u_edges_to_test; ++e) {
         int i0 = 2 * e, iadj = 2 * e + 1, i1 = (2 * e + 2) % 6, iopp = (2 * e + 4) % 6;
         int kind = -1;  // 0 crease, 1 silhouette, 2 boundary-like
-        vec4 other = vec4(0.0);
+        vec3 other = vec3(0.0);
         if (v_in[iadj].vertex_id == v_in[i0].vertex_id) {
             kind = 2;  // boundary, non-manifold or inconsistently wound: always a feature edge
         } else {

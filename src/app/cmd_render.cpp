@@ -1,3 +1,4 @@
+#include <cmath>
 #include <cstdio>
 #include <string>
 
@@ -12,6 +13,8 @@
 #include "geometry/line_mesh.h"
 #include "render/renderer.h"
 
+#include <glm/gtc/matrix_transform.hpp>
+
 namespace bz::app {
 
 namespace {
@@ -20,10 +23,12 @@ constexpr const char* kUsage =
     "usage: beamzone render INPUT [--eye x,y,z] [--target x,y,z] [--up x,y,z] [--fov DEG]\n"
     "                       [--near N] [--far F] [--size WxH] [--preset fast|balanced|high]\n"
     "                       [--style occluded|arcade] [--color r,g,b] [--out frame.png]\n"
-    "                       [--mask mask.png] [--repeat N]\n"
+    "                       [--mask mask.png] [--repeat N] [--copies N]\n"
     "Renders a model file (or builtin:cube, builtin:sphere, builtin:grid) headless to PNG. Without --eye the camera frames the model's bounding\n"
     "box from a 3/4 view. --mask writes the 1-pixel visible-spine mask (255 = line).\n"
-    "--repeat N renders N timed frames and prints the mean milliseconds of each pass.\n";
+    "--repeat N renders N timed frames and prints the mean milliseconds of each pass.\n"
+    "--copies N draws N instances of the model on a square grid in the xz plane (a scene of a\n"
+    "chosen size for timing; the camera frames them all).\n";
 
 struct RenderOptions {
     std::string input;
@@ -34,6 +39,7 @@ struct RenderOptions {
     std::string out = "frame.png";
     std::string mask;
     int repeat = 0;
+    int copies = 1;
 };
 
 RenderOptions parse(Args args) {
@@ -47,6 +53,7 @@ RenderOptions parse(Args args) {
         else if (a == "--out") o.out = cur.value(a);
         else if (a == "--mask") o.mask = cur.value(a);
         else if (a == "--repeat") o.repeat = parse_int(a, cur.value(a), 1, 100000);
+        else if (a == "--copies") o.copies = parse_int(a, cur.value(a), 1, 100000);
         else if (a == "--style") {
             const std::string_view s = cur.value(a);
             if (s == "occluded") o.style = scene::LineStyle::occluded;
@@ -83,6 +90,21 @@ void print_timings(const render::Renderer& r, const std::vector<std::vector<gl::
                  s.triangles_submitted, s.feature_edges);
 }
 
+// Lays out `copies` instances on a square grid in the xz plane; returns their joint bounds.
+geo::Bounds place_copies(scene::FrameList& frame, scene::MeshId id, const geo::Bounds& one, int copies,
+                         glm::vec3 color) {
+    const int side = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(copies))));
+    const glm::dvec3 step = glm::dvec3(one.max - one.min) * 1.2;
+    geo::Bounds all = one;
+    for (int i = 0; i < copies; ++i) {
+        const glm::dvec3 offset(step.x * (i % side), 0.0, -step.z * (i / side));
+        frame.items.push_back({id, glm::translate(glm::dmat4(1.0), offset), color, 1.0f, true});
+        all.min = glm::min(all.min, one.min + glm::vec3(offset));
+        all.max = glm::max(all.max, one.max + glm::vec3(offset));
+    }
+    return all;
+}
+
 }  // namespace
 
 int cmd_render(Args args) {
@@ -114,8 +136,9 @@ int cmd_render(Args args) {
     auto context = make_headless_context();
     scene::MeshLibrary meshes;
     scene::FrameList frame;
-    const geo::Bounds bounds = geo::compute_bounds(mesh.positions);
-    frame.items.push_back({meshes.add(o.input, std::move(mesh)), glm::dmat4(1.0), glm::vec3(o.color), 1.0f, true});
+    const geo::Bounds one = geo::compute_bounds(mesh.positions);
+    const scene::MeshId id = meshes.add(o.input, std::move(mesh));
+    const geo::Bounds bounds = place_copies(frame, id, one, o.copies, glm::vec3(o.color));
     frame.camera = camera_for(o.camera, bounds);
     frame.style = o.style;
 

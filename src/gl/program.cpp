@@ -69,6 +69,9 @@ void Program::set(const char* n, float v) const { glProgramUniform1f(id(), locat
 void Program::set(const char* n, const glm::vec2& v) const {
     glProgramUniform2fv(id(), location(n), 1, glm::value_ptr(v));
 }
+void Program::set(const char* n, const glm::ivec2& v) const {
+    glProgramUniform2iv(id(), location(n), 1, glm::value_ptr(v));
+}
 void Program::set(const char* n, const glm::vec3& v) const {
     glProgramUniform3fv(id(), location(n), 1, glm::value_ptr(v));
 }

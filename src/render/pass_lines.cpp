@@ -11,14 +11,19 @@ void set_line_uniforms(const gl::Program& p, const PassContext& ctx, float half_
     p.set("u_half_width", half_width);
     p.set("u_near", ctx.cam.near);
     p.set("u_far", ctx.cam.far);
-    p.set("u_depth_bias", s.depth_bias);
+    p.set("u_bias_scale", 1.0f / (1.0f - s.depth_bias));
     p.set("u_depth", 0);
     p.set("u_edges_to_test", 3);  // a uniform loop bound: keeps one copy of the emit code
     p.set("u_occlusion", ctx.occlusion ? 1 : 0);
     p.set("u_spine_samples", s.spine_samples);
     p.set("u_proj_a", ctx.cam.proj_a);
-    p.set("u_proj_b", ctx.cam.proj_b);
+    p.set("u_proj_inv_b", 1.0f / ctx.cam.proj_b);
     p.set("u_depth_zero_to_one", ctx.cam.zero_to_one ? 1 : 0);
+    // View ray through window position (x, y): ndc = pixel * 2 / size - 1, ray = ndc / P.
+    const float w = static_cast<float>(ctx.targets.width), h = static_cast<float>(ctx.targets.height);
+    const float px = ctx.cam.proj[0][0], py = ctx.cam.proj[1][1];
+    p.set("u_ray", glm::vec4(2.0f / (w * px), 2.0f / (h * py), -1.0f / px, -1.0f / py));
+    p.set("u_depth_max", glm::ivec2(ctx.targets.width - 1, ctx.targets.height - 1));
 }
 
 }  // namespace
