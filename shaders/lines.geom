@@ -21,6 +21,10 @@ layout(std430, binding = 1) readonly buffer Instances { vec4 instance_data[]; };
 vec4 instance_color(uint i) { return instance_data[i * 6u + 4u]; }
 vec4 instance_params(uint i) { return instance_data[i * 6u + 5u]; }
 
+// Set for an outward-closed mesh seen from outside: its back faces are hidden by its front
+// faces, so a back-facing triangle has nothing visible to emit (its silhouettes are emitted by
+// the front-facing neighbours).
+uniform bool u_skip_back_faces;
 uniform int u_edges_to_test;  // always 3; a uniform bound stops the compiler unrolling the loop
 
 uniform mat4 u_proj;
@@ -135,6 +139,7 @@ void main() {
     vec3 p0 = v_in[0].view_pos, p2 = v_in[2].view_pos, p4 = v_in[4].view_pos;
     vec3 n_view = face_normal(p0, p2, p4);
     bool front = dot(n_view, -p0) > 0.0;
+    if (!front && u_skip_back_faces) return;
     vec3 face = plane_of(n_view, p0);
     float cos_crease = instance_params(v_in[0].instance).x;
     int base = gl_PrimitiveIDIn * 3;

@@ -25,6 +25,17 @@ bool outside_frustum(const glm::dvec3& c, double r, const CameraMatrices& cam) {
     return false;
 }
 
+// The eye (the view-space origin) in the object's own space, tested against its bounds
+// grown by a relative margin. A mirroring transform turns an outward mesh inside out, so it
+// never counts as outside.
+bool eye_outside_bounds(const glm::dmat4& model_view, const geo::Bounds& b) {
+    if (glm::determinant(glm::dmat3(model_view)) <= 0.0) return false;
+    const glm::dvec3 eye = glm::dvec3(glm::inverse(model_view) * glm::dvec4(0.0, 0.0, 0.0, 1.0));
+    const glm::dvec3 margin = glm::dvec3(b.max - b.min) * 1e-3 + 1e-9;
+    const glm::dvec3 lo = glm::dvec3(b.min) - margin, hi = glm::dvec3(b.max) + margin;
+    return glm::any(glm::lessThan(eye, lo)) || glm::any(glm::greaterThan(eye, hi));
+}
+
 }  // namespace
 
 // Below this projected radius (pixels) an object keeps only its strongest creases and is
@@ -51,6 +62,7 @@ FrameBatches build_batches(const scene::FrameList& frame, const scene::MeshLibra
     struct Visible {
         std::size_t item;
         int lod;
+        bool eye_outside;
         InstanceData data;
     };
     std::vector<Visible> visible;
@@ -72,7 +84,7 @@ FrameBatches build_batches(const scene::FrameList& frame, const scene::MeshLibra
         d.model_view = glm::mat4(mv);
         d.color = glm::vec4(item.color * item.intensity, 1.0f);
         d.params = glm::vec4(lod_cos_crease(settings, radius_px), 0.0f, 0.0f, 0.0f);
-        visible.push_back({i, lod_level(settings, radius_px), d});
+        visible.push_back({i, lod_level(settings, radius_px), eye_outside_bounds(mv, b), d});
     }
     // Group by (mesh, lod, occluder) so each group is one instanced draw; stable keeps the
     // frame list's order inside a group, which keeps results deterministic.
@@ -81,15 +93,17 @@ FrameBatches build_batches(const scene::FrameList& frame, const scene::MeshLibra
         const auto& ib = frame.items[b.item];
         if (ia.mesh != ib.mesh) return ia.mesh < ib.mesh;
         if (a.lod != b.lod) return a.lod < b.lod;
+        if (a.eye_outside != b.eye_outside) return a.eye_outside > b.eye_outside;
         return ia.occluder > ib.occluder;
     });
     out.instances.reserve(visible.size());
     for (const Visible& v : visible) {
         const auto& item = frame.items[v.item];
         if (out.batches.empty() || !settings.instancing || out.batches.back().mesh != item.mesh ||
-            out.batches.back().lod != v.lod || out.batches.back().occluder != item.occluder) {
-            out.batches.push_back(
-                {item.mesh, static_cast<GLuint>(out.instances.size()), 0, item.occluder, v.lod});
+            out.batches.back().lod != v.lod || out.batches.back().occluder != item.occluder ||
+            out.batches.back().eye_outside != v.eye_outside) {
+            out.batches.push_back({item.mesh, static_cast<GLuint>(out.instances.size()), 0, item.occluder,
+                                   v.lod, v.eye_outside});
         }
         ++out.batches.back().instance_count;
         out.instances.push_back(v.data);

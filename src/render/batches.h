@@ -17,6 +17,9 @@ struct Batch {
     GLsizei instance_count = 0;
     bool occluder = true;
     int lod = 0;  // 1: the mesh's simplified version (MeshCache::get)
+    // The eye is outside every instance's bounds: for an outward-closed mesh (GpuMesh) back
+    // faces are then hidden by the mesh itself and both passes may skip them.
+    bool eye_outside = false;
 };
 
 struct FrameBatches {

@@ -2,6 +2,7 @@
 
 #include <memory>
 
+#include "geometry/closure.h"
 #include "geometry/dihedral.h"
 
 #include "geometry/simplify.h"
@@ -51,6 +52,7 @@ void MeshCache::upload(GpuMesh& gpu, const geo::AdjacencyMesh& mesh) {
     gpu.positions.set(std::span<const glm::vec3>(mesh.positions), GL_STATIC_DRAW);
     gpu.adjacency.set(std::span<const std::uint32_t>(mesh.adjacency), GL_STATIC_DRAW);
     gpu.triangles.set(std::span<const std::uint32_t>(mesh.triangles), GL_STATIC_DRAW);
+    gpu.outward_closed = geo::is_outward_closed(mesh);
     const std::vector<float> cosines = geo::edge_dihedral_cosines(mesh);
     gpu.edge_cosines.set(std::span<const float>(cosines), GL_STATIC_DRAW);
     gpu.adjacency_count = static_cast<GLsizei>(mesh.adjacency.size());

@@ -28,6 +28,7 @@ struct GpuMesh {
     gl::VertexArray lines_vao;
     gl::VertexArray prepass_vao;
     std::uint32_t version = 0;
+    bool outward_closed = false;  // geo::is_outward_closed: back faces hidden from outside
     GLsizei adjacency_count = 0;
     GLsizei triangle_index_count = 0;
     std::size_t triangle_count() const { return static_cast<std::size_t>(triangle_index_count) / 3; }

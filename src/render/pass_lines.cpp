@@ -48,6 +48,7 @@ void pass_lines(const PassContext& ctx, bool mask_mode) {
     for (const Batch& b : ctx.batches.batches) {
         const GpuMesh& mesh = ctx.gpu_meshes.get(ctx.meshes, b.mesh, b.lod);
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, mesh.edge_cosines.id());
+        program.set("u_skip_back_faces", (ctx.occlusion && b.eye_outside && mesh.outward_closed) ? 1 : 0);
         mesh.lines_vao.bind();
         glDrawElementsInstancedBaseInstance(GL_TRIANGLES_ADJACENCY, mesh.adjacency_count,
                                             GL_UNSIGNED_INT, nullptr, b.instance_count, b.first_instance);

@@ -197,3 +197,42 @@ TEST_F(RenderTest, GeometryWhollyBehindTheCameraDrawsNothing) {
     settings.frustum_culling = false;  // make the geometry shader see it
     EXPECT_EQ(mask().count(), 0);
 }
+
+TEST_F(RenderTest, InsideAClosedBoxItsInnerEdgesShow) {
+    // Seen from inside, every face of a closed box is back-facing; the renderer may skip back
+    // faces only when the eye is outside, so the room's edges must still be drawn here.
+    add_item(add_mesh("room", bz::geo::box(glm::vec3(4.0f))));
+    frame.camera.eye = {0.0, 0.0, 0.0};
+    frame.camera.target = {-4.0, -4.0, -4.0};
+    frame.camera.fov_y_deg = 90.0;
+    frame.camera.near = 0.05;
+    // The three edges that meet at the far corner (-4,-4,-4) are in view.
+    const Segments corner = {{{-4, -4, -4}, {4, -4, -4}}, {{-4, -4, -4}, {-4, 4, -4}}, {{-4, -4, -4}, {-4, -4, 4}}};
+    const auto s = bz::test::score_masks(mask("room_inside"), expected_mask(frame.camera, kWidth, kHeight, corner), 1);
+    EXPECT_GE(s.recall, 0.9);
+    EXPECT_GT(s.test_count, 100);
+}
+
+TEST_F(RenderTest, SkippingBackFacesOfClosedMeshesChangesNoPixel) {
+    // Many closed spheres and boxes seen from outside: the mask with the back-face shortcut
+    // equals the arcade-free reference drawn from an open copy of the same meshes (an open
+    // mesh never takes the shortcut).
+    const auto closed_sphere = add_mesh("s", bz::geo::uv_sphere(1.0f, 12, 24));
+    bz::geo::TriMesh open = bz::geo::uv_sphere(1.0f, 12, 24);
+    open.positions.push_back({50.0f, 50.0f, 50.0f});
+    open.positions.push_back({50.1f, 50.0f, 50.0f});
+    open.positions.push_back({50.0f, 50.1f, 50.0f});
+    const auto n = static_cast<std::uint32_t>(open.positions.size());
+    open.indices.insert(open.indices.end(), {n - 3, n - 2, n - 1});  // a far-away loose triangle
+    const auto open_sphere = add_mesh("o", open);
+    frame.camera.eye = {0.0, 3.0, 9.0};
+    frame.camera.target = {0.0, 0.0, 0.0};
+    frame.camera.far = 60.0;  // the loose triangle lies beyond the far plane
+    for (int i = 0; i < 4; ++i) add_item(closed_sphere, glm::translate(glm::dmat4(1.0), glm::dvec3(i * 1.5 - 2.25, 0, -i)));
+    const auto with_shortcut = mask("shortcut");
+    frame.items.clear();
+    for (int i = 0; i < 4; ++i) add_item(open_sphere, glm::translate(glm::dmat4(1.0), glm::dvec3(i * 1.5 - 2.25, 0, -i)));
+    const auto without = mask("no_shortcut");
+    EXPECT_GT(with_shortcut.count(), 300);
+    EXPECT_EQ(with_shortcut.pixels, without.pixels);
+}
