@@ -137,12 +137,15 @@ void plot_scaling(const std::vector<ScalingPoint>& points, const LineFit& fit,
     const double x_end = xmax * 1.05;
     canvas.line(chart.map(0.0, fit.intercept),
                 chart.map(x_end, fit.intercept + fit.slope * x_end * 1e6), series_color(1), 1.5f);
-    for (std::size_t i = 0; i < points.size(); ++i) {
-        const glm::vec2 at = chart.map(points[i].triangles / 1e6, points[i].p50_ms);
-        canvas.disc(at, 5.0f, series_color(0));
-        canvas.text(points[i].label, at + glm::vec2(-10.0f, 12.0f), 11.0f, kInk,
-                    scene::TextAlign::right);
+    std::vector<glm::vec2> at;
+    std::vector<std::string> labels;
+    for (const ScalingPoint& p : points) {
+        at.push_back(chart.map(p.triangles / 1e6, p.p50_ms));
+        canvas.disc(at.back(), 5.0f, series_color(0));
+        labels.push_back(p.label);
     }
+    const std::vector<glm::vec2> where = place_labels(canvas, at, labels, 11.0f);
+    for (std::size_t i = 0; i < points.size(); ++i) canvas.text(labels[i], where[i], 11.0f, kInk);
     char buf[128];
     std::snprintf(buf, sizeof buf, "fit: %.2f ms per 100k triangles + %.1f ms (r2 %.3f)",
                   fit.slope * 1e5, fit.intercept, fit.r2);

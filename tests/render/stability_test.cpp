@@ -111,7 +111,7 @@ TEST_F(StabilityTest, NearFarRatios) {
     // (reversed-Z float) keeps a constant relative precision at every depth.
     for (const Planes p :
          {Planes{1.0, 100.0, true}, Planes{0.1, 1e3, true}, Planes{1e-2, 1e4, true},
-          Planes{1e-3, 1e5, false}, Planes{1e-4, 1e6, false}}) {
+          Planes{1e-3, 1e5, true}, Planes{1e-4, 1e6, false}}) {
         frame.camera.near = p.near;
         frame.camera.far = p.far;
         char name[64];
