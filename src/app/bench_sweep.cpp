@@ -87,6 +87,8 @@ SweepResult run_sweep(const BenchFrames& bf, const scene::MeshLibrary& meshes, i
     SweepResult result;
     const int timed = static_cast<int>(bf.frames.size()) - bf.warmup;
     result.sampled = sampled_frames(timed, o.samples);
+    for (int f : result.sampled)
+        result.sampled_seconds.push_back(bf.seconds[static_cast<std::size_t>(f + bf.warmup)]);
     auto frame_of = [&](int timed_frame) -> const scene::FrameList& {
         return bf.frames[static_cast<std::size_t>(timed_frame + bf.warmup)];
     };
@@ -186,6 +188,9 @@ std::string sweep_json(const BenchMeta& meta, const SweepResult& r,
     write_meta(j, meta);
     j.key("scored_frames").begin_array();
     for (int f : r.sampled) j.value(f);
+    j.end_array();
+    j.key("scored_frame_times_s").begin_array();
+    for (double t : r.sampled_seconds) j.value(t);
     j.end_array();
     j.field("score_tolerance_px", 1);
     j.field("reference_cpu_ms", r.reference_ms);

@@ -59,7 +59,9 @@ struct SweepOptions {
 
 struct SweepResult {
     std::vector<SweepRow> rows;
-    std::vector<int> sampled;   // timed-frame numbers scored
+    std::vector<int> sampled;  // timed-frame numbers scored
+    // Their simulated times: `reference --level LEVEL --time T` rebuilds the same frame.
+    std::vector<double> sampled_seconds;
     double reference_ms = 0.0;  // CPU time of all reference masks
     std::size_t reference_rays = 0;
 };

@@ -45,6 +45,11 @@ for cfg in fast balanced high image-outline balanced-no-culling balanced-no-lod 
   grep -q "\"label\": \"$cfg\"" "$work/sweep/sweep.json" || fail "sweep.json lacks $cfg"
 done
 
+grep -q '"scored_frame_times_s"' "$work/sweep/sweep.json" || fail "sweep.json lacks the scored frames' times"
+# A scored frame is reproducible: timed frame 1 after 2 warm-up frames is tick 4, t = 4/60 s.
+expect 0 "" reference --level "$level" --time 0.0667 --size 192x108 --mask "$work/again.png"
+cmp -s "$work/again.png" "$work/sweep/masks/reference_frame0001.png" || fail "reference --level --time differs from the sweep's"
+
 # Scaling on two frames.
 expect 0 "ms per 100k triangles" bench "$level" --scaling --frames 2 --warmup 1 --size 96x54 --out "$work/scale"
 [ -s "$work/scale/scaling.png" ] && [ -s "$work/scale/scaling.json" ] || fail "scaling files missing"
