@@ -22,10 +22,15 @@ void pass_outline_prepass(const PassContext& ctx) {
     p.set("u_proj", ctx.cam.proj);
     for (const Batch& b : ctx.batches.batches) {
         const GpuMesh& mesh = ctx.gpu_meshes.get(ctx.meshes, b.mesh, b.lod);
+        // The same back-face culling as pass_prepass, so the baseline is not charged extra.
+        const bool cull = b.eye_outside && mesh.outward_closed;
+        if (cull != state.cull_back) {
+            state.cull_back = cull;
+            gl::apply(state);
+        }
         mesh.prepass_vao.bind();
-        glDrawElementsInstancedBaseInstance(GL_TRIANGLES, mesh.triangle_index_count,
-                                            GL_UNSIGNED_INT, nullptr, b.instance_count,
-                                            b.first_instance);
+        glDrawElementsInstancedBaseInstance(GL_TRIANGLES, mesh.triangle_index_count, GL_UNSIGNED_INT,
+                                            nullptr, b.instance_count, b.first_instance);
     }
 }
 
