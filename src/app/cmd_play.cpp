@@ -88,6 +88,10 @@ struct Play {
             co.width = 640;  // a test run: a smaller frame keeps software GL quick
             co.height = 360;
         }
+        if (options.size) {
+            co.width = options.size->x;
+            co.height = options.size->y;
+        }
         co.title = "beamzone";
         // Synchronous GL debug output costs time; test runs want it, players do not.
         co.debug = options.frames > 0 || std::getenv("BEAMZONE_GL_DEBUG") != nullptr;

@@ -66,6 +66,8 @@ PlayOptions parse_play_options(int argc, char* const* argv) {
             o.replay = cur.value(a);
         } else if (a == "--seed") {
             o.seed = parse_seed(a, cur.value(a));
+        } else if (a == "--size") {
+            o.size = parse_size(a, cur.value(a));
         } else if (a == "--frames") {
             o.frames = parse_int(a, cur.value(a), 1, 100000000);
         } else if (a == "--screenshot-at") {
@@ -93,7 +95,8 @@ std::string play_usage(const std::string& settings_path, const std::string& high
     return "usage: beamzone play [LEVEL] [--edit] [--preset fast|balanced|high]\n"
            "                     [--style occluded|arcade] [--windowed|--fullscreen]\n"
            "                     [--vsync off|on|adaptive] [--record FILE] [--replay FILE]\n"
-           "                     [--seed N] [--frames N] [--screenshot-at N] [--headless-test]\n"
+           "                     [--seed N] [--size WxH] [--frames N] [--screenshot-at N]\n"
+           "                     [--headless-test]\n"
            "Plays LEVEL (default levels/classic.toml) in a window. Edits to the level file are\n"
            "picked up while playing; errors show on screen and the last good level stays.\n"
            "  --edit           fly around the level without gameplay (WASD, R/F up/down,\n"
@@ -103,6 +106,7 @@ std::string play_usage(const std::string& settings_path, const std::string& high
            "  --record FILE    save this game's inputs so --replay FILE plays it back exactly\n"
            "                   (until the level file changes: a replay belongs to one level)\n"
            "  --seed N         random seed of the game (default: from the clock)\n"
+           "  --size WxH       window size (default 1280x720; 640x360 for --headless-test)\n"
            "  --frames N       run N frames, one 60 Hz tick each, then exit (for tests)\n"
            "  --screenshot-at N  save a screenshot after frame N, as F12 does\n"
            "  --headless-test  run in a hidden window, e.g. with SDL_VIDEODRIVER=offscreen\n"

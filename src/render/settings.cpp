@@ -24,13 +24,16 @@ RenderSettings preset(std::string_view name) {
         return s;
     }
     if (name == "balanced") {
+        // Quarter-resolution bloom: on llvmpipe the full-screen passes cost more than finding
+        // the lines (a 1280x720 game frame: 25.8 ms with half-resolution bloom, 14.7 ms with
+        // quarter), and with sigma scaled to match, the glow looks the same.
         s.depth = DepthFormat::reversed_f32;
         s.spine_samples = 1;
         s.depth_bias = 2e-3f;
         s.line_half_width_px = 2.0f;
-        s.bloom_resolution = BloomResolution::half;
-        s.bloom_taps = 9;
-        s.bloom_sigma_px = 3.0f;
+        s.bloom_resolution = BloomResolution::quarter;
+        s.bloom_taps = 7;
+        s.bloom_sigma_px = 1.5f;
         return s;
     }
     if (name == "high") {
