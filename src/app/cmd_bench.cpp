@@ -13,6 +13,7 @@
 #include "app/bench_sweep.h"
 #include "app/cli_args.h"
 #include "app/commands.h"
+#include "app/parse_command.h"
 #include "app/headless_gl.h"
 #include "core/error.h"
 #include "core/file_io.h"
@@ -266,24 +267,18 @@ int run(const Options& o) {
 }  // namespace
 
 int cmd_bench(Args args) {
-    for (const char* a : args) {
-        if (std::string_view(a) == "--help" || std::string_view(a) == "-h") {
-            std::fputs(kUsage, stdout);
-            return 0;
+    int exit_code = 0;
+    const auto parse_checked = [](Args a) {
+        Options o = parse(a);
+        try {
+            if (!o.preset.empty()) render::preset(o.preset);  // an unknown name is a usage error
+        } catch (const UserError& e) {
+            throw UsageError(e.what());
         }
-    }
-    Options o;
-    try {
-        o = parse(args);
-        if (!o.preset.empty()) render::preset(o.preset);
-    } catch (const UsageError& e) {
-        std::fprintf(stderr, "beamzone bench: %s\n%s", e.what(), kUsage);
-        return 2;
-    } catch (const UserError& e) {
-        std::fprintf(stderr, "beamzone bench: %s\n", e.what());
-        return 2;
-    }
-    return run(o);
+        return o;
+    };
+    const std::optional<Options> o = parse_command("bench", args, kUsage, parse_checked, &exit_code);
+    return o ? run(*o) : exit_code;
 }
 
 }  // namespace bz::app

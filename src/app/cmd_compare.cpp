@@ -5,6 +5,7 @@
 
 #include "app/cli_args.h"
 #include "app/commands.h"
+#include "app/parse_command.h"
 #include "core/error.h"
 #include "core/image_io.h"
 #include "geometry/mask_score.h"
@@ -57,19 +58,10 @@ std::vector<std::uint8_t> lit_pixels(const Image& img) {
 }  // namespace
 
 int cmd_compare(Args args) {
-    for (const char* a : args) {
-        if (std::string_view(a) == "--help" || std::string_view(a) == "-h") {
-            std::fputs(kUsage, stdout);
-            return 0;
-        }
-    }
-    Options o;
-    try {
-        o = parse(args);
-    } catch (const UsageError& e) {
-        std::fprintf(stderr, "beamzone compare: %s\n%s", e.what(), kUsage);
-        return 2;
-    }
+    int exit_code = 0;
+    const std::optional<Options> parsed = parse_command("compare", args, kUsage, parse, &exit_code);
+    if (!parsed) return exit_code;
+    const Options& o = *parsed;
     const Image test = read_png(o.test, 1);
     const Image ref = read_png(o.ref, 1);
     if (test.width != ref.width || test.height != ref.height) {

@@ -9,6 +9,7 @@
 #include "app/camera_args.h"
 #include "app/cli_args.h"
 #include "app/commands.h"
+#include "app/parse_command.h"
 #include "app/model_source.h"
 #include "app/resource_limits.h"
 #include "core/error.h"
@@ -143,19 +144,10 @@ int run(const Options& o) {
 }  // namespace
 
 int cmd_reference(Args args) {
-    for (const char* a : args) {
-        if (std::string_view(a) == "--help" || std::string_view(a) == "-h") {
-            std::fputs(kUsage, stdout);
-            return 0;
-        }
-    }
-    Options o;
-    try {
-        o = parse(args);
-    } catch (const UsageError& e) {
-        std::fprintf(stderr, "beamzone reference: %s\n%s", e.what(), kUsage);
-        return 2;
-    }
+    int exit_code = 0;
+    const std::optional<Options> parsed = parse_command("reference", args, kUsage, parse, &exit_code);
+    if (!parsed) return exit_code;
+    const Options& o = *parsed;
     return run(o);
 }
 

@@ -5,6 +5,7 @@
 #include "app/camera_args.h"
 #include "app/cli_args.h"
 #include "app/commands.h"
+#include "app/parse_command.h"
 #include "app/headless_gl.h"
 #include "app/resource_limits.h"
 #include "core/error.h"
@@ -108,26 +109,20 @@ geo::Bounds place_copies(scene::FrameList& frame, scene::MeshId id, const geo::B
 }  // namespace
 
 int cmd_render(Args args) {
-    RenderOptions o;
-    try {
-        for (auto* a : args) {
-            if (std::string_view(a) == "--help" || std::string_view(a) == "-h") {
-                std::fputs(kUsage, stdout);
-                return 0;
-            }
-        }
-        o = parse(args);
-    } catch (const UsageError& e) {
-        std::fprintf(stderr, "beamzone render: %s\n%s", e.what(), kUsage);
-        return 2;
-    }
+    int exit_code = 0;
     render::RenderSettings settings;
-    try {
-        settings = render::preset(o.preset);
-    } catch (const UserError& e) {
-        std::fprintf(stderr, "beamzone render: %s\n", e.what());
-        return 2;
-    }
+    const auto parse_checked = [&settings](Args a) {
+        RenderOptions parsed = parse(a);
+        try {
+            settings = render::preset(parsed.preset);
+        } catch (const UserError& e) {
+            throw UsageError(e.what());  // an unknown preset name is a usage error
+        }
+        return parsed;
+    };
+    const std::optional<RenderOptions> parsed = parse_command("render", args, kUsage, parse_checked, &exit_code);
+    if (!parsed) return exit_code;
+    const RenderOptions& o = *parsed;
     limit_memory_for_untrusted_input();
     geo::MeshReport report;
     geo::AdjacencyMesh mesh = geo::build_line_mesh(load_model_source(o.input), &report);

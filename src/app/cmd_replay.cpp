@@ -8,6 +8,7 @@
 
 #include "app/cli_args.h"
 #include "app/commands.h"
+#include "app/parse_command.h"
 #include "core/error.h"
 #include "core/paths.h"
 #include "game/assets.h"
@@ -198,19 +199,10 @@ int run(const Options& o) {
 }  // namespace
 
 int cmd_replay(Args args) {
-    for (const char* a : args) {
-        if (std::string_view(a) == "--help" || std::string_view(a) == "-h") {
-            std::fputs(kUsage, stdout);
-            return 0;
-        }
-    }
-    Options o;
-    try {
-        o = parse(args);
-    } catch (const UsageError& e) {
-        std::fprintf(stderr, "beamzone replay: %s\n%s", e.what(), kUsage);
-        return 2;
-    }
+    int exit_code = 0;
+    const std::optional<Options> parsed = parse_command("replay", args, kUsage, parse, &exit_code);
+    if (!parsed) return exit_code;
+    const Options& o = *parsed;
     try {
         return run(o);
     } catch (const UserError& e) {
