@@ -4,6 +4,7 @@
 #include <charconv>
 
 #include "core/error.h"
+#include "core/line_reader.h"
 #include "core/file_io.h"
 
 namespace bz::game {
@@ -70,20 +71,14 @@ std::string serialise(const HighScoreTable& table) {
 HighScoreTable parse_highscores(std::string_view text, const std::string& name) {
     HighScoreTable t;
     std::vector<HighScore> read;
-    int line_no = 0;
     bool magic = false;
     bool ended = false;
-    std::size_t pos = 0;
+    LineReader lines(text);
     auto fail = [&](const std::string& what) -> void {
-        throw UserError(name + ":" + std::to_string(line_no) + ": error: " + what);
+        throw UserError(name + ":" + std::to_string(lines.line_number()) + ": error: " + what);
     };
-    while (pos < text.size()) {
-        std::size_t end = text.find('\n', pos);
-        if (end == std::string_view::npos) end = text.size();
-        std::string_view line = text.substr(pos, end - pos);
-        pos = end + 1;
-        ++line_no;
-        if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+    std::string_view line;
+    while (lines.next(line)) {
         if (line.empty()) continue;
         if (!magic) {
             if (line != std::string(kMagic) + " 1") fail("not a beamzone high-score file");

@@ -6,6 +6,7 @@
 #include <system_error>
 
 #include "core/error.h"
+#include "core/line_reader.h"
 #include "core/file_io.h"
 #include "core/hash.h"
 #include "game/assets.h"
@@ -88,16 +89,10 @@ Replay parse(std::string_view text, const std::string& name) {
     Replay r;
     bool magic = false, have_seed = false, have_level = false, have_hash = false, ended = false;
     std::optional<std::uint64_t> declared_ticks;
-    int line_no = 0;
-    std::size_t pos = 0;
-    while (pos < text.size()) {
-        std::size_t end = text.find('\n', pos);
-        if (end == std::string_view::npos) end = text.size();
-        std::string_view line = text.substr(pos, end - pos);
-        pos = end + 1;
-        ++line_no;
-        if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
-        const LineError err(name, line_no);
+    LineReader lines(text);
+    std::string_view line;
+    while (lines.next(line)) {
+        const LineError err(name, lines.line_number());
         const auto f = fields(line);
         if (f.empty() || f[0].front() == '#') continue;
         if (ended) err.fail("text after 'end'");
@@ -193,7 +188,7 @@ Replay parse(std::string_view text, const std::string& name) {
             err.fail("unknown record '" + std::string(key) + "'");
         }
     }
-    const LineError at_end(name, line_no);
+    const LineError at_end(name, lines.line_number());
     if (!magic) at_end.fail("empty file, not a beamzone replay");
     if (!ended) at_end.fail("the replay is cut short (no 'end' line)");
     if (!have_seed) at_end.fail("missing 'seed'");
