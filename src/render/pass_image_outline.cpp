@@ -7,31 +7,18 @@ namespace bz::render {
 // The image-space baseline's prepass: every object (occluders or not, the method cannot tell)
 // into the depth target and a face-normal target.
 void pass_outline_prepass(const PassContext& ctx) {
-    const bool reversed = ctx.settings.depth == DepthFormat::reversed_f32;
     ctx.targets.normals_fbo.bind();
-    gl::PipelineState state;
-    state.depth_test = reversed ? gl::DepthTest::greater : gl::DepthTest::less;
-    state.depth_write = true;
-    state.depth_zero_to_one = ctx.cam.zero_to_one;
+    const gl::PipelineState state = depth_writing_state(ctx, true);
     gl::apply(state);
-    glClearDepth(reversed ? 0.0 : 1.0);
+    glClearDepth(depth_clear_value(ctx));
     glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
     glClear(GL_DEPTH_BUFFER_BIT | GL_COLOR_BUFFER_BIT);
     const gl::Program& p = ctx.programs.outline_prepass;
     p.use();
     p.set("u_proj", ctx.cam.proj);
-    for (const Batch& b : ctx.batches.batches) {
-        const GpuMesh& mesh = ctx.gpu_meshes.get(ctx.meshes, b.mesh, b.lod);
-        // The same back-face culling as pass_prepass, so the baseline is not charged extra.
-        const bool cull = b.eye_outside && mesh.outward_closed;
-        if (cull != state.cull_back) {
-            state.cull_back = cull;
-            gl::apply(state);
-        }
-        mesh.prepass_vao.bind();
-        glDrawElementsInstancedBaseInstance(GL_TRIANGLES, mesh.triangle_index_count, GL_UNSIGNED_INT,
-                                            nullptr, b.instance_count, b.first_instance);
-    }
+    // The same batches and back-face culling as pass_prepass, so the baseline is not charged
+    // extra; all objects, since the method cannot tell occluders apart.
+    draw_batch_triangles(ctx, state, false);
 }
 
 // Sobel over depth and normals, into the HDR lines target (or the mask in mask mode).

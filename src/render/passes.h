@@ -25,6 +25,13 @@ struct PassContext {
 };
 
 void pass_prepass(const PassContext& ctx);
+
+// Shared by the depth-writing passes (pass_prepass.cpp): the state for the camera's depth
+// convention, its clear value, and drawing every batch's triangles with the back-face culling
+// that outward-closed meshes seen from outside allow.
+gl::PipelineState depth_writing_state(const PassContext& ctx, bool color_write);
+double depth_clear_value(const PassContext& ctx);
+void draw_batch_triangles(const PassContext& ctx, gl::PipelineState state, bool occluders_only);
 // mask_mode: draw the 1-pixel visible-spine mask into targets.mask instead of shaded lines.
 void pass_lines(const PassContext& ctx, bool mask_mode);
 void pass_hud(const PassContext& ctx, const gl::VertexArray& hud_vao, GLsizei vertex_count);
