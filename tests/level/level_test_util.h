@@ -49,6 +49,13 @@ class ScratchDir {
 };
 
 // The smallest valid level (two lines) with `body` appended.
+// Loads level text as "levels/test.toml" with a data/ root that does not exist, so no model
+// path can resolve into the real data folder.
+inline LoadResult load_text(std::string_view text, LoadOptions options = {}) {
+    options.data_root = "/nonexistent-data";
+    return load_level_string(text, "levels/test.toml", options);
+}
+
 inline std::string level_text(std::string_view body) {
     return "version = 1\nname = \"Test level\"\n" + std::string(body);
 }

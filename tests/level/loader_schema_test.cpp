@@ -13,10 +13,7 @@ namespace {
 using test::has_one_error;
 using test::level_text;
 
-LoadResult load(std::string_view text, LoadOptions options = {}) {
-    options.data_root = "/nonexistent-data";
-    return load_level_string(text, "levels/test.toml", options);
-}
+LoadResult load(std::string_view text, LoadOptions options = {}) { return test::load_text(text, options); }
 
 TEST(LoaderSchema, SmallestLevelGetsDefaults) {
     const auto r = load(level_text(""));

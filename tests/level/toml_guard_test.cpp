@@ -12,11 +12,8 @@ namespace {
 using test::has_one_error;
 using test::level_text;
 
-LoadResult load(std::string_view text) {
-    LoadOptions options;
-    options.data_root = "/nonexistent-data";
-    return load_level_string(text, "levels/test.toml", options);
-}
+using test::load_text;
+LoadResult load(std::string_view text) { return load_text(text); }
 
 TEST(TomlGuard, NonAsciiOutsideStringsIsASyntaxError) {
     // U+00DD after a number sent toml++ into __builtin_unreachable() (found by the fuzzer).
