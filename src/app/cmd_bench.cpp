@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <string>
 
+#include "core/output_path.h"
+#include "core/printable.h"
 #include "app/bench_plots.h"
 #include "app/bench_report.h"
 #include "app/bench_run.h"
@@ -100,7 +102,7 @@ Options parse(Args args) {
                 throw UsageError("--timing: expected auto, cpu or gpu");
             }
         } else if (!a.empty() && a[0] == '-') {
-            throw UsageError("unknown option " + std::string(a));
+            throw UsageError("unknown option " + printable(a));
         } else if (o.level.empty()) {
             o.level = a;
         } else {
@@ -152,6 +154,7 @@ void write_text(const fs::path& p, const std::string& s) {
 }
 
 int run(const Options& o) {
+    check_output_dir("--out", o.out);
     level::LoadResult loaded = level::load_level_file(o.level);
     if (!loaded.ok()) {
         for (const level::Diagnostic& d : loaded.errors)
@@ -171,7 +174,7 @@ int run(const Options& o) {
     const BenchFrames frames = simulate(scene, o, aspect);
 
     std::error_code ec;
-    fs::create_directories(o.out, ec);
+    fs::create_directory(o.out, ec);  // the folder itself, never missing parents
     if (ec) throw UserError(o.out + ": cannot create the output directory: " + ec.message());
 
     auto context = make_headless_context();
@@ -203,7 +206,7 @@ int run(const Options& o) {
         SweepOptions so;
         so.samples = o.samples;
         so.masks_dir = out / "masks";
-        fs::create_directories(so.masks_dir, ec);
+        fs::create_directory(so.masks_dir, ec);
         if (ec) throw UserError(so.masks_dir.string() + ": cannot create: " + ec.message());
         so.rounds = o.rounds;
         const SweepResult result =

@@ -14,6 +14,7 @@
 #include "app/play_sessions.h"
 #include "core/error.h"
 #include "core/log.h"
+#include "core/output_path.h"
 #include "core/paths.h"
 #include "level/loader.h"
 #include "platform/pref_paths.h"
@@ -34,6 +35,14 @@ struct Play {
     Log& log;
 
     int run() {
+        if (!options.record.empty()) {
+            // Checked before anything starts, so a game is never played into a recording that
+            // cannot be saved or that would replace the level, a setting or a high score.
+            const std::filesystem::path inputs[] = {
+                options.level,   level::default_level_path(), paths.settings,
+                paths.high_scores, paths.log,                 paths.gamepad_db};
+            check_output_file("--record", options.record, kReplayOutput, inputs);
+        }
         log.info("settings: " + paths.settings.string());
         log.info("high scores: " + paths.high_scores.string());
         log.info("log: " + paths.log.string());
@@ -134,7 +143,8 @@ struct Play {
         LoopParts parts{context,  choose,        make_renderer, audio, input,
                         gamepads, watcher.get(), overlay,       log,   settings};
         const LoopResult result = run_play_loop(*session, parts, config);
-        session.reset();  // flushes a recording before we report
+        const bool saved = session->save_on_exit();  // before we report
+        session.reset();
 
         if (result.settings_changed) {
             if (loaded.may_save()) {
@@ -148,7 +158,7 @@ struct Play {
             std::printf("play: %d frames, %d ticks, %d GL errors\n", result.frames, result.ticks,
                         result.gl_errors);
         }
-        return result.gl_errors > 0 || result.session_failed ? 1 : 0;
+        return result.gl_errors > 0 || result.session_failed || !saved ? 1 : 0;
     }
 
     void save(const platform::Settings& s) {

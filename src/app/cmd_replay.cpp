@@ -6,6 +6,8 @@
 #include <filesystem>
 #include <string>
 
+#include "core/output_path.h"
+#include "core/printable.h"
 #include "app/cli_args.h"
 #include "app/commands.h"
 #include "app/parse_command.h"
@@ -54,7 +56,7 @@ Options parse(Args args) {
         } else if (a == "--seed") {
             o.seed = static_cast<std::uint64_t>(parse_int(a, cur.value(a), 0, 2147483647));
         } else if (!a.empty() && a[0] == '-') {
-            throw UsageError("unknown option " + std::string(a));
+            throw UsageError("unknown option " + printable(a));
         } else if (o.file.empty()) {
             o.file = a;
         } else {
@@ -96,6 +98,8 @@ level::Level load_level_or_report(const fs::path& path, bool& ok) {
 }
 
 int record_demo(const Options& o) {
+    const fs::path inputs[] = {o.level};
+    check_output_file("replay --record-demo", o.file, kReplayOutput, inputs);
     level::Level lv = game::default_level();
     std::string name = game::kBuiltinLevelName;
     if (!o.level.empty()) {

@@ -47,6 +47,11 @@ class PlaySession {
     virtual bool finished() const { return false; }
     // True when the run failed in a way the exit code should show (a replay that diverged).
     virtual bool failed() const { return false; }
+    // Called once when the run ends, however it ends (quit, --frames, a signal): saves what
+    // must outlive it (a recording). False when a save failed (it was reported; the exit code
+    // shows it too).
+    virtual bool save_on_exit() { return true; }
+
 };
 
 }  // namespace bz::app

@@ -49,19 +49,25 @@ class GameSession final : public PlaySession {
         }
     }
 
-    ~GameSession() override {
-        if (record_path_.empty()) return;
+    // A run cut short by an exception still keeps its recording.
+    ~GameSession() override { save_on_exit(); }
+
+    bool save_on_exit() override {
+        if (record_path_.empty()) return !save_failed_;
+        const std::string path = std::exchange(record_path_, std::string());
         try {
             if (const auto rec = game_->recording()) {
-                game::replay::save(record_path_, *rec);
+                game::replay::save(path, *rec);
                 log_.info("recorded " + std::to_string(rec->commands.size()) + " ticks to " +
-                          record_path_);
+                          path);
             } else {
-                log_.warn("nothing to record in " + record_path_ + ": no game was started");
+                log_.warn("nothing to record in " + path + ": no game was started");
             }
         } catch (const std::exception& e) {
             log_.error(std::string("cannot save the recording: ") + e.what());
+            save_failed_ = true;
         }
+        return !save_failed_;
     }
 
     void tick(const platform::InputState& in) override {
@@ -149,6 +155,7 @@ class GameSession final : public PlaySession {
                       "; the rest of this run is not recorded");
         } catch (const std::exception& e) {
             log_.error(std::string("cannot save the recording: ") + e.what());
+            save_failed_ = true;
         }
     }
 
@@ -185,6 +192,7 @@ class GameSession final : public PlaySession {
     float engine_ = 0.0f;
     bool pause_ = false, start_ = false, back_ = false;
     bool replay_reported_ = false;
+    bool save_failed_ = false;
 };
 
 // --edit: the level's objects and horizon from a free-flying camera; nothing moves but the
