@@ -135,6 +135,8 @@ struct Play {
         std::unique_ptr<PlaySession> session =
             options.edit ? make_edit_session(so, log) : make_game_session(so, log);
 
+        for (const std::string& notice : session->take_notices()) overlay.notify(notice, 10.0);
+
         LoopConfig config;
         config.frames = options.frames;
         config.screenshot_at = options.screenshot_at;

@@ -51,7 +51,9 @@ class PlaySession {
     // must outlive it (a recording). False when a save failed (it was reported; the exit code
     // shows it too).
     virtual bool save_on_exit() { return true; }
-
+    // Messages for the player that arose outside the loop (a damaged high-score file), to
+    // show on screen once.
+    virtual std::vector<std::string> take_notices() { return {}; }
 };
 
 }  // namespace bz::app

@@ -12,6 +12,7 @@
 #include "game/fixed_step.h"
 #include "game/game.h"
 #include "game/highscores.h"
+#include "game/level_rules.h"
 #include "game/replay.h"
 #include "platform/free_fly.h"
 
@@ -35,8 +36,15 @@ class GameSession final : public PlaySession {
           log_(log) {
         options_.seed = o.seed.value_or(clock_seed());
         game::HighScoreLoad scores = game::load_highscores(high_scores_path_);
-        if (!scores.warning.empty()) log_.warn(scores.warning);
-        options_.highscores = std::move(scores.table);
+        for (const std::string& e : scores.errors) log_.warn(e);
+        if (!scores.message.empty()) {
+            log_.warn(scores.message);
+            notices_.push_back(scores.message);
+        }
+        scores_may_save_ = scores.may_save;
+        book_ = std::move(scores.book);
+        key_ = key_of(lvl);
+        options_.highscores = book_.table(key_);
         options_.record = !record_path_.empty();
         // Recording starts a game at once rather than recording the title screen's wait.
         if (options_.record) options_.attract = false;
@@ -126,6 +134,11 @@ class GameSession final : public PlaySession {
         // The game goes on in the edited level: score, lives, screen and the tank stay.
         const game::ReloadReport r = game_->reload_level(lvl);
         if (r.ended_recording) end_recording(*r.ended_recording);
+        // Edited rules make another table (high scores are kept per level and rules).
+        if (const game::LevelKey key = key_of(lvl); key != key_) {
+            key_ = key;
+            game_->set_highscores(book_.table(key_));
+        }
         if (const game::World* w = game_->world()) {
             const glm::dvec3& at = w->state().player.body.transform.position;
             char where[64];
@@ -138,6 +151,8 @@ class GameSession final : public PlaySession {
                 (r.world.hostile_moved ? "; the enemy was moved to a free place" : ""));
         }
     }
+
+    std::vector<std::string> take_notices() override { return std::exchange(notices_, {}); }
 
     bool finished() const override { return game_->replay_finished(); }
     bool failed() const override { return game_->replay_mismatch().has_value(); }
@@ -159,9 +174,19 @@ class GameSession final : public PlaySession {
         }
     }
 
+    static game::LevelKey key_of(const level::Level& lvl) {
+        return game::level_key(lvl.name, game::level_rules_hash(lvl));
+    }
+
     void save_scores() {
+        book_.set(key_, game_->highscores());
+        if (!scores_may_save_) {
+            log_.warn("not saving high scores: " + high_scores_path_.string() +
+                      " is damaged and could not be moved aside");
+            return;
+        }
         try {
-            game::save_highscores(high_scores_path_, game_->highscores());
+            game::save_highscores(high_scores_path_, book_);
             log_.info("high scores saved: " + high_scores_path_.string());
         } catch (const UserError& e) {
             log_.warn(std::string("cannot save high scores: ") + e.what());
@@ -193,6 +218,10 @@ class GameSession final : public PlaySession {
     bool pause_ = false, start_ = false, back_ = false;
     bool replay_reported_ = false;
     bool save_failed_ = false;
+    game::HighScoreBook book_;  // every level's table; the game shows key_'s
+    game::LevelKey key_;
+    bool scores_may_save_ = true;
+    std::vector<std::string> notices_;
 };
 
 // --edit: the level's objects and horizon from a free-flying camera; nothing moves but the

@@ -5,6 +5,7 @@
 #include "core/file_io.h"
 #include "core/hash.h"
 #include "game/assets.h"
+#include "game/level_rules.h"
 
 namespace bz::game::replay {
 
@@ -13,33 +14,10 @@ std::uint64_t level_hash(const level::Level& lv) {
     if (!lv.file.empty() && std::filesystem::is_regular_file(lv.file, ec)) {
         return hash_bytes(read_file(lv.file));
     }
+    // The built-in level has no file: its name and rules stand for it.
     Hasher h;
     h.text(lv.name);
-    h.value(lv.field_size);
-    h.value(lv.wrap);
-    h.value(lv.player_start.x);
-    h.value(lv.player_start.z);
-    h.value(lv.player_heading_deg);
-    h.value(lv.obstacles.size());
-    for (const level::ObjectDesc& o : lv.obstacles) {
-        h.text(o.kind);
-        h.text(o.model.string());
-        h.value(o.position.x);
-        h.value(o.position.y);
-        h.value(o.position.z);
-        h.value(o.heading_deg);
-        h.value(o.scale);
-    }
-    const level::EnemyRules& e = lv.enemies;
-    h.value(e.slow_tank);
-    h.value(e.super_tank);
-    h.value(e.missile);
-    h.value(e.saucer);
-    h.value(e.super_tank_score);
-    h.value(e.missile_score);
-    h.value(e.spawn_min_distance);
-    h.value(e.spawn_max_distance);
-    h.value(e.aggression);
+    h.value(level_rules_hash(lv));
     return h.digest();
 }
 
