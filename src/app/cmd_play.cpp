@@ -12,10 +12,13 @@
 #include "app/play_loop.h"
 #include "app/play_options.h"
 #include "app/play_sessions.h"
+#include "app/replay_level.h"
 #include "core/error.h"
 #include "core/log.h"
 #include "core/output_path.h"
 #include "core/paths.h"
+#include "game/default_level.h"
+#include "game/replay.h"
 #include "level/loader.h"
 #include "platform/pref_paths.h"
 #include "render/settings.h"
@@ -65,13 +68,27 @@ struct Play {
         look.settings_style_given = loaded.style_given || !loaded.file_existed;
         if (loaded.preset_given || !loaded.file_existed) look.settings_preset = settings.preset;
 
+        // A replay names its level: without a LEVEL argument, play it on that one (the
+        // built-in level included), as `replay --verify` does.
+        std::string level_arg = options.level;
+        bool replay_on_builtin = false;
+        if (level_arg.empty() && !options.replay.empty()) {
+            const std::string recorded = game::replay::load(options.replay).header.level;
+            if (recorded == game::kBuiltinLevelName) {
+                replay_on_builtin = true;
+            } else {
+                level_arg = replay_level_path(recorded, options.replay).string();
+            }
+        }
+
         // The level before the window, so a broken level file fails fast and plainly.
         std::unique_ptr<level::LevelWatcher> watcher;
-        const std::filesystem::path level_path = options.level.empty()
+        const std::filesystem::path level_path = level_arg.empty()
                                                      ? level::default_level_path()
-                                                     : std::filesystem::path(options.level);
+                                                     : std::filesystem::path(level_arg);
         std::error_code ec;
-        if (!options.level.empty() || std::filesystem::exists(level_path, ec)) {
+        if (!replay_on_builtin &&
+            (!level_arg.empty() || std::filesystem::exists(level_path, ec))) {
             watcher = std::make_unique<level::LevelWatcher>(level_path);
             if (!watcher->current()) {
                 for (const auto& line : format_diagnostics(watcher->errors())) {
@@ -83,6 +100,8 @@ struct Play {
                 return 1;
             }
             log.info("level: " + level_path.string() + " (edits reload while playing)");
+        } else if (replay_on_builtin) {
+            log.info("the replay was recorded on the built-in level; playing it there");
         } else {
             log.info("no " + level_path.string() + "; playing the built-in level");
         }
