@@ -14,6 +14,7 @@
 #include "app/play_sessions.h"
 #include "app/replay_level.h"
 #include "core/error.h"
+#include "core/interrupt.h"
 #include "core/log.h"
 #include "core/output_path.h"
 #include "core/paths.h"
@@ -163,6 +164,8 @@ struct Play {
         config.screenshots = paths.screenshots;
         LoopParts parts{context,  choose,        make_renderer, audio, input,
                         gamepads, watcher.get(), overlay,       log,   settings};
+        // From here on a signal ends the loop, and what must be saved is saved below.
+        stop_gracefully_on_signal();
         const LoopResult result = run_play_loop(*session, parts, config);
         const bool saved = session->save_on_exit();  // before we report
         session.reset();
@@ -178,6 +181,10 @@ struct Play {
         if (options.frames > 0) {
             std::printf("play: %d frames, %d ticks, %d GL errors\n", result.frames, result.ticks,
                         result.gl_errors);
+        }
+        if (interrupt_requested()) {
+            // Asked to quit, the game quit cleanly, as when its window is closed.
+            log.info("stopped by a signal; what needed saving was saved");
         }
         return result.gl_errors > 0 || result.session_failed || !saved ? 1 : 0;
     }

@@ -154,7 +154,9 @@ class GameSession final : public PlaySession {
 
     std::vector<std::string> take_notices() override { return std::exchange(notices_, {}); }
 
-    bool finished() const override { return game_->replay_finished(); }
+    bool finished() const override {
+        return game_->replay_finished() || PlaySession::finished();
+    }
     bool failed() const override { return game_->replay_mismatch().has_value(); }
 
   private:
