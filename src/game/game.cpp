@@ -1,12 +1,14 @@
 #include "game/game.h"
 
 #include <algorithm>
+#include <cctype>
 
 #include "core/error.h"
 #include "game/autopilot.h"
 #include "game/backdrop.h"
 #include "game/default_level.h"
 #include "game/hud.h"
+#include "game/hud_layout.h"
 #include "game/screens.h"
 #include "game/tuning.h"
 
@@ -299,6 +301,14 @@ scene::FrameList Game::frame(double alpha, double aspect) const {
         case Screen::high_scores:
             screens::high_scores(f.hud, font_, highscores_, new_rank_, ticks_);
             break;
+    }
+    // Tables are kept per level: say whose this is.
+    if (screen_ == Screen::high_scores ||
+        (screen_ == Screen::attract && (ticks_ / kAttractCycleTicks) % 2 == 1)) {
+        std::string title = level_key(level_.name, 0).name;
+        for (char& c : title) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+        hud::text(f.hud, font_, title, {0.0f, 0.54f}, 0.045f, hud::kGreen,
+                  scene::TextAlign::center);
     }
     if (playback_ && live) {
         std::string note;
