@@ -1,0 +1,160 @@
+#include "geometry/import_scene.h"
+
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+
+#include <assimp/Importer.hpp>
+#include <cmath>
+#include <exception>
+#include <fstream>
+#include <memory>
+#include <new>
+#include <string>
+#include <system_error>
+#include <utility>
+#include <vector>
+
+#include "core/error.h"
+#include "core/stderr_capture.h"
+#include "geometry/import_guard.h"
+
+namespace bz::geo::detail {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Deeper hierarchies than this are treated as broken files rather than walked.
+constexpr std::size_t kMaxNodeDepth = 1024;
+
+[[noreturn]] void fail(const fs::path& path, const std::string& reason) {
+    std::string line = path.string() + ": error: " + reason;
+    for (char& c : line) {
+        if (c == '\n' || c == '\r') c = ' ';
+    }
+    while (!line.empty() && line.back() == ' ') line.pop_back();
+    throw UserError(line);
+}
+
+std::string read_head(const fs::path& path, std::size_t max_bytes) {
+    std::ifstream in(path, std::ios::binary);
+    std::string head(max_bytes, '\0');
+    in.read(head.data(), static_cast<std::streamsize>(max_bytes));
+    head.resize(static_cast<std::size_t>(in.gcount()));
+    return head;
+}
+
+void check_file(const fs::path& path, std::uintmax_t max_bytes) {
+    std::error_code ec;
+    const auto status = fs::status(path, ec);
+    if (ec || !fs::exists(status)) fail(path, "file not found");
+    if (!fs::is_regular_file(status)) fail(path, "not a regular file");
+    const auto size = fs::file_size(path, ec);
+    if (ec) fail(path, "cannot read file size: " + ec.message());
+    if (size > max_bytes) {
+        fail(path, "file is " + std::to_string(size) + " bytes, over the limit of " +
+                       std::to_string(max_bytes));
+    }
+    if (auto why = implausible_off_header(read_head(path, 4096), size)) fail(path, *why);
+}
+
+bool has_triangles(const aiMesh& mesh) {
+    for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
+        if (mesh.mFaces[f].mNumIndices == 3) return true;
+    }
+    return false;
+}
+
+struct Walk {
+    const fs::path& path;
+    const aiScene& scene;
+    const ImportLimits& limits;
+    TriMesh out;
+
+    // Appends one placed instance of `mesh`: its vertices transformed, its triangles
+    // re-indexed.
+    void append_instance(const aiMesh& mesh, const aiMatrix4x4& to_model) {
+        if (!mesh.mVertices || !has_triangles(mesh)) return;
+        if (out.positions.size() + mesh.mNumVertices > limits.max_triangles ||
+            out.triangle_count() + mesh.mNumFaces > limits.max_triangles) {
+            fail(path, "more than " + std::to_string(limits.max_triangles) +
+                           " triangles or vertices with every node instance placed");
+        }
+        const auto base = static_cast<std::uint32_t>(out.positions.size());
+        for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
+            const aiVector3D p = to_model * mesh.mVertices[v];
+            if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
+                const std::string name = mesh.mName.C_Str();
+                fail(path, "non-finite vertex position (NaN or Inf)" +
+                               (name.empty() ? std::string() : " in mesh '" + name + "'"));
+            }
+            out.positions.emplace_back(p.x, p.y, p.z);
+        }
+        for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
+            const aiFace& face = mesh.mFaces[f];
+            if (face.mNumIndices != 3) continue;  // points and lines
+            for (unsigned k = 0; k < 3; ++k) {
+                if (face.mIndices[k] >= mesh.mNumVertices) fail(path, "vertex index out of range");
+                out.indices.push_back(base + face.mIndices[k]);
+            }
+        }
+    }
+
+    void run() {
+        struct Visit {
+            const aiNode* node;
+            aiMatrix4x4 parent;
+            std::size_t depth;
+        };
+        std::vector<Visit> stack{{scene.mRootNode, aiMatrix4x4(), 0}};
+        while (!stack.empty()) {
+            const Visit at = stack.back();
+            stack.pop_back();
+            if (at.depth > kMaxNodeDepth) fail(path, "node hierarchy too deep");
+            const aiMatrix4x4 to_model = at.parent * at.node->mTransformation;
+            for (unsigned i = 0; i < at.node->mNumMeshes; ++i) {
+                const unsigned m = at.node->mMeshes[i];
+                if (m >= scene.mNumMeshes || !scene.mMeshes[m]) fail(path, "bad mesh reference");
+                append_instance(*scene.mMeshes[m], to_model);
+            }
+            // Pushed in reverse so children are visited in file order.
+            for (unsigned c = at.node->mNumChildren; c-- > 0;) {
+                if (at.node->mChildren[c])
+                    stack.push_back({at.node->mChildren[c], to_model, at.depth + 1});
+            }
+        }
+    }
+};
+
+}  // namespace
+
+TriMesh import_in_this_process(const fs::path& path, const ImportOptions& options) {
+    check_file(path, options.limits.max_file_bytes);
+
+    Assimp::Importer importer;
+    // No Assimp::DefaultLogger is ever created, so Assimp logs to its null logger: silent.
+    const unsigned flags = aiProcess_Triangulate | aiProcess_ValidateDataStructure;
+    const aiScene* scene = nullptr;
+    {
+        // A few loaders print to stderr directly; keep that out of our one-line messages.
+        StderrCapture loader_output;
+        try {
+            scene = importer.ReadFile(path.string(), flags);
+        } catch (const std::exception& e) {
+            // Assimp catches its own import errors; this is for the unexpected.
+            fail(path, std::string("import failed: ") + e.what());
+        }
+        const std::string printed = loader_output.text();
+        if (!scene) {
+            std::string why = importer.GetErrorString();
+            if (!printed.empty()) why += " (loader printed: " + printed.substr(0, 200) + ")";
+            fail(path, why);
+        }
+    }
+    if (!scene->mRootNode) fail(path, "no scene hierarchy");
+    Walk walk{path, *scene, options.limits, {}};
+    walk.run();
+    if (walk.out.indices.empty()) fail(path, "no triangles");
+    return std::move(walk.out);
+}
+
+}  // namespace bz::geo::detail
