@@ -6,7 +6,6 @@
 #include <assimp/Importer.hpp>
 #include <cmath>
 #include <exception>
-#include <fstream>
 #include <memory>
 #include <new>
 #include <string>
@@ -15,6 +14,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "core/regular_file.h"
 #include "core/stderr_capture.h"
 #include "geometry/import_guard.h"
 
@@ -35,26 +35,10 @@ constexpr std::size_t kMaxNodeDepth = 1024;
     throw UserError(line);
 }
 
-std::string read_head(const fs::path& path, std::size_t max_bytes) {
-    std::ifstream in(path, std::ios::binary);
-    std::string head(max_bytes, '\0');
-    in.read(head.data(), static_cast<std::streamsize>(max_bytes));
-    head.resize(static_cast<std::size_t>(in.gcount()));
-    return head;
-}
-
-void check_file(const fs::path& path, std::uintmax_t max_bytes) {
-    std::error_code ec;
-    const auto status = fs::status(path, ec);
-    if (ec || !fs::exists(status)) fail(path, "file not found");
-    if (!fs::is_regular_file(status)) fail(path, "not a regular file");
-    const auto size = fs::file_size(path, ec);
-    if (ec) fail(path, "cannot read file size: " + ec.message());
-    if (size > max_bytes) {
-        fail(path, "file is " + std::to_string(size) + " bytes, over the limit of " +
-                       std::to_string(max_bytes));
-    }
-    if (auto why = implausible_off_header(read_head(path, 4096), size)) fail(path, *why);
+// Everything that can be checked before Assimp allocates anything for the file.
+void check_before_import(const fs::path& path, const RegularFile& file) {
+    const std::string head = read_head(file, 4096);
+    if (auto why = implausible_off_header(head, file.size())) fail(path, *why);
 }
 
 bool has_triangles(const aiMesh& mesh) {
@@ -128,7 +112,14 @@ struct Walk {
 }  // namespace
 
 TriMesh import_in_this_process(const fs::path& path, const ImportOptions& options) {
-    check_file(path, options.limits.max_file_bytes);
+    RegularFileResult opened = open_regular_file(path);
+    if (!opened.why.empty()) fail(path, opened.why);
+    const RegularFile& file = opened.file;
+    if (file.size() > options.limits.max_file_bytes) {
+        fail(path, "file is " + std::to_string(file.size()) + " bytes, over the limit of " +
+                       std::to_string(options.limits.max_file_bytes));
+    }
+    check_before_import(path, file);
 
     Assimp::Importer importer;
     // No Assimp::DefaultLogger is ever created, so Assimp logs to its null logger: silent.
