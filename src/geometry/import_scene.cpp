@@ -35,10 +35,24 @@ constexpr std::size_t kMaxNodeDepth = 1024;
     throw UserError(line);
 }
 
+std::string lowercase_extension(const fs::path& path) {
+    std::string ext = path.extension().string();
+    for (char& c : ext) {
+        if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
+    }
+    return ext;
+}
+
 // Everything that can be checked before Assimp allocates anything for the file.
-void check_before_import(const fs::path& path, const RegularFile& file) {
-    const std::string head = read_head(file, 4096);
-    if (auto why = implausible_off_header(head, file.size())) fail(path, *why);
+void check_before_import(const fs::path& path, const RegularFile& file,
+                         const ImportOptions& options) {
+    const ImportLimits& limits = options.limits;
+    const std::string ext = lowercase_extension(path);
+    const std::string head = read_head(file, kGuardHeadBytes);
+    if (auto why = implausible_declared_counts(head, file.size(), ext)) fail(path, *why);
+    if (ext == ".obj") {
+        if (auto why = too_many_lines(file.fd(), limits.max_text_lines)) fail(path, "OBJ has " + *why);
+    }
 }
 
 bool has_triangles(const aiMesh& mesh) {
@@ -119,7 +133,7 @@ TriMesh import_in_this_process(const fs::path& path, const ImportOptions& option
         fail(path, "file is " + std::to_string(file.size()) + " bytes, over the limit of " +
                        std::to_string(options.limits.max_file_bytes));
     }
-    check_before_import(path, file);
+    check_before_import(path, file, options);
 
     Assimp::Importer importer;
     // No Assimp::DefaultLogger is ever created, so Assimp logs to its null logger: silent.
