@@ -17,6 +17,7 @@
 #include "core/regular_file.h"
 #include "core/stderr_capture.h"
 #include "geometry/import_guard.h"
+#include "geometry/import_zip.h"
 
 namespace bz::geo::detail {
 namespace {
@@ -50,6 +51,9 @@ void check_before_import(const fs::path& path, const RegularFile& file,
     const std::string ext = lowercase_extension(path);
     const std::string head = read_head(file, kGuardHeadBytes);
     if (auto why = implausible_declared_counts(head, file.size(), ext)) fail(path, *why);
+    if (looks_like_zip(head)) {
+        if (auto why = zip_over_limits(file.fd(), limits.max_unzipped_bytes)) fail(path, *why);
+    }
     if (ext == ".obj") {
         if (auto why = too_many_lines(file.fd(), limits.max_text_lines)) fail(path, "OBJ has " + *why);
     }
