@@ -16,6 +16,7 @@
 #include "core/error.h"
 #include "core/regular_file.h"
 #include "core/stderr_capture.h"
+#include "geometry/import_gltf.h"
 #include "geometry/import_guard.h"
 #include "geometry/import_zip.h"
 
@@ -53,6 +54,16 @@ void check_before_import(const fs::path& path, const RegularFile& file,
     if (auto why = implausible_declared_counts(head, file.size(), ext)) fail(path, *why);
     if (looks_like_zip(head)) {
         if (auto why = zip_over_limits(file.fd(), limits.max_unzipped_bytes)) fail(path, *why);
+    }
+    if (looks_like_glb(head)) {
+        if (const auto json = glb_json_chunk(file.fd(), file.size())) {
+            if (auto why = gltf_nodes_over_limit(*json, limits.max_node_instances)) {
+                fail(path, *why);
+            }
+        }
+    } else if (ext == ".gltf") {
+        const std::string json = read_head(file, static_cast<std::size_t>(file.size()));
+        if (auto why = gltf_nodes_over_limit(json, limits.max_node_instances)) fail(path, *why);
     }
     if (ext == ".obj") {
         if (auto why = too_many_lines(file.fd(), limits.max_text_lines)) fail(path, "OBJ has " + *why);
@@ -108,10 +119,16 @@ struct Walk {
             std::size_t depth;
         };
         std::vector<Visit> stack{{scene.mRootNode, aiMatrix4x4(), 0}};
+        std::uint64_t visited = 0;
         while (!stack.empty()) {
             const Visit at = stack.back();
             stack.pop_back();
             if (at.depth > kMaxNodeDepth) fail(path, "node hierarchy too deep");
+            // The budget counts instances, so a node reachable along many paths costs each time.
+            if (++visited > limits.max_node_instances) {
+                fail(path, "scene graph has more than " +
+                               std::to_string(limits.max_node_instances) + " node instances");
+            }
             const aiMatrix4x4 to_model = at.parent * at.node->mTransformation;
             for (unsigned i = 0; i < at.node->mNumMeshes; ++i) {
                 const unsigned m = at.node->mMeshes[i];
