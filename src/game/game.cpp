@@ -262,6 +262,8 @@ scene::FrameList Game::frame(double alpha, double aspect) const {
     const double a = screen_ == Screen::paused ? 1.0 : alpha;
     scene::FrameList f = shown.interpolated_frame(a, options_.fov_y_deg);
     const double seconds = (static_cast<double>(ticks_) + a) / tuning::kTicksPerSecond;
+    f.time_s = seconds;  // phosphor decay and frame holding follow game time
+    f.seed = static_cast<std::uint32_t>(ticks_);
     backdrop::append_items(f.items, level_.backdrop, assets_->horizon(), f.camera.eye, seconds);
     if (screen_ == Screen::enter_initials || screen_ == Screen::high_scores) {
         f.items.clear();  // text only: the table must be readable

@@ -48,6 +48,11 @@ struct FrameList {
     std::vector<DrawItem> items;
     std::vector<HudLine> hud;
     LineStyle style = LineStyle::occluded;
+    // When this frame is shown, in seconds of game time (only differences matter: phosphor
+    // decay and frame holding follow it), and the seed of its beam flicker. Both come from the
+    // simulation, so replays and benchmarks draw the same pictures.
+    double time_s = 0.0;
+    std::uint32_t seed = 0;
 };
 
 }  // namespace bz::scene
