@@ -48,6 +48,9 @@ struct FrameList {
     std::vector<DrawItem> items;
     std::vector<HudLine> hud;
     LineStyle style = LineStyle::occluded;
+    // NDC y (= HUD units) above which the scene's lines are not drawn: the play HUD's band,
+    // as the 1980 cabinet's periscope view ends under its radar strip. 1: the whole screen.
+    float view_top = 1.0f;
 };
 
 }  // namespace bz::scene
