@@ -1,5 +1,7 @@
 // `beamzone play`: the game in a window. Setup lives here; the frame loop is in play_loop.cpp
 // and what is simulated and drawn in play_sessions.cpp.
+#include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -27,6 +29,29 @@
 namespace bz::app {
 
 namespace {
+
+// The levels the title menu offers: the shipped ones, then the player's own (*.toml in the
+// pref folder's levels/), each list sorted by name.
+std::vector<menu::LevelChoice> find_levels(const std::filesystem::path& shipped,
+                                           const std::filesystem::path& user) {
+    std::vector<menu::LevelChoice> out;
+    for (const auto& [dir, mine] : {std::pair{shipped, false}, std::pair{user, true}}) {
+        std::error_code ec;
+        std::vector<std::filesystem::path> files;
+        for (const auto& e : std::filesystem::directory_iterator(dir, ec)) {
+            if (e.path().extension() == ".toml") files.push_back(e.path());
+        }
+        std::sort(files.begin(), files.end());
+        for (const auto& f : files) {
+            std::string name = f.stem().string();
+            for (char& c : name) {
+                c = c == '_' ? ' ' : static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+            }
+            out.push_back({name, f, mine});
+        }
+    }
+    return out;
+}
 
 bool offscreen_allowed(const PlayOptions& o) {
     const char* env = std::getenv("BEAMZONE_ALLOW_OFFSCREEN");
@@ -132,7 +157,7 @@ struct Play {
                      " is not available; using " + std::string(platform::vsync_name(vsync)));
         }
 
-        auto choose = [look](const level::Level* current) { return choose_look(look, current); };
+        auto choose = [&look](const level::Level* current) { return choose_look(look, current); };
         auto make_renderer = [](const render::RenderSettings& r, int w, int h) {
             return std::make_unique<render::Renderer>(r, w, h, gl::TimingMethod::off);
         };
@@ -152,6 +177,7 @@ struct Play {
         so.high_scores = paths.high_scores;
         so.pause_on_focus_loss = settings.pause_on_focus_loss;
         so.font = &font;
+        so.hints = screen_hints(settings.keys);
         std::unique_ptr<PlaySession> session =
             options.edit ? make_edit_session(so, log) : make_game_session(so, log);
 
@@ -162,10 +188,23 @@ struct Play {
         config.screenshot_at = options.screenshot_at;
         config.edit = options.edit;
         config.screenshots = paths.screenshots;
-        LoopParts parts{context,  choose,        make_renderer, audio, input,
-                        gamepads, watcher.get(), overlay,       log,   settings};
+        for (const auto& [frame, key] : options.presses) config.presses.push_back({frame, key});
+        LoopParts parts{context, choose,  make_renderer, audio,    input, gamepads, watcher.get(),
+                        overlay, log,     settings,      font,     {},    {},       nullptr,
+                        {},      {}};
         // From here on a signal ends the loop, and what must be saved is saved below.
         stop_gracefully_on_signal();
+        parts.presets = render::preset_names();
+        parts.levels = find_levels(level::default_level_path().parent_path(), paths.levels);
+        parts.look_sources = &look;
+        parts.settings_errors = loaded.errors;
+        // The menus save at once; never over a file that did not load cleanly.
+        parts.save_settings = [this, &loaded](const platform::Settings& s) -> std::string {
+            if (!loaded.may_save()) {
+                return "NOT SAVED: SETTINGS.TOML HAS ERRORS TO FIX FIRST (SEE THE LOG)";
+            }
+            return save(s) ? std::string() : "NOT SAVED: SEE THE LOG";
+        };
         const LoopResult result = run_play_loop(*session, parts, config);
         const bool saved = session->save_on_exit();  // before we report
         session.reset();
@@ -189,11 +228,13 @@ struct Play {
         return result.gl_errors > 0 || result.session_failed || !saved ? 1 : 0;
     }
 
-    void save(const platform::Settings& s) {
+    bool save(const platform::Settings& s) {
         try {
             platform::save_settings(paths.settings, s);
+            return true;
         } catch (const UserError& e) {
             log.warn(std::string("cannot save settings: ") + e.what());
+            return false;
         }
     }
 };

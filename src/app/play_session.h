@@ -4,6 +4,8 @@
 #include <vector>
 
 #include "core/interrupt.h"
+#include "app/menu/play_menus.h"
+#include "game/highscores.h"
 #include "level/level.h"
 #include "platform/free_fly.h"
 #include "platform/input.h"
@@ -42,6 +44,15 @@ class PlaySession {
     virtual void level_changed(const level::Level& level) = 0;
     // Game actions the player pressed (pause, start, back); window-level ones stay in the loop.
     virtual void on_action(platform::Action) {}
+    // Which of the app's menus the session's screen calls for (title, pause, or none).
+    virtual menu::Context menu_context() const { return menu::Context::none; }
+    // What the menus chose; outside the simulation (a recording starts with the game).
+    enum class MenuCommand : std::uint8_t { start_game, resume, quit_to_title };
+    virtual void menu_command(MenuCommand) {}
+    // The player rebound keys: on-screen hints should name the new ones.
+    virtual void keys_changed(const platform::Bindings&) {}
+    // The table the High scores page shows; null when the session keeps none.
+    virtual const game::HighScoreTable* high_scores() const { return nullptr; }
     // The window lost focus (the game pauses itself if the settings say so).
     virtual void on_focus_lost() {}
     // True when the session has nothing more to show (a replay reached its end), or the

@@ -11,27 +11,22 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "core/regular_file.h"
 
 namespace bz {
 namespace fs = std::filesystem;
 
 std::string read_file(const fs::path& path, std::size_t max_bytes) {
-    std::error_code ec;
-    const auto status = fs::status(path, ec);
-    if (ec || !fs::exists(status)) throw UserError(path.string() + ": file not found");
-    if (!fs::is_regular_file(status)) throw UserError(path.string() + ": not a regular file");
-    const auto size = fs::file_size(path, ec);
-    if (ec) throw UserError(path.string() + ": cannot read size: " + ec.message());
+    // Opened without blocking and checked on the descriptor: a FIFO or device swapped in
+    // after a check by name can neither hang nor feed us endless bytes.
+    RegularFileResult opened = open_regular_file(path);
+    if (!opened.why.empty()) throw UserError(path.string() + ": " + opened.why);
+    const std::uintmax_t size = opened.file.size();
     if (size > max_bytes) {
         throw UserError(path.string() + ": file is " + std::to_string(size) +
                         " bytes, over the limit of " + std::to_string(max_bytes));
     }
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw UserError(path.string() + ": cannot open: " + std::strerror(errno));
-    std::string data(size, '\0');
-    in.read(data.data(), static_cast<std::streamsize>(size));
-    data.resize(static_cast<std::size_t>(in.gcount()));
-    return data;
+    return read_head(opened.file, static_cast<std::size_t>(size));
 }
 
 namespace {

@@ -177,7 +177,8 @@ class Reader {
     void unknown_keys(const toml::table& t) {
         static constexpr std::string_view kKnown[] = {"keys",   "volume",     "mute",
                                                       "vsync",  "fullscreen", "pause_on_focus_loss",
-                                                      "preset", "style",      "gamepad"};
+                                                      "preset", "style",      "gamepad",
+                                                      "show_fps"};
         for (const auto& [name, value] : t) {
             if (std::find(std::begin(kKnown), std::end(kKnown), name.str()) == std::end(kKnown)) {
                 error_at(name.source().begin, "unknown setting '" + printable(name.str()) + "'");
@@ -254,6 +255,7 @@ SettingsLoad parse_settings(std::string_view text, const std::string& source,
     r.boolean(t, "mute", s.mute);
     r.boolean(t, "fullscreen", s.fullscreen);
     r.boolean(t, "pause_on_focus_loss", s.pause_on_focus_loss);
+    r.boolean(t, "show_fps", s.show_fps);
 
     const std::string vsyncs[] = {"off", "on", "adaptive"};
     if (const int i = r.choice(t, "vsync", vsyncs, vsync_name(s.vsync)); i >= 0) {
@@ -311,6 +313,8 @@ std::string format_settings(const Settings& s) {
       << "      # \"occluded\" or \"arcade\" (no hidden-line removal)\n"
       << "gamepad = " << quoted(s.gamepad == GamepadMode::tank ? "tank" : "drive")
       << "          # \"tank\" (two sticks, one per tread) or \"drive\" (left stick)\n"
+      << "show_fps = " << (s.show_fps ? "true" : "false")
+      << "         # frame rate and frame-time readout\n"
       << "\n# Keys per action, as SDL scancode names (\"Q\", \"Space\", \"Left Ctrl\", "
          "\"Alt+Return\").\n"
       << "[keys]\n";
