@@ -129,6 +129,7 @@ class GameSession final : public PlaySession {
     }
 
     const game::HighScoreTable* high_scores() const override { return &game_->highscores(); }
+    std::string high_scores_level() const override { return game_->highscores_title(); }
     void keys_changed(const platform::Bindings& keys) override {
         game_->set_hints(screen_hints(keys));
     }

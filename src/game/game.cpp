@@ -52,6 +52,12 @@ Game::Game(level::Level level, GameOptions options, const scene::VectorFont* fon
 
 Game::~Game() = default;
 
+std::string Game::highscores_title() const {
+    std::string title = level_key(level_.name, 0).name;
+    for (char& c : title) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    return title;
+}
+
 std::string Game::level_name() const {
     if (!options_.level_name.empty()) return options_.level_name;
     if (level_.file.empty() || level_.file == kBuiltinLevelName) return kBuiltinLevelName;
@@ -322,10 +328,9 @@ scene::FrameList Game::frame(double alpha, double aspect) const {
     }
     // Tables are kept per level: say whose this is.
     if (screen_ == Screen::high_scores ||
-        (screen_ == Screen::attract && (ticks_ / kAttractCycleTicks) % 2 == 1)) {
-        std::string title = level_key(level_.name, 0).name;
-        for (char& c : title) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-        hud::text(f.hud, font_, title, {0.0f, 0.54f}, 0.045f, hud::kGreen,
+        (screen_ == Screen::attract && !options_.app_menus &&
+         (ticks_ / kAttractCycleTicks) % 2 == 1)) {
+        hud::text(f.hud, font_, highscores_title(), {0.0f, 0.54f}, 0.045f, hud::kGreen,
                   scene::TextAlign::center);
     }
     if (playback_ && live) {

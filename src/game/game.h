@@ -93,6 +93,8 @@ class Game {
     const HighScoreTable& highscores() const { return highscores_; }
     // Shows another level's table from now on (high scores are kept per level).
     void set_highscores(HighScoreTable table) { highscores_ = std::move(table); }
+    // The level's name as the table screens show it (upper case, printable, bounded).
+    std::string highscores_title() const;
     // True once after the table changed: the caller saves it then.
     bool take_highscores_changed();
 

@@ -263,6 +263,7 @@ Page PlayMenus::build(Screen s) const {
         case Screen::high_scores: {
             p.title = "HIGH SCORES";
             p.columns = true;
+            if (!env_.high_scores_level.empty()) p.rows.push_back(info(env_.high_scores_level, ""));
             if (env_.high_scores) {
                 int rank = 1;
                 for (const game::HighScore& e : env_.high_scores->entries()) {
