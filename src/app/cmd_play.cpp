@@ -118,6 +118,9 @@ struct Play {
         SessionOptions so;
         so.level = lvl;
         so.seed = options.seed;
+        // --difficulty, else the settings file's unless it says "level", else the level's.
+        so.difficulty = options.difficulty.value_or(
+            settings.difficulty == "level" ? std::string() : settings.difficulty);
         so.record = options.record;
         so.replay = options.replay;
         so.high_scores = paths.high_scores;

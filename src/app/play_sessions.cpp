@@ -9,6 +9,7 @@
 #include "game/assets.h"
 #include "game/backdrop.h"
 #include "game/default_level.h"
+#include "game/difficulty.h"
 #include "game/fixed_step.h"
 #include "game/game.h"
 #include "game/highscores.h"
@@ -34,6 +35,7 @@ class GameSession final : public PlaySession {
           pause_on_focus_loss_(o.pause_on_focus_loss),
           log_(log) {
         options_.seed = o.seed.value_or(clock_seed());
+        options_.difficulty = game::parse_difficulty(o.difficulty);
         game::HighScoreLoad scores = game::load_highscores(high_scores_path_);
         if (!scores.warning.empty()) log_.warn(scores.warning);
         options_.highscores = std::move(scores.table);
@@ -45,7 +47,8 @@ class GameSession final : public PlaySession {
             game_->start_replay(game::replay::load(o.replay));
             log_.info("replaying " + o.replay);
         } else {
-            log_.info("game seed " + std::to_string(options_.seed) + " (--seed repeats it)");
+            log_.info("game seed " + std::to_string(options_.seed) + " (--seed repeats it), " +
+                      std::string(game::difficulty_name(game_->difficulty())) + " difficulty");
         }
     }
 

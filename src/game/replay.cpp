@@ -10,6 +10,7 @@
 #include "core/file_io.h"
 #include "core/hash.h"
 #include "game/assets.h"
+#include "game/difficulty.h"
 
 namespace bz::game::replay {
 
@@ -68,6 +69,7 @@ std::string serialise(const Replay& r) {
     out += "level " + r.header.level + "\n";
     out += "level-hash " + hex(r.header.level_hash) + "\n";
     out += "lives " + std::to_string(r.header.lives) + "\n";
+    out += "difficulty " + std::string(difficulty_name(r.header.difficulty)) + "\n";
     out += "hash-interval " + std::to_string(r.header.hash_interval) + "\n";
     out += "ticks " + std::to_string(r.commands.size()) + "\n";
     for (std::size_t i = 0; i < r.commands.size();) {
@@ -139,6 +141,14 @@ Replay parse(std::string_view text, const std::string& name) {
             want(2);
             r.header.lives = err.number<int>(f[1], "lives");
             if (r.header.lives < 1 || r.header.lives > 9) err.fail("lives must be 1..9");
+        } else if (key == "difficulty") {
+            want(2);
+            const auto d = parse_difficulty(f[1]);
+            if (!d) {
+                err.fail("unknown difficulty '" + std::string(f[1]) + "' (one of " +
+                         std::string(kDifficultyNames) + ")");
+            }
+            r.header.difficulty = *d;
         } else if (key == "hash-interval") {
             want(2);
             r.header.hash_interval = err.number<int>(f[1], "hash interval");
@@ -246,6 +256,18 @@ std::uint64_t level_hash(const level::Level& lv) {
     h.value(e.spawn_min_distance);
     h.value(e.spawn_max_distance);
     h.value(e.aggression);
+    h.value(e.saucer_score);
+    h.value(e.spawn_rear_chance);
+    h.value(e.fire_interval);
+    h.value(e.aim_error_deg);
+    h.value(e.hold_fire);
+    h.value(e.slow_tank_points);
+    h.value(e.super_tank_points);
+    h.value(e.missile_points);
+    h.value(e.saucer_points);
+    h.value(static_cast<std::uint8_t>(e.difficulty));
+    h.value(lv.player_lives);
+    for (const int b : lv.bonus_scores) h.value(b);
     return h.digest();
 }
 
@@ -291,8 +313,8 @@ std::optional<Mismatch> Player::check(const World& world) {
 }
 
 VerifyResult verify(const Replay& replay, const level::Level& level, const Assets& assets) {
-    World world(level, replay.header.seed, assets.factories(), assets.models(),
-                replay.header.lives);
+    World world(level_for(level, replay.header.difficulty), replay.header.seed, assets.factories(),
+                assets.models(), replay.header.lives);
     Player player(replay);
     VerifyResult result;
     while (!player.done()) {

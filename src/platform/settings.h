@@ -24,6 +24,8 @@ struct Settings {
     std::string preset = "balanced";
     std::string style = "occluded";  // "occluded" or "arcade"
     GamepadMode gamepad = GamepadMode::tank;
+    // "easy", "normal" or "arcade"; "level" lets each level choose (its [enemies] difficulty).
+    std::string difficulty = "level";
 };
 
 struct SettingsLoad {
