@@ -57,6 +57,7 @@ struct Play {
         if (loaded.preset_given || !loaded.file_existed) look.settings_preset = settings.preset;
 
         // The level before the window, so a broken level file fails fast and plainly.
+        log.info("data: " + project_root().string() + " (" + project_root_origin() + ")");
         std::unique_ptr<level::LevelWatcher> watcher;
         const std::filesystem::path level_path = options.level.empty()
                                                      ? level::default_level_path()

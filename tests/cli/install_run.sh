@@ -20,7 +20,8 @@ for f in bin/beamzone share/beamzone/shaders/lines.geom share/beamzone/data/font
   share/beamzone/data/models/pylon.obj share/beamzone/data/gamecontrollerdb/gamecontrollerdb.txt \
   share/beamzone/levels/classic.toml share/beamzone/levels/README.md \
   share/applications/org.beamzone.Beamzone.desktop share/metainfo/org.beamzone.Beamzone.metainfo.xml \
-  share/icons/hicolor/scalable/apps/org.beamzone.Beamzone.svg share/man/man6/beamzone.6; do
+  share/icons/hicolor/scalable/apps/org.beamzone.Beamzone.svg \
+  share/icons/hicolor/256x256/apps/org.beamzone.Beamzone.png share/man/man6/beamzone.6; do
   [ -s "$p/$f" ] || fail "the install lacks $f"
 done
 [ -x "$p/bin/beamzone" ] || fail "bin/beamzone is not executable"
@@ -54,6 +55,7 @@ run play --headless-test --frames 5 || fail "play exited $?"
 grep -q "^play: 5 frames, 5 ticks, 0 GL errors$" "$work/out" || fail "play summary: $(cat "$work/out")"
 grep -q "level: $p/share/beamzone/levels/classic.toml" "$work/err" ||
   fail "play did not take the installed default level"
+grep -q "data: $p/share/beamzone (installed)" "$work/err" || fail "play did not log its installed data folder"
 ok "play --headless-test --frames 5"
 
 # Without its data the installed binary stops with a message naming where the data belongs.
