@@ -14,9 +14,14 @@
 #include "app/play_loop.h"
 #include "app/play_options.h"
 #include "app/play_sessions.h"
+#include "app/replay_level.h"
 #include "core/error.h"
+#include "core/interrupt.h"
 #include "core/log.h"
+#include "core/output_path.h"
 #include "core/paths.h"
+#include "game/default_level.h"
+#include "game/replay.h"
 #include "level/loader.h"
 #include "platform/pref_paths.h"
 #include "render/settings.h"
@@ -59,6 +64,14 @@ struct Play {
     Log& log;
 
     int run() {
+        if (!options.record.empty()) {
+            // Checked before anything starts, so a game is never played into a recording that
+            // cannot be saved or that would replace the level, a setting or a high score.
+            const std::filesystem::path inputs[] = {
+                options.level,   level::default_level_path(), paths.settings,
+                paths.high_scores, paths.log,                 paths.gamepad_db};
+            check_output_file("--record", options.record, kReplayOutput, inputs);
+        }
         log.info("settings: " + paths.settings.string());
         log.info("high scores: " + paths.high_scores.string());
         log.info("log: " + paths.log.string());
@@ -81,13 +94,27 @@ struct Play {
         look.settings_style_given = loaded.style_given || !loaded.file_existed;
         if (loaded.preset_given || !loaded.file_existed) look.settings_preset = settings.preset;
 
+        // A replay names its level: without a LEVEL argument, play it on that one (the
+        // built-in level included), as `replay --verify` does.
+        std::string level_arg = options.level;
+        bool replay_on_builtin = false;
+        if (level_arg.empty() && !options.replay.empty()) {
+            const std::string recorded = game::replay::load(options.replay).header.level;
+            if (recorded == game::kBuiltinLevelName) {
+                replay_on_builtin = true;
+            } else {
+                level_arg = replay_level_path(recorded, options.replay).string();
+            }
+        }
+
         // The level before the window, so a broken level file fails fast and plainly.
         std::unique_ptr<level::LevelWatcher> watcher;
-        const std::filesystem::path level_path = options.level.empty()
+        const std::filesystem::path level_path = level_arg.empty()
                                                      ? level::default_level_path()
-                                                     : std::filesystem::path(options.level);
+                                                     : std::filesystem::path(level_arg);
         std::error_code ec;
-        if (!options.level.empty() || std::filesystem::exists(level_path, ec)) {
+        if (!replay_on_builtin &&
+            (!level_arg.empty() || std::filesystem::exists(level_path, ec))) {
             watcher = std::make_unique<level::LevelWatcher>(level_path);
             if (!watcher->current()) {
                 for (const auto& line : format_diagnostics(watcher->errors())) {
@@ -99,6 +126,8 @@ struct Play {
                 return 1;
             }
             log.info("level: " + level_path.string() + " (edits reload while playing)");
+        } else if (replay_on_builtin) {
+            log.info("the replay was recorded on the built-in level; playing it there");
         } else {
             log.info("no " + level_path.string() + "; playing the built-in level");
         }
@@ -152,6 +181,8 @@ struct Play {
         std::unique_ptr<PlaySession> session =
             options.edit ? make_edit_session(so, log) : make_game_session(so, log);
 
+        for (const std::string& notice : session->take_notices()) overlay.notify(notice, 10.0);
+
         LoopConfig config;
         config.frames = options.frames;
         config.screenshot_at = options.screenshot_at;
@@ -163,6 +194,8 @@ struct Play {
         LoopParts parts{context, choose,  make_renderer, audio,    input, gamepads, watcher.get(),
                         overlay, log,     settings,      font,     {},    {},       nullptr,
                         {},      {}};
+        // From here on a signal ends the loop, and what must be saved is saved below.
+        stop_gracefully_on_signal();
         parts.presets = render::preset_names();
         parts.levels = find_levels(level::default_level_path().parent_path(), paths.levels);
         parts.look_sources = &look;
@@ -175,7 +208,8 @@ struct Play {
             return save(s) ? std::string() : "NOT SAVED: SEE THE LOG";
         };
         const LoopResult result = run_play_loop(*session, parts, config);
-        session.reset();  // flushes a recording before we report
+        const bool saved = session->save_on_exit();  // before we report
+        session.reset();
 
         if (result.settings_changed) {
             if (loaded.may_save()) {
@@ -189,7 +223,11 @@ struct Play {
             std::printf("play: %d frames, %d ticks, %d GL errors\n", result.frames, result.ticks,
                         result.gl_errors);
         }
-        return result.gl_errors > 0 || result.session_failed ? 1 : 0;
+        if (interrupt_requested()) {
+            // Asked to quit, the game quit cleanly, as when its window is closed.
+            log.info("stopped by a signal; what needed saving was saved");
+        }
+        return result.gl_errors > 0 || result.session_failed || !saved ? 1 : 0;
     }
 
     bool save(const platform::Settings& s) {

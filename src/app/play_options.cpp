@@ -4,6 +4,7 @@
 #include <charconv>
 
 #include "app/cli_args.h"
+#include "core/printable.h"
 #include "platform/settings.h"
 #include "render/settings.h"
 
@@ -16,7 +17,7 @@ std::uint64_t parse_seed(std::string_view option, std::string_view text) {
     const char* end = text.data() + text.size();
     const auto r = std::from_chars(text.data(), end, v);
     if (text.empty() || r.ec != std::errc{} || r.ptr != end) {
-        throw UsageError(std::string(option) + ": '" + std::string(text) +
+        throw UsageError(std::string(option) + ": '" + printable(text) +
                          "' is not a whole number from 0 to 18446744073709551615");
     }
     return v;
@@ -68,13 +69,13 @@ PlayOptions parse_play_options(int argc, char* const* argv) {
             if (std::find(names.begin(), names.end(), p) == names.end()) {
                 std::string list;
                 for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
-                throw UsageError("--preset: expected one of " + list + ", not '" + p + "'");
+                throw UsageError("--preset: expected one of " + list + ", not '" + printable(p) + "'");
             }
             o.preset = p;
         } else if (a == "--style") {
             const std::string s(cur.value(a));
             if (s != "occluded" && s != "arcade") {
-                throw UsageError("--style: expected occluded or arcade, not '" + s + "'");
+                throw UsageError("--style: expected occluded or arcade, not '" + printable(s) + "'");
             }
             o.style = s;
         } else if (a == "--windowed") {
@@ -85,7 +86,7 @@ PlayOptions parse_play_options(int argc, char* const* argv) {
             const std::string_view v = cur.value(a);
             platform::Vsync mode{};
             if (!platform::parse_vsync(v, &mode)) {
-                throw UsageError("--vsync: expected off, on or adaptive, not '" + std::string(v) +
+                throw UsageError("--vsync: expected off, on or adaptive, not '" + printable(v) +
                                  "'");
             }
             o.vsync = mode;
@@ -107,7 +108,7 @@ PlayOptions parse_play_options(int argc, char* const* argv) {
         } else if (a == "--headless-test") {
             o.headless_test = true;
         } else if (!a.empty() && a[0] == '-') {
-            throw UsageError("unknown option " + std::string(a) + " (see beamzone play --help)");
+            throw UsageError("unknown option " + printable(a) + " (see beamzone play --help)");
         } else if (o.level.empty()) {
             o.level = a;
         } else {

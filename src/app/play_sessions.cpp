@@ -13,6 +13,7 @@
 #include "game/fixed_step.h"
 #include "game/game.h"
 #include "game/highscores.h"
+#include "game/level_rules.h"
 #include "game/hud_layout.h"
 #include "game/replay.h"
 #include "platform/free_fly.h"
@@ -37,8 +38,15 @@ class GameSession final : public PlaySession {
           log_(log) {
         options_.seed = o.seed.value_or(clock_seed());
         game::HighScoreLoad scores = game::load_highscores(high_scores_path_);
-        if (!scores.warning.empty()) log_.warn(scores.warning);
-        options_.highscores = std::move(scores.table);
+        for (const std::string& e : scores.errors) log_.warn(e);
+        if (!scores.message.empty()) {
+            log_.warn(scores.message);
+            notices_.push_back(scores.message);
+        }
+        scores_may_save_ = scores.may_save;
+        book_ = std::move(scores.book);
+        key_ = key_of(lvl);
+        options_.highscores = book_.table(key_);
         options_.record = !record_path_.empty();
         options_.app_menus = o.app_menus;
         options_.hints = o.hints;
@@ -53,19 +61,25 @@ class GameSession final : public PlaySession {
         }
     }
 
-    ~GameSession() override {
-        if (record_path_.empty()) return;
+    // A run cut short by an exception still keeps its recording.
+    ~GameSession() override { save_on_exit(); }
+
+    bool save_on_exit() override {
+        if (record_path_.empty()) return !save_failed_;
+        const std::string path = std::exchange(record_path_, std::string());
         try {
             if (const auto rec = game_->recording()) {
-                game::replay::save(record_path_, *rec);
+                game::replay::save(path, *rec);
                 log_.info("recorded " + std::to_string(rec->commands.size()) + " ticks to " +
-                          record_path_);
+                          path);
             } else {
-                log_.warn("nothing to record in " + record_path_ + ": no game was started");
+                log_.warn("nothing to record in " + path + ": no game was started");
             }
         } catch (const std::exception& e) {
             log_.error(std::string("cannot save the recording: ") + e.what());
+            save_failed_ = true;
         }
+        return !save_failed_;
     }
 
     void tick(const platform::InputState& in) override {
@@ -161,6 +175,11 @@ class GameSession final : public PlaySession {
         // The game goes on in the edited level: score, lives, screen and the tank stay.
         const game::ReloadReport r = game_->reload_level(lvl);
         if (r.ended_recording) end_recording(*r.ended_recording);
+        // Edited rules make another table (high scores are kept per level and rules).
+        if (const game::LevelKey key = key_of(lvl); key != key_) {
+            key_ = key;
+            game_->set_highscores(book_.table(key_));
+        }
         if (const game::World* w = game_->world()) {
             const glm::dvec3& at = w->state().player.body.transform.position;
             char where[64];
@@ -174,7 +193,11 @@ class GameSession final : public PlaySession {
         }
     }
 
-    bool finished() const override { return game_->replay_finished(); }
+    std::vector<std::string> take_notices() override { return std::exchange(notices_, {}); }
+
+    bool finished() const override {
+        return game_->replay_finished() || PlaySession::finished();
+    }
     bool failed() const override { return game_->replay_mismatch().has_value(); }
 
   private:
@@ -190,12 +213,23 @@ class GameSession final : public PlaySession {
                       "; the rest of this run is not recorded");
         } catch (const std::exception& e) {
             log_.error(std::string("cannot save the recording: ") + e.what());
+            save_failed_ = true;
         }
     }
 
+    static game::LevelKey key_of(const level::Level& lvl) {
+        return game::level_key(lvl.name, game::level_rules_hash(lvl));
+    }
+
     void save_scores() {
+        book_.set(key_, game_->highscores());
+        if (!scores_may_save_) {
+            log_.warn("not saving high scores: " + high_scores_path_.string() +
+                      " is damaged and could not be moved aside");
+            return;
+        }
         try {
-            game::save_highscores(high_scores_path_, game_->highscores());
+            game::save_highscores(high_scores_path_, book_);
             log_.info("high scores saved: " + high_scores_path_.string());
         } catch (const UserError& e) {
             log_.warn(std::string("cannot save high scores: ") + e.what());
@@ -226,6 +260,11 @@ class GameSession final : public PlaySession {
     float engine_ = 0.0f;
     bool pause_ = false, start_ = false, back_ = false;
     bool replay_reported_ = false;
+    bool save_failed_ = false;
+    game::HighScoreBook book_;  // every level's table; the game shows key_'s
+    game::LevelKey key_;
+    bool scores_may_save_ = true;
+    std::vector<std::string> notices_;
 };
 
 // --edit: the level's objects and horizon from a free-flying camera; nothing moves but the

@@ -1,6 +1,7 @@
 #include "game/game.h"
 
 #include <algorithm>
+#include <cctype>
 
 #include "core/error.h"
 #include "game/autopilot.h"
@@ -275,6 +276,8 @@ scene::FrameList Game::frame(double alpha, double aspect) const {
     // The play HUD's band is the radar strip; the scene (sky included) stays under it.
     if (live) f.view_top = hud::kBandBottom;
     const double seconds = (static_cast<double>(ticks_) + a) / tuning::kTicksPerSecond;
+    f.time_s = seconds;  // phosphor decay and frame holding follow game time
+    f.seed = static_cast<std::uint32_t>(ticks_);
     backdrop::append_items(f.items, level_.backdrop, assets_->horizon(), f.camera.eye, seconds);
     if (screen_ == Screen::enter_initials || screen_ == Screen::high_scores) {
         f.items.clear();  // text only: the table must be readable
@@ -316,6 +319,14 @@ scene::FrameList Game::frame(double alpha, double aspect) const {
         case Screen::high_scores:
             screens::high_scores(f.hud, font_, highscores_, new_rank_, ticks_);
             break;
+    }
+    // Tables are kept per level: say whose this is.
+    if (screen_ == Screen::high_scores ||
+        (screen_ == Screen::attract && (ticks_ / kAttractCycleTicks) % 2 == 1)) {
+        std::string title = level_key(level_.name, 0).name;
+        for (char& c : title) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+        hud::text(f.hud, font_, title, {0.0f, 0.54f}, 0.045f, hud::kGreen,
+                  scene::TextAlign::center);
     }
     if (playback_ && live) {
         std::string note;

@@ -6,7 +6,7 @@
 //   each frame:  for (plan.ticks) game.tick(command_from_input);
 //                renderer.render(game.frame(plan.alpha, aspect), game.meshes());
 //                synth.play(game.sounds());   // the last tick's
-//                if (game.take_highscores_changed()) save_highscores(path, game.highscores());
+//                if (game.take_highscores_changed()) save the table game.highscores();
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -91,6 +91,8 @@ class Game {
     const level::Level& level() const { return level_; }
 
     const HighScoreTable& highscores() const { return highscores_; }
+    // Shows another level's table from now on (high scores are kept per level).
+    void set_highscores(HighScoreTable table) { highscores_ = std::move(table); }
     // True once after the table changed: the caller saves it then.
     bool take_highscores_changed();
 

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cctype>
 
+#include "core/printable.h"
+
 namespace bz::platform {
 
 namespace {
@@ -89,7 +91,7 @@ std::optional<KeyBinding> parse_key(std::string_view text, std::string* error) {
         name.empty() ? SDL_SCANCODE_UNKNOWN : SDL_GetScancodeFromName(name.c_str());
     if (sc == SDL_SCANCODE_UNKNOWN) {
         if (error) {
-            *error = "unknown key '" + std::string(text) +
+            *error = "unknown key '" + printable(text) +
                      "' (use SDL scancode names such as \"Q\", \"Space\", \"Left Ctrl\", "
                      "\"Alt+Return\")";
         }
