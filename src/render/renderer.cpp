@@ -138,7 +138,9 @@ void Renderer::render(const scene::FrameList& frame, const scene::MeshLibrary& m
     // The rows below FrameList::view_top (NDC y), rounded so the band's edge is never lit.
     const float top = std::clamp(frame.view_top, -1.0f, 1.0f);
     const int view_rows =
-        top >= 1.0f ? 0 : std::max(1, static_cast<int>((top + 1.0f) * 0.5f * static_cast<float>(m.height)));
+        top >= 1.0f
+            ? 0
+            : std::max(1, static_cast<int>((top + 1.0f) * 0.5f * static_cast<float>(m.height)));
     const PassContext ctx{m.programs, m.targets,  m.gpu_meshes, meshes,      batches,
                           cam,        m.settings, occlusion,    m.empty_vao, m.instances,
                           frame.seed, view_rows};
@@ -209,7 +211,9 @@ std::vector<std::uint8_t> Renderer::render_mask(const scene::FrameList& frame,
     // The rows below FrameList::view_top (NDC y), rounded so the band's edge is never lit.
     const float top = std::clamp(frame.view_top, -1.0f, 1.0f);
     const int view_rows =
-        top >= 1.0f ? 0 : std::max(1, static_cast<int>((top + 1.0f) * 0.5f * m.height));
+        top >= 1.0f
+            ? 0
+            : std::max(1, static_cast<int>((top + 1.0f) * 0.5f * static_cast<float>(m.height)));
     const PassContext ctx{m.programs, m.targets,  m.gpu_meshes, meshes,      batches,
                           cam,        m.settings, occlusion,    m.empty_vao, m.instances,
                           frame.seed, view_rows};

@@ -262,7 +262,7 @@ Page PlayMenus::build(Screen s) const {
             break;
         }
         case Screen::high_scores: {
-            p.title = "HIGH SCORES";
+            p.title = "HIGH SCORES  " + level_label(env_);  // each level keeps its own
             p.columns = true;
             if (env_.high_scores) {
                 int rank = 1;
