@@ -192,7 +192,9 @@ struct Play {
         config.screenshot_at = options.screenshot_at;
         config.edit = options.edit;
         config.screenshots = paths.screenshots;
-        for (const auto& [frame, key] : options.presses) config.presses.push_back({frame, key});
+        for (const ScriptedPress& p : options.presses) {
+            config.presses.push_back({p.frame, p.release_frame, p.key});
+        }
         LoopParts parts{context, choose,  make_renderer, audio,    input, gamepads, watcher.get(),
                         overlay, log,     settings,      font,     {},    {},       nullptr,
                         {},      {}};

@@ -74,6 +74,11 @@ class PlayMenus {
 
     Env& env() { return env_; }
 
+    // How the game shows under the menu: its scene dimmed by `scene_intensity`, and its HUD
+    // kept only under the first page of the pause menu (the score stays in view there).
+    float scene_intensity() const;
+    bool keeps_game_hud() const;
+
     enum class Screen : std::uint8_t { title, levels, options, keys, controls, high_scores, paused };
     Screen screen() const { return stack_.empty() ? Screen::title : stack_.back().screen; }
     // Opens a page directly, as if chosen from the context's first page (screenshots, tests).
