@@ -7,7 +7,6 @@
 #include "app/commands.h"
 #include "app/parse_command.h"
 #include "app/headless_gl.h"
-#include "app/resource_limits.h"
 #include "core/error.h"
 #include "core/image_io.h"
 #include "app/model_source.h"
@@ -123,7 +122,6 @@ int cmd_render(Args args) {
     const std::optional<RenderOptions> parsed = parse_command("render", args, kUsage, parse_checked, &exit_code);
     if (!parsed) return exit_code;
     const RenderOptions& o = *parsed;
-    limit_memory_for_untrusted_input();
     geo::MeshReport report;
     geo::AdjacencyMesh mesh = geo::build_line_mesh(load_model_source(o.input), &report);
     if (mesh.triangle_count() == 0) throw UserError(o.input + ": no usable triangles");

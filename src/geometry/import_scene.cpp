@@ -201,6 +201,8 @@ TriMesh import_in_this_process(const fs::path& path, const ImportOptions& option
         StderrCapture loader_output;
         try {
             scene = importer.ReadFile(resolved.string(), flags);
+        } catch (const std::bad_alloc&) {
+            throw;  // the caller says which memory cap was hit
         } catch (const std::exception& e) {
             // Assimp catches its own import errors; this is for the unexpected.
             fail(path, std::string("import failed: ") + e.what());
@@ -211,6 +213,7 @@ TriMesh import_in_this_process(const fs::path& path, const ImportOptions& option
         if (!confined.refusal().empty()) fail(path, confined.refusal());
         if (!scene) {
             std::string why = importer.GetErrorString();
+            if (why.find("bad_alloc") != std::string::npos) throw std::bad_alloc();
             if (!printed.empty()) why += " (loader printed: " + printed.substr(0, 200) + ")";
             fail(path, why);
         }
