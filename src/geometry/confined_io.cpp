@@ -62,46 +62,56 @@ std::string shown(const char* text) {
 
 }  // namespace
 
-ConfinedIOSystem::ConfinedIOSystem(std::vector<fs::path> allowed_folders,
+ConfinedIOSystem::ConfinedIOSystem(std::vector<fs::path> allowed_folders, fs::path base_folder,
                                    std::uintmax_t max_file_bytes)
-    : allowed_(std::move(allowed_folders)), max_file_bytes_(max_file_bytes) {}
+    : allowed_(std::move(allowed_folders)),
+      base_(std::move(base_folder)),
+      max_file_bytes_(max_file_bytes) {}
 
-std::string ConfinedIOSystem::check(const char* file) const {
-    std::string why;
+ConfinedIOSystem::Checked ConfinedIOSystem::check(const char* file) const {
+    Checked out;
     std::error_code ec;
     const fs::path written = file;
-    const fs::path resolved = fs::weakly_canonical(fs::absolute(written, ec), ec);
+    out.resolved = fs::weakly_canonical(written.is_absolute() ? written : base_ / written, ec);
     if (ec) {
-        why = "cannot be resolved: " + ec.message();
-    } else {
-        bool ok = false;
-        for (const fs::path& folder : allowed_) ok = ok || inside(resolved, folder);
-        if (!ok) {
-            why = "leads outside the folders a model may read from (";
-            for (std::size_t i = 0; i < allowed_.size(); ++i) {
-                why += (i ? ", " : "") + allowed_[i].string();
-            }
-            why += ")";
-        }
+        out.why = "cannot be resolved: " + ec.message();
+        return out;
     }
-    if (!why.empty() && refusal_.empty()) refusal_ = "reference '" + shown(file) + "': " + why;
-    return why;
+    for (const fs::path& folder : allowed_) {
+        if (inside(out.resolved, folder)) return out;
+    }
+    out.why = "leads outside the folders a model may read from (";
+    for (std::size_t i = 0; i < allowed_.size(); ++i) {
+        out.why += (i ? ", " : "") + allowed_[i].string();
+    }
+    out.why += ")";
+    return out;
+}
+
+void ConfinedIOSystem::refuse(const char* file, const std::string& why) const {
+    if (refusal_.empty()) refusal_ = "reference '" + shown(file) + "': " + why;
 }
 
 bool ConfinedIOSystem::Exists(const char* file) const {
-    if (!file || !check(file).empty()) return false;
+    if (!file) return false;
+    const Checked c = check(file);
+    if (!c.why.empty()) return false;
     std::error_code ec;
-    return fs::exists(fs::path(file), ec);
+    return fs::exists(c.resolved, ec);
 }
 
 Assimp::IOStream* ConfinedIOSystem::Open(const char* file, const char* mode) {
     if (!file) return nullptr;
     if (mode && (std::string_view(mode).find_first_of("wa+") != std::string_view::npos)) {
-        if (refusal_.empty()) refusal_ = "reference '" + shown(file) + "': opened for writing";
+        refuse(file, "opened for writing");
         return nullptr;
     }
-    if (!check(file).empty()) return nullptr;
-    RegularFileResult opened = open_regular_file(file);
+    const Checked c = check(file);
+    if (!c.why.empty()) {
+        refuse(file, c.why);
+        return nullptr;
+    }
+    RegularFileResult opened = open_regular_file(c.resolved);
     std::string why = opened.why;
     if (why.empty() && opened.file.size() > max_file_bytes_) {
         why = "is " + std::to_string(opened.file.size()) + " bytes, over the limit of " +
@@ -109,9 +119,7 @@ Assimp::IOStream* ConfinedIOSystem::Open(const char* file, const char* mode) {
     }
     if (!why.empty()) {
         // A missing file is the loader's business (it may be optional, like a default .mtl).
-        if (why != "file not found" && refusal_.empty()) {
-            refusal_ = "reference '" + shown(file) + "': " + why;
-        }
+        if (why != "file not found") refuse(file, why);
         return nullptr;
     }
     const std::uintmax_t size = opened.file.size();

@@ -190,7 +190,8 @@ TriMesh import_in_this_process(const fs::path& path, const ImportOptions& option
     check_before_import(path, file, options);
 
     Assimp::Importer importer;
-    auto io = std::make_unique<ConfinedIOSystem>(folders, options.limits.max_file_bytes);
+    auto io = std::make_unique<ConfinedIOSystem>(folders, resolved.parent_path(),
+                                                 options.limits.max_file_bytes);
     const ConfinedIOSystem& confined = *io;
     importer.SetIOHandler(io.release());  // the importer owns and deletes it
     // No Assimp::DefaultLogger is ever created, so Assimp logs to its null logger: silent.

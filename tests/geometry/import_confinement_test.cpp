@@ -108,5 +108,14 @@ TEST(Confinement, DefaultIsTheModelsOwnFolder) {
     expect_refusal(import_error(p, quick()), p, "leads outside");
 }
 
+TEST(Confinement, BareNamesAreTakenRelativeToTheModelAndProbesDoNotFail) {
+    // LWS names its objects bare and probes "../NAME" first; Ogre names its .material file
+    // bare. Bare names resolve in the model's folder (not the working folder), and a probe
+    // outside the folders only answers "no".
+    const std::filesystem::path models = "/usr/share/assimp/models";
+    EXPECT_GT(import_model(models / "LWS/move_x.lws", quick()).triangle_count(), 0u);
+    EXPECT_GT(import_model(models / "Ogre/TheThing/Mesh.mesh.xml", quick()).triangle_count(), 0u);
+}
+
 }  // namespace
 }  // namespace bz::geo
