@@ -5,6 +5,7 @@
 #include <signal.h>
 #include <sys/prctl.h>
 #include <sys/resource.h>
+#include <sys/syscall.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -120,7 +121,6 @@ void cap_child_memory(std::uint64_t bytes) {
     } catch (...) {
         send_text(out, Frame::error, path.string() + ": error: import failed");
     }
-    ::close(out);
     _exit(0);  // no atexit handlers, no stdio flush, no destructors of the parent's objects
 }
 
@@ -241,6 +241,15 @@ class Child {
     }
     // Waits until the deadline at most; nullopt when the child is still running then.
     std::optional<int> wait_until(Clock::time_point deadline) {
+        // A pidfd becomes readable when the child exits: no polling interval to wait out.
+        const int pidfd = static_cast<int>(::syscall(SYS_pidfd_open, pid_, 0));
+        if (pidfd >= 0) {
+            const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
+                deadline - Clock::now());
+            pollfd p{pidfd, POLLIN, 0};
+            ::poll(&p, 1, static_cast<int>(std::max<long long>(left.count(), 0)));
+            ::close(pidfd);
+        }
         for (;;) {
             int status = 0;
             const pid_t r = ::waitpid(pid_, &status, WNOHANG);
