@@ -111,7 +111,7 @@ int record_demo(const Options& o) {
         if (!ok) return 1;
         name = o.level;
     }
-    const game::Assets assets(lv.backdrop);
+    const game::Assets assets(lv);
     // Nine tanks so the demo keeps playing for long recordings.
     constexpr int kLives = 9;
     const level::Difficulty difficulty = o.difficulty.value_or(lv.enemies.difficulty);
@@ -186,7 +186,7 @@ int run(const Options& o) {
     }
 
     const auto t0 = std::chrono::steady_clock::now();
-    const game::Assets assets(lv.backdrop);
+    const game::Assets assets(lv);
     const game::replay::VerifyResult v = game::replay::verify(r, lv, assets);
     const double ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();

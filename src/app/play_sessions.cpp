@@ -281,7 +281,7 @@ class EditSession final : public PlaySession {
     EditSession(level::Level lvl, const scene::VectorFont* font)
         : font_(font),
           level_(std::move(lvl)),
-          assets_(std::make_unique<game::Assets>(level_.backdrop)),
+          assets_(std::make_unique<game::Assets>(level_)),
           camera_(level_.player_start + glm::dvec3(0.0, 6.0, 0.0), level_.player_heading_deg,
                   -10.0),
           obstacles_(build(level_)) {}

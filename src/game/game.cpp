@@ -44,7 +44,7 @@ Game::Game(level::Level level, GameOptions options, const scene::VectorFont* fon
     : level_(std::move(level)),
       options_(std::move(options)),
       font_(font),
-      assets_(std::make_unique<Assets>(level_.backdrop)),
+      assets_(std::make_unique<Assets>(level_)),
       highscores_(options_.highscores) {
     // Build the level once up front so a bad object kind or model fails here, not mid-game.
     demo_ = std::make_unique<World>(playing_level(level_), kDemoSeed, assets_->factories(),

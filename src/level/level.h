@@ -95,6 +95,9 @@ struct Level {
     std::string author;
     std::string description;     // one or two sentences for a level menu; may be empty
     std::filesystem::path file;  // the file it was loaded from
+    // The canonical folders its models, and every file a model refers to, may be read from:
+    // the level's own folder and the project's data/ folder (empty for a built-in level).
+    std::vector<std::filesystem::path> model_folders;
     double field_size = 400.0;   // square field, centred on the origin, side in world units
     bool wrap = true;            // leaving one edge enters the opposite one
     glm::dvec3 player_start{0.0};
