@@ -131,6 +131,8 @@ void write_run(JsonWriter& j, const RunResult& r) {
     j.field("method", s.method == render::LineMethod::geometry ? "geometry" : "image_outline");
     j.field("depth", depth_name(s.depth));
     j.field("spine_samples", s.spine_samples);
+    j.field("plane_tolerance_rel", static_cast<double>(s.plane_tolerance_rel));
+    j.field("plane_tolerance_px", static_cast<double>(s.plane_tolerance_px));
     j.field("depth_bias", static_cast<double>(s.depth_bias));
     j.field("line_half_width_px", static_cast<double>(s.line_half_width_px));
     j.field("crease_angle_deg", static_cast<double>(s.crease_angle_deg));
