@@ -82,7 +82,14 @@ bool sample_visible(ivec2 t, vec2 spine_px, float line_inv, EdgeFaces e) {
     // of it.
     vec2 grad = f.xy * u_ray.xy;
     float raster = min((abs(grad.x) + abs(grad.y)) * u_tol_px, want * u_fallback_rel);
-    return stored <= want + want * u_tol_rel + u_tol_abs + raster;
+    if (stored > want + want * u_tol_rel + u_tol_abs + raster) return false;
+    // Where the plane rises toward the eye between the spine and the texel centre, it may be
+    // extrapolated past the face's far side (a rafter's flank narrower than the distance,
+    // rising through the roof it lies under): then also ask whether what the texel holds,
+    // carried back to the spine point, lies in front of the spine.
+    if (want <= line_inv + line_inv * u_fallback_rel) return true;
+    return stored_inv_depth_at(t, spine_px, stored) <=
+           line_inv + line_inv * (u_tol_rel + u_fallback_rel) + u_tol_abs;
 }
 
 bool spine_visible(vec2 spine_px, float line_inv, vec3 edge_plane, vec3 face_pos, vec3 face_neg,
