@@ -82,12 +82,16 @@ bool sample_visible(ivec2 t, vec2 spine_px, float line_inv, EdgeFaces e) {
     // of it.
     vec2 grad = f.xy * u_ray.xy;
     float raster = min((abs(grad.x) + abs(grad.y)) * u_tol_px, want * u_fallback_rel);
-    if (stored > want + want * u_tol_rel + u_tol_abs + raster) return false;
-    // Where the plane rises toward the eye between the spine and the texel centre, it may be
-    // extrapolated past the face's far side (a rafter's flank narrower than the distance,
-    // rising through the roof it lies under): then also ask whether what the texel holds,
-    // carried back to the spine point, lies in front of the spine.
-    if (want <= line_inv + line_inv * u_fallback_rel) return true;
+    float tol = want * u_tol_rel + u_tol_abs + raster;
+    if (stored > want + tol) return false;
+    // The texel holds this plane (or something behind it that the plane does not rise past
+    // the spine to reach): visible.
+    if (stored >= want - tol || want <= line_inv + line_inv * u_fallback_rel) return true;
+    // The texel holds something well behind the plane, and the plane rises toward the eye
+    // between the spine and the texel centre: it may be extrapolated past the face's far side
+    // (a rafter's flank narrower than that distance, rising through the roof it lies under).
+    // Then ask whether what the texel holds, carried back to the spine point, lies in front
+    // of the spine.
     return stored_inv_depth_at(t, spine_px, stored) <=
            line_inv + line_inv * (u_tol_rel + u_fallback_rel) + u_tol_abs;
 }
