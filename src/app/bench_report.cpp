@@ -135,6 +135,8 @@ Json run_json(const RunResult& r) {
         s.method == render::LineMethod::geometry ? "geometry" : "image_outline";
     settings["depth"] = depth_name(s.depth);
     settings["spine_samples"] = s.spine_samples;
+    settings["plane_tolerance_rel"] = static_cast<double>(s.plane_tolerance_rel);
+    settings["plane_tolerance_px"] = static_cast<double>(s.plane_tolerance_px);
     settings["depth_bias"] = static_cast<double>(s.depth_bias);
     settings["line_half_width_px"] = static_cast<double>(s.line_half_width_px);
     settings["crease_angle_deg"] = static_cast<double>(s.crease_angle_deg);
