@@ -117,6 +117,7 @@ class Loop {
         env.levels = p_.levels;
         if (watcher_) env.current_level = watcher_->file();
         env.high_scores = session_.high_scores();
+        env.high_scores_level = session_.high_scores_level();
         return env;
     }
 
@@ -145,6 +146,7 @@ class Loop {
     // Returns whether a menu had the keys this frame.
     bool update_menus() {
         menus_.env().high_scores = session_.high_scores();
+        menus_.env().high_scores_level = session_.high_scores_level();
         menus_.set_context(session_.menu_context());
         const bool open = menus_.open();
         std::vector<menu::Request> requests;

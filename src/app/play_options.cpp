@@ -78,6 +78,13 @@ PlayOptions parse_play_options(int argc, char* const* argv) {
                 throw UsageError("--style: expected occluded or arcade, not '" + printable(s) + "'");
             }
             o.style = s;
+        } else if (a == "--difficulty") {
+            const std::string d(cur.value(a));
+            if (d != "easy" && d != "normal" && d != "arcade") {
+                throw UsageError("--difficulty: expected easy, normal or arcade, not '" +
+                                 printable(d) + "'");
+            }
+            o.difficulty = d;
         } else if (a == "--windowed") {
             o.fullscreen = false;
         } else if (a == "--fullscreen") {
@@ -129,13 +136,15 @@ std::string play_usage(const std::string& settings_path, const std::string& high
            "                     [--style occluded|arcade] [--windowed|--fullscreen]\n"
            "                     [--vsync off|on|adaptive] [--record FILE] [--replay FILE]\n"
            "                     [--seed N] [--size WxH] [--frames N] [--screenshot-at N]\n"
-           "                     [--press FRAME:KEY,...] [--headless-test]\n"
+           "                     [--press FRAME:KEY,...] [--difficulty easy|normal|arcade]\n"
+           "                     [--headless-test]\n"
            "Plays LEVEL (default levels/classic.toml) in a window. Edits to the level file are\n"
            "picked up while playing; errors show on screen and the last good level stays.\n"
            "  --edit           fly around the level without gameplay (WASD, R/F up/down,\n"
            "                   arrows or right mouse button to look, Shift faster)\n"
            "  --style S        line style for this run (else the level's, else the settings')\n"
            "  --preset P       render preset for this run (else the settings', else the level's)\n"
+           "  --difficulty D   for this run (else the settings' `difficulty`, else the level's)\n"
            "  --record FILE    save this game's inputs so --replay FILE plays it back exactly\n"
            "                   (until the level file changes: a replay belongs to one level)\n"
            "  --seed N         random seed of the game (default: from the clock)\n"

@@ -31,6 +31,7 @@ struct PlayOptions {
     std::string record;
     std::string replay;
     std::optional<std::uint64_t> seed;
+    std::optional<std::string> difficulty;  // "easy", "normal" or "arcade"
     std::optional<glm::ivec2> size;  // window size (--size WxH); default 1280x720, tests 640x360
     int frames = 0;              // > 0: run this many frames (one tick each) and exit
     int screenshot_at = 0;       // > 0: take a screenshot after this frame, as F12 would

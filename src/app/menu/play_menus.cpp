@@ -263,8 +263,9 @@ Page PlayMenus::build(Screen s) const {
             break;
         }
         case Screen::high_scores: {
-            p.title = "HIGH SCORES  " + level_label(env_);  // each level keeps its own
+            p.title = "HIGH SCORES";
             p.columns = true;
+            if (!env_.high_scores_level.empty()) p.rows.push_back(info(env_.high_scores_level, ""));
             if (env_.high_scores) {
                 int rank = 1;
                 for (const game::HighScore& e : env_.high_scores->entries()) {
