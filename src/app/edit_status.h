@@ -2,10 +2,9 @@
 // The --edit viewer's status line: where the camera is, which way it looks, and which level
 // object is under the reticle (with the file:line that places it), plus the key hints.
 #include <cstddef>
+#include <glm/glm.hpp>
 #include <optional>
 #include <string>
-
-#include <glm/glm.hpp>
 
 #include "level/level.h"
 

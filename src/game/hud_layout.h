@@ -53,7 +53,8 @@ inline Box lives_box(float aspect) {
             {aspect - kMargin, kSecondLine - 0.03f}};
 }
 inline Box error_box(float aspect) {
-    return {{-aspect + kMargin, kReticleHalfHeight + 0.04f}, {aspect - kMargin, kBandBottom - 0.02f}};
+    return {{-aspect + kMargin, kReticleHalfHeight + 0.04f},
+            {aspect - kMargin, kBandBottom - 0.02f}};
 }
 inline Box notice_box(float aspect) {
     return {{-aspect + kMargin, -0.86f}, {aspect - kMargin, -0.56f}};

@@ -258,8 +258,8 @@ void Input::pad_axis(const SDL_Event& e) {
             break;
         case SDL_CONTROLLER_AXIS_TRIGGERLEFT:
         case SDL_CONTROLLER_AXIS_TRIGGERRIGHT: {
-            float& t = e.caxis.axis == SDL_CONTROLLER_AXIS_TRIGGERLEFT ? a.trigger_left
-                                                                        : a.trigger_right;
+            float& t =
+                e.caxis.axis == SDL_CONTROLLER_AXIS_TRIGGERLEFT ? a.trigger_left : a.trigger_right;
             const float next = std::max(0.0f, v);
             if (next > kTriggerFire && t <= kTriggerFire) latches_[latch_fire].pending = true;
             t = next;

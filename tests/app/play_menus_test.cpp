@@ -1,8 +1,7 @@
 #include "app/menu/play_menus.h"
 
-#include <gtest/gtest.h>
-
 #include <SDL_scancode.h>
+#include <gtest/gtest.h>
 
 namespace bz::app::menu {
 namespace {
@@ -19,7 +18,8 @@ struct Fixture {
         Env e;
         e.settings = &settings;
         e.presets = {"fast", "balanced", "high"};
-        e.levels = {{"CLASSIC", "/l/classic.toml"}, {"MAZE", "/l/maze.toml"},
+        e.levels = {{"CLASSIC", "/l/classic.toml"},
+                    {"MAZE", "/l/maze.toml"},
                     {"MINE", "/u/mine.toml", true}};
         e.current_level = "/l/classic.toml";
         e.high_scores = &scores;
@@ -45,9 +45,9 @@ TEST(PlayMenus, TitleMenuHasTheIssuesItemsAndStarts) {
     EXPECT_FALSE(f.menus.open());
     f.menus.set_context(Context::title);
     ASSERT_TRUE(f.menus.open());
-    EXPECT_EQ(labels(f.menus.page()),
-              (std::vector<std::string>{"START", "LEVEL", "OPTIONS", "CONTROLS", "HIGH SCORES",
-                                        "QUIT"}));
+    EXPECT_EQ(
+        labels(f.menus.page()),
+        (std::vector<std::string>{"START", "LEVEL", "OPTIONS", "CONTROLS", "HIGH SCORES", "QUIT"}));
     EXPECT_EQ(f.menus.page().rows[1].value, "CLASSIC");
     EXPECT_EQ(f.keys({MenuKey::confirm}), std::vector<Request>{{Kind::start_game}});
     // Up from the first row wraps to QUIT.
@@ -197,8 +197,7 @@ TEST(PlayMenus, PauseMenuResumesAndQuitsToTitle) {
               (std::vector<std::string>{"RESUME", "OPTIONS", "CONTROLS", "QUIT TO TITLE"}));
     EXPECT_EQ(f.keys({MenuKey::confirm}), std::vector<Request>{{Kind::resume}});
     EXPECT_EQ(f.keys({MenuKey::back}), std::vector<Request>{{Kind::resume}});  // P / Esc
-    EXPECT_EQ(f.keys({MenuKey::up, MenuKey::confirm}),
-              std::vector<Request>{{Kind::quit_to_title}});
+    EXPECT_EQ(f.keys({MenuKey::up, MenuKey::confirm}), std::vector<Request>{{Kind::quit_to_title}});
     // A new context starts at its first page.
     f.menus.open_page(PlayMenus::Screen::options);
     f.menus.set_context(Context::none);

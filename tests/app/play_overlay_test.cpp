@@ -17,9 +17,9 @@ const scene::VectorFont& font() {
 bool all_in(const std::vector<scene::HudLine>& lines, const hud::Box& box) {
     for (const scene::HudLine& l : lines) {
         if (!box.contains(l.a) || !box.contains(l.b)) {
-            ADD_FAILURE() << "line (" << l.a.x << ", " << l.a.y << ") - (" << l.b.x << ", "
-                          << l.b.y << ") outside [" << box.min.x << ", " << box.min.y << "] - ["
-                          << box.max.x << ", " << box.max.y << "]";
+            ADD_FAILURE() << "line (" << l.a.x << ", " << l.a.y << ") - (" << l.b.x << ", " << l.b.y
+                          << ") outside [" << box.min.x << ", " << box.min.y << "] - [" << box.max.x
+                          << ", " << box.max.y << "]";
             return false;
         }
     }

@@ -30,9 +30,9 @@ bool overlap(const hud::Box& a, const hud::Box& b) {
 
 TEST(HudRegions, RegionsDoNotOverlapAtCommonAspects) {
     for (const float aspect : {4.0f / 3.0f, 16.0f / 10.0f, 16.0f / 9.0f, 21.0f / 9.0f}) {
-        const std::vector<hud::Box> boxes = {hud::radar_box(),          hud::messages_box(aspect),
-                                             hud::score_box(aspect),    hud::lives_box(aspect),
-                                             hud::error_box(aspect),    hud::notice_box(aspect),
+        const std::vector<hud::Box> boxes = {hud::radar_box(),       hud::messages_box(aspect),
+                                             hud::score_box(aspect), hud::lives_box(aspect),
+                                             hud::error_box(aspect), hud::notice_box(aspect),
                                              hud::footer_box(aspect)};
         for (std::size_t i = 0; i < boxes.size(); ++i) {
             EXPECT_GT(boxes[i].width(), 0.0f) << i;
@@ -143,10 +143,9 @@ TEST(HudRegions, HintsNameTheKeysGiven) {
     std::vector<scene::HudLine> want;
     font().draw(want, "F9 RESUME", {0.0f, -0.5f}, 0.045f, hud::kWhite, scene::TextAlign::center);
     const auto got = g.frame(1.0, 16.0 / 9.0).hud;
-    const auto it = std::search(got.begin(), got.end(), want.begin(), want.end(),
-                                [](const scene::HudLine& x, const scene::HudLine& y) {
-                                    return x.a == y.a && x.b == y.b;
-                                });
+    const auto it = std::search(
+        got.begin(), got.end(), want.begin(), want.end(),
+        [](const scene::HudLine& x, const scene::HudLine& y) { return x.a == y.a && x.b == y.b; });
     EXPECT_NE(it, got.end());
 }
 

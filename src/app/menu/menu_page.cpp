@@ -57,15 +57,12 @@ void draw(std::vector<scene::HudLine>& out, const scene::VectorFont& font, const
     const Layout l = layout_for(page);
     if (page.big_title) {
         font.draw(out, page.title, {0.0f, 0.5f}, 0.2f, kTitleColor, TextAlign::center, 1.4f);
-        font.draw(out, "A VECTOR TANK BATTLE", {0.0f, 0.34f}, 0.05f, kRowColor,
-                  TextAlign::center);
+        font.draw(out, "A VECTOR TANK BATTLE", {0.0f, 0.34f}, 0.05f, kRowColor, TextAlign::center);
     } else {
-        font.draw(out, page.title, {0.0f, l.title_y}, 0.09f, kTitleColor, TextAlign::center,
-                  1.2f);
+        font.draw(out, page.title, {0.0f, l.title_y}, 0.09f, kTitleColor, TextAlign::center, 1.2f);
     }
 
-    const auto visible =
-        static_cast<std::size_t>((l.rows_top - l.rows_bottom) / l.row_step) + 1;
+    const auto visible = static_cast<std::size_t>((l.rows_top - l.rows_bottom) / l.row_step) + 1;
     const Window w = scroll_window(page.rows.size(), selected, visible);
     // Columns as wide as their widest entry, the table centred; a table wider than the
     // screen gets smaller text.
@@ -97,7 +94,8 @@ void draw(std::vector<scene::HudLine>& out, const scene::VectorFont& font, const
         const float glow = sel ? 1.5f : 0.9f;
         if (!page.columns) {
             std::string text = r.label;
-            if (!r.value.empty()) text += "   " + (sel && r.choice ? "< " + r.value + " >" : r.value);
+            if (!r.value.empty())
+                text += "   " + (sel && r.choice ? "< " + r.value + " >" : r.value);
             font.draw(out, text, {0.0f, y}, h, color, TextAlign::center, glow);
             if (sel && blink_on) {
                 const float half = font.width(text, h) * 0.5f + 0.08f;

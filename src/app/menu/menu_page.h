@@ -50,8 +50,8 @@ struct Page {
 
 struct Layout {
     float title_y = 0.62f;
-    float rows_top = 0.42f;     // baseline of the first row
-    float rows_bottom = -0.62f; // no row baseline below this
+    float rows_top = 0.42f;      // baseline of the first row
+    float rows_bottom = -0.62f;  // no row baseline below this
     float row_height = 0.055f;
     float row_step = 0.1f;
 };

@@ -187,8 +187,8 @@ Page PlayMenus::build(Screen s) const {
         case Screen::title:
             p.title = "BEAMZONE";
             p.big_title = true;
-            p.rows = {item("START"),    choice("LEVEL", level_label(env_)),
-                      item("OPTIONS"),  item("CONTROLS"),
+            p.rows = {item("START"),       choice("LEVEL", level_label(env_)),
+                      item("OPTIONS"),     item("CONTROLS"),
                       item("HIGH SCORES"), item("QUIT")};
             break;
         case Screen::paused:
@@ -244,7 +244,8 @@ Page PlayMenus::build(Screen s) const {
             }
             p.rows.push_back(item("BACK"));
             if (capturing_) {
-                p.lines.push_back("PRESS A KEY FOR " + action_label(static_cast<Action>(selected())));
+                p.lines.push_back("PRESS A KEY FOR " +
+                                  action_label(static_cast<Action>(selected())));
             } else if (!status_.empty()) {
                 p.lines.push_back(status_);
             }
@@ -262,14 +263,14 @@ Page PlayMenus::build(Screen s) const {
             break;
         }
         case Screen::high_scores: {
-            p.title = "HIGH SCORES  " + level_label(env_);  // each level keeps its own
+            p.title = "HIGH SCORES";
             p.columns = true;
             if (!env_.high_scores_level.empty()) p.rows.push_back(info(env_.high_scores_level, ""));
             if (env_.high_scores) {
                 int rank = 1;
                 for (const game::HighScore& e : env_.high_scores->entries()) {
-                    p.rows.push_back(info(std::to_string(rank++) + ".  " + e.initials,
-                                          std::to_string(e.score)));
+                    p.rows.push_back(
+                        info(std::to_string(rank++) + ".  " + e.initials, std::to_string(e.score)));
                 }
             }
             p.rows.push_back(item("BACK"));
@@ -316,8 +317,7 @@ std::vector<Request> PlayMenus::change(int by) {
         if (env_.levels.empty()) return out;
         std::vector<std::string> files;
         for (const auto& l : env_.levels) files.push_back(l.file.string());
-        out.push_back(
-            {Request::Kind::choose_level, cycle(files, env_.current_level.string(), by)});
+        out.push_back({Request::Kind::choose_level, cycle(files, env_.current_level.string(), by)});
         return out;
     }
     if (screen() != Screen::options) return out;
@@ -329,7 +329,9 @@ std::vector<Request> PlayMenus::change(int by) {
             st.style = cycle({std::begin(kStyles), std::end(kStyles)}, st.style, by);
             break;
         case o_volume: {
-            const float v = std::round((st.volume + static_cast<float>(by) * kVolumeStep) / kVolumeStep) * kVolumeStep;
+            const float v =
+                std::round((st.volume + static_cast<float>(by) * kVolumeStep) / kVolumeStep) *
+                kVolumeStep;
             st.volume = v > 1.0f + 1e-3f ? 0.0f : (v < -1e-3f ? 1.0f : std::clamp(v, 0.0f, 1.0f));
             break;
         }
@@ -496,8 +498,8 @@ bool PlayMenus::keeps_game_hud() const {
     return !open() || screen() == Screen::paused || screen() == Screen::title;
 }
 
-void PlayMenus::draw(std::vector<scene::HudLine>& out, const scene::VectorFont& font,
-                     double aspect, std::uint64_t tick) const {
+void PlayMenus::draw(std::vector<scene::HudLine>& out, const scene::VectorFont& font, double aspect,
+                     std::uint64_t tick) const {
     if (!open() || stack_.empty()) return;
     menu::draw(out, font, page(), selected(), aspect, tick);
 }

@@ -46,7 +46,7 @@ struct Env {
     platform::Settings* settings = nullptr;  // edited in place
     std::vector<std::string> presets;        // the renderer's preset names
     std::vector<LevelChoice> levels;
-    std::filesystem::path current_level;     // empty: the built-in level
+    std::filesystem::path current_level;  // empty: the built-in level
     const game::HighScoreTable* high_scores = nullptr;
     std::string high_scores_level;           // whose table that is (kept per level)
     std::string save_status;                 // shown on the options page ("SAVED", why not)
@@ -79,7 +79,15 @@ class PlayMenus {
     float scene_intensity() const;
     bool keeps_game_hud() const;
 
-    enum class Screen : std::uint8_t { title, levels, options, keys, controls, high_scores, paused };
+    enum class Screen : std::uint8_t {
+        title,
+        levels,
+        options,
+        keys,
+        controls,
+        high_scores,
+        paused
+    };
     Screen screen() const { return stack_.empty() ? Screen::title : stack_.back().screen; }
     // Opens a page directly, as if chosen from the context's first page (screenshots, tests).
     void open_page(Screen s);
