@@ -6,6 +6,8 @@
 #include <string>
 
 #include "app/bench_accuracy.h"
+#include "core/output_path.h"
+#include "core/printable.h"
 #include "app/bench_plots.h"
 #include "app/bench_report.h"
 #include "app/bench_run.h"
@@ -120,7 +122,7 @@ Options parse(Args args) {
                 throw UsageError("--timing: expected auto, cpu or gpu");
             }
         } else if (!a.empty() && a[0] == '-') {
-            throw UsageError("unknown option " + std::string(a));
+            throw UsageError("unknown option " + printable(a));
         } else if (o.level.empty()) {
             o.level = a;
         } else {
@@ -183,7 +185,7 @@ void write_text(const fs::path& p, const std::string& s) {
 
 int run_accuracy_mode(const Options& o) {
     std::error_code ec;
-    fs::create_directories(o.out, ec);
+    fs::create_directory(o.out, ec);  // the folder itself, never missing parents
     if (ec) throw UserError(o.out + ": cannot create the output directory: " + ec.message());
     auto context = make_headless_context();
     const gl::TimingMethod timing = pick_timing(o.timing, *context);
@@ -237,6 +239,7 @@ int run_accuracy_mode(const Options& o) {
 }
 
 int run(const Options& o) {
+    check_output_dir("--out", o.out);
     if (o.mode == Mode::accuracy) return run_accuracy_mode(o);
     level::LoadResult loaded = level::load_level_file(o.level);
     if (!loaded.ok()) {
@@ -257,7 +260,7 @@ int run(const Options& o) {
     const BenchFrames frames = simulate(scene, o, aspect);
 
     std::error_code ec;
-    fs::create_directories(o.out, ec);
+    fs::create_directory(o.out, ec);  // the folder itself, never missing parents
     if (ec) throw UserError(o.out + ": cannot create the output directory: " + ec.message());
 
     auto context = make_headless_context();
@@ -289,7 +292,7 @@ int run(const Options& o) {
         SweepOptions so;
         so.samples = o.samples;
         so.masks_dir = out / "masks";
-        fs::create_directories(so.masks_dir, ec);
+        fs::create_directory(so.masks_dir, ec);
         if (ec) throw UserError(so.masks_dir.string() + ": cannot create: " + ec.message());
         so.rounds = o.rounds;
         const SweepResult result =
