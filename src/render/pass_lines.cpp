@@ -26,7 +26,6 @@ void set_spine_tolerances(const gl::Program& p, const PassContext& ctx) {
 }
 
 void set_line_uniforms(const gl::Program& p, const PassContext& ctx, float half_width) {
-    const auto& s = ctx.settings;
     p.set("u_proj", ctx.cam.proj);
     p.set("u_viewport", glm::vec2(static_cast<float>(ctx.targets.width), static_cast<float>(ctx.targets.height)));
     p.set("u_half_width", half_width);  // the mask's quads; lines take theirs from the beam
