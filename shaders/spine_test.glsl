@@ -25,7 +25,6 @@
 // n.p in the geometry shader) and the ray r = (x, y, -1) through a pixel, 1/v = n.r.
 uniform sampler2D u_depth;
 uniform bool u_occlusion;     // false in the arcade style: the 1980 machine hid nothing
-uniform int u_spine_samples;  // 1: the texel under the spine point; 4: bilinear 2x2 around it
 uniform float u_proj_a;       // stored depth -> inverse view depth: (ndc + a) * inv_b
 uniform float u_proj_inv_b;
 uniform bool u_depth_zero_to_one;
@@ -99,20 +98,6 @@ bool sample_visible(ivec2 t, vec2 spine_px, float line_inv, EdgeFaces e) {
 bool spine_visible(vec2 spine_px, float line_inv, vec3 edge_plane, vec3 face_pos, vec3 face_neg,
                    vec2 nudge) {
     if (!u_occlusion) return true;
-    EdgeFaces e = EdgeFaces(edge_plane, face_pos, face_neg);
-    if (u_spine_samples <= 1)
-        return sample_visible(ivec2(floor(spine_px + nudge)), spine_px, line_inv, e);
-    // Percentage-closer filtering: the four texels around the sample point, each tested
-    // against its own exact plane, weighted bilinearly. The result estimates whether the
-    // point itself is covered, to a fraction of a pixel, where one texel can only say whether
-    // its centre is: an occluder's edge running next to the line is placed, not snapped. A
-    // one-face edge is sampled a full pixel inside its face so all four centres lie on it.
-    vec2 q = spine_px + nudge * (4.0 / 3.0) - 0.5;
-    ivec2 b = ivec2(floor(q));
-    vec2 w = q - vec2(b);
-    float v00 = sample_visible(b, spine_px, line_inv, e) ? 1.0 : 0.0;
-    float v10 = sample_visible(b + ivec2(1, 0), spine_px, line_inv, e) ? 1.0 : 0.0;
-    float v01 = sample_visible(b + ivec2(0, 1), spine_px, line_inv, e) ? 1.0 : 0.0;
-    float v11 = sample_visible(b + ivec2(1, 1), spine_px, line_inv, e) ? 1.0 : 0.0;
-    return mix(mix(v00, v10, w.x), mix(v01, v11, w.x), w.y) >= 0.5;
+    return sample_visible(ivec2(floor(spine_px + nudge)), spine_px, line_inv,
+                          EdgeFaces(edge_plane, face_pos, face_neg));
 }

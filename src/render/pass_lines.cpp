@@ -26,7 +26,6 @@ void set_spine_tolerances(const gl::Program& p, const PassContext& ctx) {
 }
 
 void set_line_uniforms(const gl::Program& p, const PassContext& ctx, float half_width) {
-    const auto& s = ctx.settings;
     p.set("u_proj", ctx.cam.proj);
     p.set("u_viewport", glm::vec2(static_cast<float>(ctx.targets.width), static_cast<float>(ctx.targets.height)));
     p.set("u_half_width", half_width);  // the mask's quads; lines take theirs from the beam
@@ -36,7 +35,6 @@ void set_line_uniforms(const gl::Program& p, const PassContext& ctx, float half_
     p.set("u_depth", 0);
     p.set("u_edges_to_test", 3);  // a uniform loop bound: keeps one copy of the emit code
     p.set("u_occlusion", ctx.occlusion ? 1 : 0);
-    p.set("u_spine_samples", s.spine_samples);
     p.set("u_proj_a", ctx.cam.proj_a);
     p.set("u_proj_inv_b", 1.0f / ctx.cam.proj_b);
     p.set("u_depth_zero_to_one", ctx.cam.zero_to_one ? 1 : 0);
