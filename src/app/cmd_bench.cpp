@@ -29,7 +29,7 @@ constexpr const char* kUsage =
     "usage: beamzone bench LEVEL [--frames N] [--warmup N] [--size WxH]\n"
     "                      [--preset fast|balanced|high | --sweep | --scaling]\n"
     "                      [--out DIR] [--replay FILE] [--samples N] [--rounds N]\n"
-    "                      [--timing auto|cpu|gpu]\n"
+    "                      [--timing auto|cpu|gpu] [--beam classic|mame]\n"
     "Renders the level offscreen along its benchmark camera path ([[camera_key]]; without one\n"
     "the autopilot's own view), one simulation tick (1/60 s) per frame, so every machine draws\n"
     "the same frames. --replay FILE plays a recorded game instead, seen by the player.\n"
@@ -46,7 +46,9 @@ constexpr const char* kUsage =
     "Its timed frames run in --rounds stretches (default 4), round-robin over the\n"
     "configurations, so a machine whose load drifts treats them alike.\n"
     "--scaling draws the frames from meshes subdivided to 1x, 4x, 16x and 64x the triangles\n"
-    "and writes scaling.json and scaling.png (default 40 frames).\n";
+    "and writes scaling.json and scaling.png (default 40 frames).\n"
+    "--beam picks the vector beam's look (default: the level's, else classic); the sweep adds\n"
+    "balanced with the mame beam, which times its passes (phosphor, mip-chain bloom).\n";
 
 enum class Mode { single, sweep, scaling };
 
@@ -63,6 +65,7 @@ struct Options {
     int samples = 6;
     int rounds = 4;
     std::string timing = "auto";
+    std::string beam;
 };
 
 Options parse(Args args) {
@@ -86,6 +89,8 @@ Options parse(Args args) {
             if (o.mode != Mode::single && o.mode != m)
                 throw UsageError("--sweep and --scaling exclude each other");
             o.mode = m;
+        } else if (a == "--beam") {
+            o.beam = cur.value(a);
         } else if (a == "--out") {
             o.out = cur.value(a);
         } else if (a == "--replay") {
@@ -162,6 +167,8 @@ int run(const Options& o) {
     render::RenderSettings settings =
         render::preset(preset_name.empty() ? "balanced" : preset_name);
     settings.count_edges = true;
+    const std::string beam_name = !o.beam.empty() ? o.beam : loaded.level->render.beam.value_or("classic");
+    settings.beam = render::beam_look(beam_name);
     std::optional<game::replay::Replay> replay;
     if (!o.replay.empty()) replay = game::replay::load(o.replay);
 
@@ -272,6 +279,7 @@ int cmd_bench(Args args) {
         Options o = parse(a);
         try {
             if (!o.preset.empty()) render::preset(o.preset);  // an unknown name is a usage error
+            if (!o.beam.empty()) render::beam_look(o.beam);
         } catch (const UserError& e) {
             throw UsageError(e.what());
         }

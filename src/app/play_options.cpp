@@ -48,6 +48,12 @@ PlayOptions parse_play_options(int argc, char* const* argv) {
                 throw UsageError("--style: expected occluded or arcade, not '" + s + "'");
             }
             o.style = s;
+        } else if (a == "--beam") {
+            const std::string b(cur.value(a));
+            if (b != "mame" && b != "classic") {
+                throw UsageError("--beam: expected mame or classic, not '" + b + "'");
+            }
+            o.beam = b;
         } else if (a == "--windowed") {
             o.fullscreen = false;
         } else if (a == "--fullscreen") {
@@ -93,7 +99,8 @@ PlayOptions parse_play_options(int argc, char* const* argv) {
 
 std::string play_usage(const std::string& settings_path, const std::string& high_scores_path) {
     return "usage: beamzone play [LEVEL] [--edit] [--preset fast|balanced|high]\n"
-           "                     [--style occluded|arcade] [--windowed|--fullscreen]\n"
+           "                     [--style occluded|arcade] [--beam mame|classic]\n"
+           "                     [--windowed|--fullscreen]\n"
            "                     [--vsync off|on|adaptive] [--record FILE] [--replay FILE]\n"
            "                     [--seed N] [--size WxH] [--frames N] [--screenshot-at N]\n"
            "                     [--headless-test]\n"
@@ -102,6 +109,8 @@ std::string play_usage(const std::string& settings_path, const std::string& high
            "  --edit           fly around the level without gameplay (WASD, R/F up/down,\n"
            "                   arrows or right mouse button to look, Shift faster)\n"
            "  --style S        line style for this run (else the level's, else the settings')\n"
+           "  --beam B         vector beam look, mame or classic (else the settings', else the\n"
+           "                   level's, else mame)\n"
            "  --preset P       render preset for this run (else the settings', else the level's)\n"
            "  --record FILE    save this game's inputs so --replay FILE plays it back exactly\n"
            "                   (until the level file changes: a replay belongs to one level)\n"
