@@ -2,6 +2,8 @@
 #include <cstdio>
 #include <string>
 
+#include "core/output_path.h"
+#include "core/printable.h"
 #include "app/camera_args.h"
 #include "app/cli_args.h"
 #include "app/commands.h"
@@ -64,7 +66,7 @@ RenderOptions parse(Args args) {
             else if (s == "arcade") o.style = scene::LineStyle::arcade;
             else throw UsageError("--style: expected occluded or arcade");
         } else if (!a.empty() && a[0] == '-') {
-            throw UsageError("unknown option " + std::string(a));
+            throw UsageError("unknown option " + printable(a));
         } else if (o.input.empty()) {
             o.input = a;
         } else {
@@ -72,6 +74,7 @@ RenderOptions parse(Args args) {
         }
     }
     if (o.input.empty()) throw UsageError("no INPUT model given");
+    if (o.out == o.mask) throw UsageError("--out and --mask name the same file");
     validate_camera(o.camera);
     return o;
 }
@@ -127,6 +130,9 @@ int cmd_render(Args args) {
     const std::optional<RenderOptions> parsed = parse_command("render", args, kUsage, parse_checked, &exit_code);
     if (!parsed) return exit_code;
     const RenderOptions& o = *parsed;
+    const std::filesystem::path inputs[] = {o.input};
+    check_output_file("--out", o.out, kPngOutput, inputs);
+    if (!o.mask.empty()) check_output_file("--mask", o.mask, kPngOutput, inputs);
     limit_memory_for_untrusted_input();
     geo::MeshReport report;
     geo::AdjacencyMesh mesh = geo::build_line_mesh(load_model_source(o.input), &report);

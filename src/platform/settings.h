@@ -27,6 +27,7 @@ struct Settings {
     bool overlay = false;            // Battlezone's red/green cabinet overlay
     bool hold_41hz = false;          // the original's ~41 Hz refresh, frames held
     GamepadMode gamepad = GamepadMode::tank;
+    bool show_fps = false;  // the frame-rate readout (toggled by its key too)
 };
 
 struct SettingsLoad {

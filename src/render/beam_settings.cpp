@@ -29,7 +29,7 @@ BeamSettings beam_look(std::string_view name) {
         b.dwell_max = 3.0f;
         b.defocus = 1.5f;
         b.phosphor = PhosphorDecay::exponential;
-        b.persistence_ms = 16.0f;
+        b.persistence_ms = 10.0f;  // a 60 Hz frame later 19% is left: a short trail, no ghosts
         b.bloom = BloomKind::mip_chain;
         b.mip_weights = {1.00f, 0.48f, 0.32f, 0.24f, 0.16f, 0.24f, 0.32f, 0.48f, 0.64f};
         b.bloom_threshold = 0.25f;

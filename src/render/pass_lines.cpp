@@ -42,6 +42,11 @@ void pass_lines(const PassContext& ctx, bool mask_mode) {
     gl::apply(state);
     glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
     glClear(GL_COLOR_BUFFER_BIT);
+    if (!mask_mode && ctx.view_rows > 0 && ctx.view_rows < ctx.targets.height) {
+        state.scissor_rows = ctx.view_rows;  // after the clear, which must cover every row
+        state.scissor_width = ctx.targets.width;
+        gl::apply(state);
+    }
     program.use();
     // The mask needs only the pixels the spine crosses: a quad one pixel to each side.
     set_line_uniforms(program, ctx, mask_mode ? 1.0f : ctx.settings.line_half_width_px);

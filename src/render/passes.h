@@ -24,6 +24,9 @@ struct PassContext {
     const gl::VertexArray& empty_vao;     // for full-screen triangles
     const gl::Buffer& instances;          // the frame's InstanceData, also read as an SSBO
     std::uint32_t seed = 0;               // the frame's beam flicker seed (FrameList::seed)
+    // Pixel rows from the bottom that the scene's lines may light (FrameList::view_top); the
+    // rows above belong to the HUD band. 0: all of them.
+    int view_rows = 0;
 };
 
 void pass_prepass(const PassContext& ctx);

@@ -135,9 +135,13 @@ void Renderer::render(const scene::FrameList& frame, const scene::MeshLibrary& m
     const FrameBatches batches = m.prepare(frame, meshes, cam);
     const GLsizei hud_count = m.upload_hud(frame.hud);
     const bool occlusion = frame.style == scene::LineStyle::occluded;
-    const PassContext ctx{m.programs, m.targets, m.gpu_meshes, meshes,      batches,
-                          cam,        m.settings, occlusion,   m.empty_vao, m.instances,
-                          frame.seed};
+    // The rows below FrameList::view_top (NDC y), rounded so the band's edge is never lit.
+    const float top = std::clamp(frame.view_top, -1.0f, 1.0f);
+    const int view_rows =
+        top >= 1.0f ? 0 : std::max(1, static_cast<int>((top + 1.0f) * 0.5f * static_cast<float>(m.height)));
+    const PassContext ctx{m.programs, m.targets,  m.gpu_meshes, meshes,      batches,
+                          cam,        m.settings, occlusion,    m.empty_vao, m.instances,
+                          frame.seed, view_rows};
     m.stats = batches.stats;
     const GLuint target = target_fbo == kOffscreen ? m.targets.output_fbo.id() : target_fbo;
     m.last_target = target;
@@ -202,8 +206,13 @@ std::vector<std::uint8_t> Renderer::render_mask(const scene::FrameList& frame,
     const CameraMatrices cam = m.camera(frame);
     const FrameBatches batches = m.prepare(frame, meshes, cam);
     const bool occlusion = frame.style == scene::LineStyle::occluded;
-    const PassContext ctx{m.programs, m.targets, m.gpu_meshes, meshes, batches,
-                          cam,        m.settings, occlusion, m.empty_vao, m.instances};
+    // The rows below FrameList::view_top (NDC y), rounded so the band's edge is never lit.
+    const float top = std::clamp(frame.view_top, -1.0f, 1.0f);
+    const int view_rows =
+        top >= 1.0f ? 0 : std::max(1, static_cast<int>((top + 1.0f) * 0.5f * m.height));
+    const PassContext ctx{m.programs, m.targets,  m.gpu_meshes, meshes,      batches,
+                          cam,        m.settings, occlusion,    m.empty_vao, m.instances,
+                          frame.seed, view_rows};
     if (m.settings.method == LineMethod::image_outline) {
         pass_outline_prepass(ctx);
         pass_image_outline(ctx, true);

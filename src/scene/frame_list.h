@@ -53,6 +53,9 @@ struct FrameList {
     // simulation, so replays and benchmarks draw the same pictures.
     double time_s = 0.0;
     std::uint32_t seed = 0;
+    // NDC y (= HUD units) above which the scene's lines are not drawn: the play HUD's band,
+    // as the 1980 cabinet's periscope view ends under its radar strip. 1: the whole screen.
+    float view_top = 1.0f;
 };
 
 }  // namespace bz::scene
