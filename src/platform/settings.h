@@ -28,6 +28,8 @@ struct Settings {
     bool hold_41hz = false;          // the original's ~41 Hz refresh, frames held
     GamepadMode gamepad = GamepadMode::tank;
     bool show_fps = false;  // the frame-rate readout (toggled by its key too)
+    // "easy", "normal" or "arcade"; "level" lets each level choose (its [enemies] difficulty).
+    std::string difficulty = "level";
 };
 
 struct SettingsLoad {
