@@ -10,6 +10,7 @@ in vec2 v_uv;
 uniform sampler2D u_source;
 uniform vec2 u_direction;  // (1,0) or (0,1)
 uniform bool u_encode;
+uniform float u_floor;  // black level taken off the finished bloom (only when u_encode)
 layout(location = 0) out vec4 o_color;
 
 const float kOffsets[BLOOM_FETCHES] = BLOOM_OFFSETS;
@@ -22,5 +23,5 @@ void main() {
         vec2 off = step_uv * kOffsets[i];
         sum += (texture(u_source, v_uv + off) + texture(u_source, v_uv - off)) * kWeights[i];
     }
-    o_color = u_encode ? vec4(encode_bloom(sum.rgb), 1.0) : sum;
+    o_color = u_encode ? vec4(encode_bloom(max(sum.rgb - u_floor, 0.0)), 1.0) : sum;
 }

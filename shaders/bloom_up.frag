@@ -11,6 +11,7 @@ uniform sampler2D u_level;    // L_k (only read when u_final)
 uniform float u_ratio;        // w_{k+1} / w_k
 uniform float u_weight;       // w_0 / sum of weights (only when u_final)
 uniform bool u_final;
+uniform float u_floor;        // black level taken off the finished bloom (only when u_final)
 layout(location = 0) out vec4 o_color;
 
 void main() {
@@ -20,5 +21,5 @@ void main() {
         return;
     }
     vec3 level = texelFetch(u_level, ivec2(gl_FragCoord.xy), 0).rgb;
-    o_color = vec4(encode_bloom((level + up) * u_weight), 1.0);
+    o_color = vec4(encode_bloom(max((level + up) * u_weight - u_floor, 0.0)), 1.0);
 }

@@ -67,6 +67,11 @@ std::vector<SweepConfig> sweep_configs() {
                         render::preset("balanced")};
     no_inst.settings.instancing = false;
     out.push_back(no_inst);
+    SweepConfig mame{"balanced-mame",
+                     "balanced with the mame beam: additive, intensity width, phosphor, mip-chain bloom",
+                     render::preset("balanced")};
+    mame.settings.beam = render::beam_look("mame");
+    out.push_back(mame);
     for (SweepConfig& c : out) c.settings.count_edges = true;
     return out;
 }

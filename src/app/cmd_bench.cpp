@@ -32,7 +32,7 @@ constexpr const char* kUsage =
     "usage: beamzone bench LEVEL [--frames N] [--warmup N] [--size WxH]\n"
     "                      [--preset fast|balanced|high | --sweep | --scaling]\n"
     "                      [--out DIR] [--replay FILE] [--samples N] [--rounds N]\n"
-    "                      [--timing auto|cpu|gpu]\n"
+    "                      [--timing auto|cpu|gpu] [--beam classic|mame]\n"
     "       beamzone bench --accuracy [--models-dir DIR] [--model FILE]... [--size WxH]\n"
     "                      [--frames N] [--out DIR] [--timing auto|cpu|gpu]\n"
     "Renders the level offscreen along its benchmark camera path ([[camera_key]]; without one\n"
@@ -52,6 +52,8 @@ constexpr const char* kUsage =
     "configurations, so a machine whose load drifts treats them alike.\n"
     "--scaling draws the frames from meshes subdivided to 1x, 4x, 16x and 64x the triangles\n"
     "and writes scaling.json and scaling.png (default 40 frames).\n"
+    "--beam picks the vector beam's look (default: the level's, else classic); the sweep adds\n"
+    "balanced with the mame beam, which times its passes (phosphor, mip-chain bloom).\n"
     "--accuracy needs no LEVEL: it scores every preset and the baseline on real models\n"
     "(default: 16 files under /usr/share/assimp/models; --model FILE, repeatable, relative to\n"
     "--models-dir, replaces the list) from 4 views each (framed, behind, close, above) at\n"
@@ -75,6 +77,7 @@ struct Options {
     int samples = 6;
     int rounds = 4;
     std::string timing = "auto";
+    std::string beam;
     bool size_given = false;
     std::string models_dir = "/usr/share/assimp/models";
     std::vector<std::string> models;
@@ -104,6 +107,8 @@ Options parse(Args args) {
             if (o.mode != Mode::single && o.mode != m)
                 throw UsageError("--sweep, --scaling and --accuracy exclude each other");
             o.mode = m;
+        } else if (a == "--beam") {
+            o.beam = cur.value(a);
         } else if (a == "--models-dir") {
             o.models_dir = cur.value(a);
         } else if (a == "--model") {
@@ -251,6 +256,8 @@ int run(const Options& o) {
     render::RenderSettings settings =
         render::preset(preset_name.empty() ? "balanced" : preset_name);
     settings.count_edges = true;
+    const std::string beam_name = !o.beam.empty() ? o.beam : loaded.level->render.beam.value_or("classic");
+    settings.beam = render::beam_look(beam_name);
     std::optional<game::replay::Replay> replay;
     if (!o.replay.empty()) replay = game::replay::load(o.replay);
 
@@ -361,6 +368,7 @@ int cmd_bench(Args args) {
         Options o = parse(a);
         try {
             if (!o.preset.empty()) render::preset(o.preset);  // an unknown name is a usage error
+            if (!o.beam.empty()) render::beam_look(o.beam);
         } catch (const UserError& e) {
             throw UsageError(e.what());
         }

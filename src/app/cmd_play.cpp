@@ -93,6 +93,10 @@ struct Play {
         look.settings_style = settings.style;
         look.settings_style_given = loaded.style_given || !loaded.file_existed;
         if (loaded.preset_given || !loaded.file_existed) look.settings_preset = settings.preset;
+        look.cli_beam = options.beam;
+        if (loaded.beam_given || !loaded.file_existed) look.settings_beam = settings.beam;
+        look.settings_overlay = settings.overlay;
+        look.settings_hold_41hz = settings.hold_41hz;
 
         // A replay names its level: without a LEVEL argument, play it on that one (the
         // built-in level included), as `replay --verify` does.

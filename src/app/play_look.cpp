@@ -41,11 +41,29 @@ PlayLook choose_look(const LookSources& s, const level::Level* level) {
         preset_from = "default";
     }
 
+    std::string beam = "mame", beam_from = "default";
+    if (s.cli_beam) {
+        beam = *s.cli_beam;
+        beam_from = "command line";
+    } else if (s.settings_beam) {
+        beam = *s.settings_beam;
+        beam_from = "settings file";
+    } else if (lv && lv->beam) {
+        beam = *lv->beam;
+        beam_from = "level";
+    }
+
     PlayLook look;
     look.style = style == "arcade" ? scene::LineStyle::arcade : scene::LineStyle::occluded;
     look.render = render::preset(preset);
-    look.summary =
-        "style " + style + " (" + style_from + "), preset " + preset + " (" + preset_from + ")";
+    look.render.beam = render::beam_look(beam);
+    look.render.beam.overlay = s.settings_overlay || (lv && lv->overlay.value_or(false));
+    // Battlezone's vector generator redrew at about 41 Hz.
+    look.render.beam.refresh_hz = s.settings_hold_41hz || (lv && lv->hold_41hz.value_or(false)) ? 41.0f : 0.0f;
+    look.summary = "style " + style + " (" + style_from + "), preset " + preset + " (" + preset_from +
+                   "), beam " + beam + " (" + beam_from + ")";
+    if (look.render.beam.overlay) look.summary += ", overlay";
+    if (look.render.beam.refresh_hz > 0.0f) look.summary += ", 41 Hz hold";
     if (!lv) return look;
     if (lv->line_width_px) {
         look.render.line_half_width_px = static_cast<float>(*lv->line_width_px * 0.5);

@@ -5,6 +5,8 @@
 //   preset: --preset, else the settings file, else the level's preset (the player's machine
 //           decides the speed a level can afford)
 //   line width, crease angle, bloom strength: the level's, where it sets them
+//   beam:   --beam, else the settings file, else the level's, else "mame"; the overlay and
+//           the 41 Hz hold are on when the settings file or the level turns them on
 #include <optional>
 #include <string>
 
@@ -20,6 +22,10 @@ struct LookSources {
     std::string settings_style = "occluded";     // the settings file's, or its default
     bool settings_style_given = false;           // false: the file does not name one
     std::optional<std::string> settings_preset;  // none: the settings file does not name one
+    std::optional<std::string> cli_beam;
+    std::optional<std::string> settings_beam;    // none: the settings file does not name one
+    bool settings_overlay = false;
+    bool settings_hold_41hz = false;
 };
 
 struct PlayLook {

@@ -78,6 +78,12 @@ PlayOptions parse_play_options(int argc, char* const* argv) {
                 throw UsageError("--style: expected occluded or arcade, not '" + printable(s) + "'");
             }
             o.style = s;
+        } else if (a == "--beam") {
+            const std::string b(cur.value(a));
+            if (b != "mame" && b != "classic") {
+                throw UsageError("--beam: expected mame or classic, not '" + printable(b) + "'");
+            }
+            o.beam = b;
         } else if (a == "--difficulty") {
             const std::string d(cur.value(a));
             if (d != "easy" && d != "normal" && d != "arcade") {
@@ -133,7 +139,8 @@ PlayOptions parse_play_options(int argc, char* const* argv) {
 
 std::string play_usage(const std::string& settings_path, const std::string& high_scores_path) {
     return "usage: beamzone play [LEVEL] [--edit] [--preset fast|balanced|high]\n"
-           "                     [--style occluded|arcade] [--windowed|--fullscreen]\n"
+           "                     [--style occluded|arcade] [--beam mame|classic]\n"
+           "                     [--windowed|--fullscreen]\n"
            "                     [--vsync off|on|adaptive] [--record FILE] [--replay FILE]\n"
            "                     [--seed N] [--size WxH] [--frames N] [--screenshot-at N]\n"
            "                     [--press FRAME:KEY,...] [--difficulty easy|normal|arcade]\n"
@@ -143,6 +150,8 @@ std::string play_usage(const std::string& settings_path, const std::string& high
            "  --edit           fly around the level without gameplay (WASD, R/F up/down,\n"
            "                   arrows or right mouse button to look, Shift faster)\n"
            "  --style S        line style for this run (else the level's, else the settings')\n"
+           "  --beam B         vector beam look, mame or classic (else the settings', else the\n"
+           "                   level's, else mame)\n"
            "  --preset P       render preset for this run (else the settings', else the level's)\n"
            "  --difficulty D   for this run (else the settings' `difficulty`, else the level's)\n"
            "  --record FILE    save this game's inputs so --replay FILE plays it back exactly\n"

@@ -26,6 +26,7 @@ struct PlayOptions {
     bool edit = false;
     std::optional<std::string> preset;
     std::optional<std::string> style;  // "occluded" or "arcade"
+    std::optional<std::string> beam;   // "mame" or "classic"
     std::optional<bool> fullscreen;    // --fullscreen / --windowed
     std::optional<platform::Vsync> vsync;
     std::string record;

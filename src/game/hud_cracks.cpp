@@ -63,7 +63,7 @@ void cracks(std::vector<scene::HudLine>& out, std::uint32_t seed, double seconds
                                 : hit + r * glm::vec2(static_cast<float>(std::cos(a)),
                                                       static_cast<float>(std::sin(a)));
         if (i == 0) first = p;
-        if (i > 0) emit(prev, p, 1.2f);
+        if (i > 0) emit(prev, p, 2.5f);  // overdriven: the mame beam defocuses the hole's rim
         prev = p;
     }
 

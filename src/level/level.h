@@ -83,6 +83,11 @@ struct RenderSettings {
     std::optional<double> line_width_px;
     std::optional<double> crease_angle_deg;
     std::optional<double> bloom_strength;
+    // The vector beam's look ("classic" or "mame"), Battlezone's colour overlay and the
+    // original's ~41 Hz refresh with frames held; unset: the player's settings decide.
+    std::optional<std::string> beam;
+    std::optional<bool> overlay;
+    std::optional<bool> hold_41hz;
     // Whether the file set style / preset (else the defaults above): `play` lets a level's
     // own choice win over the player's settings file, but not a default.
     bool style_given = false;

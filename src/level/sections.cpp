@@ -24,8 +24,11 @@ constexpr std::array<std::string_view, 3> kDifficulties = {"easy", "normal", "ar
 constexpr std::size_t kMaxBonusScores = 16;
 constexpr std::array<std::string_view, 4> kEnemyTypes = {"slow_tank", "super_tank", "missile",
                                                          "saucer"};
-constexpr std::array<std::string_view, 5> kRenderKeys = {"style", "preset", "line_width",
-                                                         "crease_angle", "bloom_strength"};
+constexpr std::array<std::string_view, 8> kRenderKeys = {"style",          "preset",  "line_width",
+                                                         "crease_angle",   "bloom_strength", "beam",
+                                                         "overlay",        "hold_41hz"};
+// Must match bz::render::beam_look_names().
+constexpr std::array<std::string_view, 2> kBeamLooks = {"classic", "mame"};
 constexpr std::array<std::string_view, 2> kStyles = {"occluded", "arcade"};
 // Must match bz::render::preset_names(); the level module may not link the renderer.
 constexpr std::array<std::string_view, 3> kPresets = {"fast", "balanced", "high"};
@@ -232,6 +235,9 @@ void read_render(const toml::table& root, Level& level, Diagnostics& diag) {
     if (auto v = r.number("line_width", {0.5, 16.0})) s.line_width_px = *v;
     if (auto v = r.number("crease_angle", {0.0, 180.0})) s.crease_angle_deg = *v;
     if (auto v = r.number("bloom_strength", {0.0, 4.0})) s.bloom_strength = *v;
+    if (auto v = r.choice("beam", kBeamLooks)) s.beam = *v;
+    if (auto v = r.boolean("overlay")) s.overlay = *v;
+    if (auto v = r.boolean("hold_41hz")) s.hold_41hz = *v;
 }
 
 }  // namespace bz::level::detail

@@ -178,7 +178,8 @@ class Reader {
         static constexpr std::string_view kKnown[] = {"keys",   "volume",     "mute",
                                                       "vsync",  "fullscreen", "pause_on_focus_loss",
                                                       "preset", "style",      "gamepad",
-                                                      "show_fps", "difficulty"};
+                                                      "show_fps", "difficulty", "beam",
+                                                      "overlay",  "hold_41hz"};
         for (const auto& [name, value] : t) {
             if (std::find(std::begin(kKnown), std::end(kKnown), name.str()) == std::end(kKnown)) {
                 error_at(name.source().begin, "unknown setting '" + printable(name.str()) + "'");
@@ -270,6 +271,13 @@ SettingsLoad parse_settings(std::string_view text, const std::string& source,
         s.style = styles[i];
         out.style_given = true;
     }
+    const std::string beams[] = {"mame", "classic"};
+    if (const int i = r.choice(t, "beam", beams, s.beam); i >= 0) {
+        s.beam = beams[i];
+        out.beam_given = true;
+    }
+    r.boolean(t, "overlay", s.overlay);
+    r.boolean(t, "hold_41hz", s.hold_41hz);
     const std::string modes[] = {"tank", "drive"};
     if (const int i = r.choice(t, "gamepad", modes, modes[static_cast<int>(s.gamepad)]); i >= 0) {
         s.gamepad = static_cast<GamepadMode>(i);
@@ -315,6 +323,12 @@ std::string format_settings(const Settings& s) {
       << "     # render preset: \"fast\", \"balanced\" or \"high\"\n"
       << "style = " << quoted(s.style)
       << "      # \"occluded\" or \"arcade\" (no hidden-line removal)\n"
+      << "beam = " << quoted(s.beam)
+      << "         # vector beam: \"mame\" (MAME's look, phosphor) or \"classic\"\n"
+      << "overlay = " << (s.overlay ? "true" : "false")
+      << "         # Battlezone's cabinet overlay: top fifth red, the rest green\n"
+      << "hold_41hz = " << (s.hold_41hz ? "true" : "false")
+      << "       # the original's ~41 Hz refresh, frames held\n"
       << "gamepad = " << quoted(s.gamepad == GamepadMode::tank ? "tank" : "drive")
       << "          # \"tank\" (two sticks, one per tread) or \"drive\" (left stick)\n"
       << "show_fps = " << (s.show_fps ? "true" : "false")

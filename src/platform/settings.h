@@ -23,6 +23,9 @@ struct Settings {
     bool pause_on_focus_loss = true;
     std::string preset = "balanced";
     std::string style = "occluded";  // "occluded" or "arcade"
+    std::string beam = "mame";       // the vector beam's look: "mame" or "classic"
+    bool overlay = false;            // Battlezone's red/green cabinet overlay
+    bool hold_41hz = false;          // the original's ~41 Hz refresh, frames held
     GamepadMode gamepad = GamepadMode::tank;
     bool show_fps = false;  // the frame-rate readout (toggled by its key too)
     // "easy", "normal" or "arcade"; "level" lets each level choose (its [enemies] difficulty).
@@ -37,6 +40,7 @@ struct SettingsLoad {
     // lets a level's preset fill in only where the player named none.
     bool preset_given = false;
     bool style_given = false;
+    bool beam_given = false;
     // Only a file that loaded cleanly (or none at all) may be overwritten: a typo in the
     // user's file must not be "fixed" by silently replacing it with defaults.
     bool may_save() const { return errors.empty(); }

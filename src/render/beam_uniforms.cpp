@@ -6,9 +6,10 @@ namespace bz::render {
 
 namespace {
 
-// Widths are given on a 1080-line screen (full width); the shader wants half-widths here.
+// Widths are given on a 1080-line screen (full width); the shader wants half-widths here. On
+// small targets a beam never gets narrower than 1.5 px, below which its profile aliases.
 float scaled_half(float width_1080_px, int target_height) {
-    return std::max(0.5f, 0.5f * width_1080_px * static_cast<float>(target_height) / 1080.0f);
+    return std::max(0.75f, 0.5f * width_1080_px * static_cast<float>(target_height) / 1080.0f);
 }
 
 }  // namespace

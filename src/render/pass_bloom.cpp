@@ -34,6 +34,7 @@ void gaussian_bloom(const PassContext& ctx, const gl::Texture2D& source) {
 
     t.bloom_out_fbo.bind();
     blur.set("u_encode", 1);
+    blur.set("u_floor", ctx.settings.beam.bloom_floor);
     blur.set("u_direction", glm::vec2(0.0f, 1.0f));
     t.bloom_b.bind(0);
     glDrawArrays(GL_TRIANGLES, 0, 3);
@@ -78,6 +79,7 @@ void mip_chain_bloom(const PassContext& ctx, const gl::Texture2D& source) {
     gl::apply(gl::PipelineState{});
     t.bloom_out_fbo.bind();
     up.set("u_final", 1);
+    up.set("u_floor", ctx.settings.beam.bloom_floor);
     up.set("u_ratio", n > 1 ? mip_weight(w, 1) / mip_weight(w, 0) : 0.0f);
     up.set("u_weight", mip_weight(w, 0) / total);
     t.bloom_mips[n > 1 ? 1 : 0].bind(0);

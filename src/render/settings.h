@@ -54,6 +54,9 @@ struct BeamSettings {
     std::vector<float> mip_weights;  // mip_chain: weight of each level, half resolution first
     float bloom_threshold = 0.0f;    // glow only from brightness above this (peak channel) ...
     float bloom_knee = 0.0f;         // ... with a soft knee of this half-width
+    // Black level of the glow: this much is taken off the finished bloom, so the wide levels'
+    // faint wash over the whole screen stays black (a tube's brightness knob turned down).
+    float bloom_floor = 0.0f;
     bool overlay = false;            // Battlezone's overlay: top 20% red, the rest green
     float refresh_hz = 0.0f;         // > 0: hold frames to this refresh (the original's ~41 Hz)
 };

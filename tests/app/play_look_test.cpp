@@ -25,6 +25,9 @@ LookSources from_settings(const char* text) {
     out.settings_style = s.settings.style;
     out.settings_style_given = s.style_given;
     if (s.preset_given) out.settings_preset = s.settings.preset;
+    if (s.beam_given) out.settings_beam = s.settings.beam;
+    out.settings_overlay = s.settings.overlay;
+    out.settings_hold_41hz = s.settings.hold_41hz;
     return out;
 }
 
@@ -41,7 +44,7 @@ TEST(PlayLook, LevelStyleBeatsTheSettingsFileButNotTheCommandLine) {
     EXPECT_EQ(look.style, scene::LineStyle::arcade);
     EXPECT_EQ(look.render.preset, "fast") << "the player's machine decides the speed";
     EXPECT_EQ(look.summary,
-              "style arcade (level), preset fast (settings file), line width 3 px (level), "
+              "style arcade (level), preset fast (settings file), beam mame (default), line width 3 px (level), "
               "crease angle 45 deg (level), bloom strength 0.5 (level)");
 
     s.cli_style = "occluded";
@@ -75,12 +78,12 @@ TEST(PlayLook, LevelPresetFillsInOnlyWhereTheSettingsNameNone) {
     PlayLook look = choose_look(from_settings("style = \"arcade\"\n"), &lv);
     EXPECT_EQ(look.render.preset, "fast");
     EXPECT_EQ(look.style, scene::LineStyle::arcade) << "the level names no style";
-    EXPECT_EQ(look.summary, "style arcade (settings file), preset fast (level)");
+    EXPECT_EQ(look.summary, "style arcade (settings file), preset fast (level), beam mame (default)");
 
     look = choose_look(from_settings("preset = \"high\"\n"), &lv);
     EXPECT_EQ(look.render.preset, "high");
     EXPECT_EQ(look.style, scene::LineStyle::occluded);
-    EXPECT_EQ(look.summary, "style occluded (default), preset high (settings file)");
+    EXPECT_EQ(look.summary, "style occluded (default), preset high (settings file), beam mame (default)");
 }
 
 TEST(PlayLook, DefaultsWithNoLevelAndNoChoices) {
@@ -91,8 +94,32 @@ TEST(PlayLook, DefaultsWithNoLevelAndNoChoices) {
         const PlayLook look = choose_look(LookSources{}, lv);
         EXPECT_EQ(look.style, scene::LineStyle::occluded);
         EXPECT_EQ(look.render.preset, "balanced");
-        EXPECT_EQ(look.summary, "style occluded (default), preset balanced (default)");
+        EXPECT_EQ(look.summary, "style occluded (default), preset balanced (default), beam mame (default)");
     }
+}
+
+TEST(PlayLook, BeamIsMameByDefaultAndFollowsCommandLineThenSettingsThenLevel) {
+    const level::Level lv = load("version = 1\nname = \"L\"\n[render]\nbeam = \"classic\"\noverlay = true\n");
+    ASSERT_EQ(lv.render.beam, std::optional<std::string>("classic"));
+    PlayLook look = choose_look(LookSources{}, nullptr);
+    EXPECT_EQ(look.render.beam.look, "mame");
+    EXPECT_EQ(look.render.beam.blend, render::BeamBlend::additive);
+    EXPECT_FALSE(look.render.beam.overlay);
+    EXPECT_EQ(look.render.beam.refresh_hz, 0.0f);
+
+    look = choose_look(LookSources{}, &lv);  // the level's beam and overlay
+    EXPECT_EQ(look.render.beam.look, "classic");
+    EXPECT_TRUE(look.render.beam.overlay);
+
+    LookSources s = from_settings("beam = \"mame\"\nhold_41hz = true\n");
+    look = choose_look(s, &lv);  // the settings file names a beam: it wins over the level's
+    EXPECT_EQ(look.render.beam.look, "mame");
+    EXPECT_TRUE(look.render.beam.overlay) << "the level's overlay still applies";
+    EXPECT_FLOAT_EQ(look.render.beam.refresh_hz, 41.0f);
+    EXPECT_NE(look.summary.find("beam mame (settings file), overlay, 41 Hz hold"), std::string::npos) << look.summary;
+
+    s.cli_beam = "classic";
+    EXPECT_EQ(choose_look(s, &lv).render.beam.look, "classic");
 }
 
 TEST(PlayLook, ABadSettingsValueDoesNotCountAsNamed) {
