@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <string>
 
+#include "core/output_path.h"
+#include "core/printable.h"
 #include "app/bench_scene.h"
 #include "app/camera_args.h"
 #include "app/cli_args.h"
@@ -68,7 +70,7 @@ Options parse(Args args) {
                 throw UsageError("--style: expected occluded or arcade");
             }
         } else if (!a.empty() && a[0] == '-') {
-            throw UsageError("unknown option " + std::string(a));
+            throw UsageError("unknown option " + printable(a));
         } else if (o.input.empty()) {
             o.input = a;
         } else {
@@ -146,6 +148,8 @@ int cmd_reference(Args args) {
     const std::optional<Options> parsed = parse_command("reference", args, kUsage, parse, &exit_code);
     if (!parsed) return exit_code;
     const Options& o = *parsed;
+    const std::filesystem::path inputs[] = {o.input, o.level};
+    check_output_file("--mask", o.mask, kPngOutput, inputs);
     return run(o);
 }
 

@@ -2,6 +2,8 @@
 #include <cstdio>
 #include <string>
 
+#include "core/output_path.h"
+#include "core/printable.h"
 #include "app/camera_args.h"
 #include "app/cli_args.h"
 #include "app/commands.h"
@@ -23,12 +25,13 @@ constexpr const char* kUsage =
     "usage: beamzone render INPUT [--eye x,y,z] [--target x,y,z] [--up x,y,z] [--fov DEG]\n"
     "                       [--near N] [--far F] [--size WxH] [--preset fast|balanced|high]\n"
     "                       [--style occluded|arcade] [--color r,g,b] [--out frame.png]\n"
-    "                       [--mask mask.png] [--repeat N] [--copies N]\n"
+    "                       [--mask mask.png] [--repeat N] [--copies N] [--beam classic|mame]\n"
     "Renders a model file (or builtin:cube, builtin:sphere, builtin:grid) headless to PNG. Without --eye the camera frames the model's bounding\n"
     "box from a 3/4 view. --mask writes the 1-pixel visible-spine mask (255 = line).\n"
     "--repeat N renders N timed frames and prints the mean milliseconds of each pass.\n"
     "--copies N draws N instances of the model on a square grid in the xz plane (a scene of a\n"
-    "chosen size for timing; the camera frames them all).\n";
+    "chosen size for timing; the camera frames them all).\n"
+    "--beam picks the vector beam's look (default classic; `play` defaults to mame).\n";
 
 struct RenderOptions {
     std::string input;
@@ -40,6 +43,7 @@ struct RenderOptions {
     std::string mask;
     int repeat = 0;
     int copies = 1;
+    std::string beam = "classic";
 };
 
 RenderOptions parse(Args args) {
@@ -54,13 +58,14 @@ RenderOptions parse(Args args) {
         else if (a == "--mask") o.mask = cur.value(a);
         else if (a == "--repeat") o.repeat = parse_int(a, cur.value(a), 1, 100000);
         else if (a == "--copies") o.copies = parse_int(a, cur.value(a), 1, 100000);
+        else if (a == "--beam") o.beam = cur.value(a);
         else if (a == "--style") {
             const std::string_view s = cur.value(a);
             if (s == "occluded") o.style = scene::LineStyle::occluded;
             else if (s == "arcade") o.style = scene::LineStyle::arcade;
             else throw UsageError("--style: expected occluded or arcade");
         } else if (!a.empty() && a[0] == '-') {
-            throw UsageError("unknown option " + std::string(a));
+            throw UsageError("unknown option " + printable(a));
         } else if (o.input.empty()) {
             o.input = a;
         } else {
@@ -68,6 +73,7 @@ RenderOptions parse(Args args) {
         }
     }
     if (o.input.empty()) throw UsageError("no INPUT model given");
+    if (o.out == o.mask) throw UsageError("--out and --mask name the same file");
     validate_camera(o.camera);
     return o;
 }
@@ -114,6 +120,7 @@ int cmd_render(Args args) {
         RenderOptions parsed = parse(a);
         try {
             settings = render::preset(parsed.preset);
+            settings.beam = render::beam_look(parsed.beam);
         } catch (const UserError& e) {
             throw UsageError(e.what());  // an unknown preset name is a usage error
         }
@@ -122,6 +129,9 @@ int cmd_render(Args args) {
     const std::optional<RenderOptions> parsed = parse_command("render", args, kUsage, parse_checked, &exit_code);
     if (!parsed) return exit_code;
     const RenderOptions& o = *parsed;
+    const std::filesystem::path inputs[] = {o.input};
+    check_output_file("--out", o.out, kPngOutput, inputs);
+    if (!o.mask.empty()) check_output_file("--mask", o.mask, kPngOutput, inputs);
     geo::MeshReport report;
     geo::AdjacencyMesh mesh = geo::build_line_mesh(load_model_source(o.input), &report);
     if (mesh.triangle_count() == 0) throw UserError(o.input + ": no usable triangles");

@@ -45,12 +45,28 @@ void write_all(int fd, std::string_view bytes, const fs::path& path) {
     }
 }
 
+// A symbolic link (a dotfiles setup links settings.toml into a repository) is written
+// through: the new file replaces the link's final target, and the link stays a link.
+fs::path final_target(const fs::path& path) {
+    constexpr int kMaxLinks = 40;  // as the kernel's ELOOP limit
+    fs::path p = path;
+    for (int i = 0; i < kMaxLinks; ++i) {
+        std::error_code ec;
+        if (!fs::is_symlink(fs::symlink_status(p, ec))) return p;
+        const fs::path target = fs::read_symlink(p, ec);
+        if (ec) throw UserError(path.string() + ": cannot read the link: " + ec.message());
+        const fs::path base = p.has_parent_path() ? p.parent_path() : fs::path(".");
+        p = target.is_absolute() ? target : base / target;
+    }
+    throw UserError(path.string() + ": too many levels of symbolic links");
+}
+
 }  // namespace
 
-void write_file_atomic(const fs::path& path, std::string_view bytes) {
+void write_file_atomic(const fs::path& requested, std::string_view bytes) {
+    // The folder is never created here: a mistyped output path must fail, not grow folders.
+    const fs::path path = final_target(requested);
     const fs::path dir = path.has_parent_path() ? path.parent_path() : fs::path(".");
-    std::error_code ec;
-    fs::create_directories(dir, ec);
     std::random_device rd;
     const fs::path tmp = dir / ("." + path.filename().string() + ".tmp" + std::to_string(rd()));
     const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);

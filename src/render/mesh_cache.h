@@ -17,7 +17,8 @@ namespace bz::render {
 struct InstanceData {
     glm::mat4 model_view;
     glm::vec4 color;
-    glm::vec4 params;  // x: cos(crease angle), y: this instance's index in the buffer
+    glm::vec4 params;  // x: cos(crease angle), y: this instance's index in the buffer,
+                       // z: intensity (the beam's width follows it: shaders/beam_width.glsl)
 };
 
 struct GpuMesh {
