@@ -72,19 +72,19 @@ bool Input::action_held(Action a) const {
 void Input::latch_action(Action a) {
     switch (a) {
         case Action::fire:
-            latches_[fire].pending = true;
+            latches_[latch_fire].pending = true;
             break;
         case Action::drive_forward:
-            latches_[up].pending = true;
+            latches_[latch_up].pending = true;
             break;
         case Action::drive_back:
-            latches_[down].pending = true;
+            latches_[latch_down].pending = true;
             break;
         case Action::turn_left:
-            latches_[left].pending = true;
+            latches_[latch_left].pending = true;
             break;
         case Action::turn_right:
-            latches_[right].pending = true;
+            latches_[latch_right].pending = true;
             break;
         default:
             break;
@@ -200,7 +200,7 @@ void Input::pad_button(const SDL_Event& e) {
             break;
         case SDL_CONTROLLER_BUTTON_A:
         case SDL_CONTROLLER_BUTTON_RIGHTSHOULDER:
-            latches_[fire].pending = true;
+            latches_[latch_fire].pending = true;
             if (e.cbutton.button == SDL_CONTROLLER_BUTTON_A) menu(MenuKey::confirm);
             break;
         case SDL_CONTROLLER_BUTTON_B:
@@ -209,19 +209,19 @@ void Input::pad_button(const SDL_Event& e) {
             menu(MenuKey::back);
             break;
         case SDL_CONTROLLER_BUTTON_DPAD_UP:
-            latches_[up].pending = true;
+            latches_[latch_up].pending = true;
             menu(MenuKey::up);
             break;
         case SDL_CONTROLLER_BUTTON_DPAD_DOWN:
-            latches_[down].pending = true;
+            latches_[latch_down].pending = true;
             menu(MenuKey::down);
             break;
         case SDL_CONTROLLER_BUTTON_DPAD_LEFT:
-            latches_[left].pending = true;
+            latches_[latch_left].pending = true;
             menu(MenuKey::left);
             break;
         case SDL_CONTROLLER_BUTTON_DPAD_RIGHT:
-            latches_[right].pending = true;
+            latches_[latch_right].pending = true;
             menu(MenuKey::right);
             break;
         default:
@@ -245,7 +245,7 @@ void Input::pad_axis(const SDL_Event& e) {
         case SDL_CONTROLLER_AXIS_LEFTY:
             if (crossed(a.left_y, kStickPress)) {
                 const bool is_up = v < 0;  // SDL's y grows toward the player
-                latches_[is_up ? up : down].pending = true;
+                latches_[is_up ? latch_up : latch_down].pending = true;
                 menu(is_up ? MenuKey::up : MenuKey::down);
             }
             a.left_y = v;
@@ -261,7 +261,7 @@ void Input::pad_axis(const SDL_Event& e) {
             float& t = e.caxis.axis == SDL_CONTROLLER_AXIS_TRIGGERLEFT ? a.trigger_left
                                                                         : a.trigger_right;
             const float next = std::max(0.0f, v);
-            if (next > kTriggerFire && t <= kTriggerFire) latches_[fire].pending = true;
+            if (next > kTriggerFire && t <= kTriggerFire) latches_[latch_fire].pending = true;
             t = next;
             break;
         }

@@ -80,7 +80,7 @@ class Input {
         std::array<bool, 32> buttons{};
     };
     // Buttons whose presses are latched between ticks.
-    enum Latched : std::uint8_t { fire, up, down, left, right, latched_count };
+    enum Latched : std::uint8_t { latch_fire, latch_up, latch_down, latch_left, latch_right, latched_count };
     struct Latch {
         bool pending = false;  // pressed since the last tick
         bool sent = false;     // what the last tick got

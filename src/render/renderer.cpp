@@ -8,6 +8,18 @@
 
 namespace bz::render {
 
+namespace {
+
+// The pixel rows below FrameList::view_top (NDC y) that the scene may light, rounded so the
+// HUD band's edge is never lit; 0 means all of them.
+int scene_view_rows(float view_top, int height) {
+    const float top = std::clamp(view_top, -1.0f, 1.0f);
+    if (top >= 1.0f) return 0;
+    return std::max(1, static_cast<int>((top + 1.0f) * 0.5f * static_cast<float>(height)));
+}
+
+}  // namespace
+
 struct Renderer::Impl {
     RenderSettings settings;
     int width;
@@ -135,10 +147,7 @@ void Renderer::render(const scene::FrameList& frame, const scene::MeshLibrary& m
     const FrameBatches batches = m.prepare(frame, meshes, cam);
     const GLsizei hud_count = m.upload_hud(frame.hud);
     const bool occlusion = frame.style == scene::LineStyle::occluded;
-    // The rows below FrameList::view_top (NDC y), rounded so the band's edge is never lit.
-    const float top = std::clamp(frame.view_top, -1.0f, 1.0f);
-    const int view_rows =
-        top >= 1.0f ? 0 : std::max(1, static_cast<int>((top + 1.0f) * 0.5f * static_cast<float>(m.height)));
+    const int view_rows = scene_view_rows(frame.view_top, m.height);
     const PassContext ctx{m.programs, m.targets,  m.gpu_meshes, meshes,      batches,
                           cam,        m.settings, occlusion,    m.empty_vao, m.instances,
                           frame.seed, view_rows};
@@ -206,10 +215,7 @@ std::vector<std::uint8_t> Renderer::render_mask(const scene::FrameList& frame,
     const CameraMatrices cam = m.camera(frame);
     const FrameBatches batches = m.prepare(frame, meshes, cam);
     const bool occlusion = frame.style == scene::LineStyle::occluded;
-    // The rows below FrameList::view_top (NDC y), rounded so the band's edge is never lit.
-    const float top = std::clamp(frame.view_top, -1.0f, 1.0f);
-    const int view_rows =
-        top >= 1.0f ? 0 : std::max(1, static_cast<int>((top + 1.0f) * 0.5f * m.height));
+    const int view_rows = scene_view_rows(frame.view_top, m.height);
     const PassContext ctx{m.programs, m.targets,  m.gpu_meshes, meshes,      batches,
                           cam,        m.settings, occlusion,    m.empty_vao, m.instances,
                           frame.seed, view_rows};
