@@ -42,7 +42,7 @@ PlayLook choose_look(const LookSources& s, const level::Level* level) {
     }
 
     PlayLook look;
-    look.style = style == "arcade" ? scene::LineStyle::arcade : scene::LineStyle::occluded;
+    look.style = scene::style_from_name(style).value_or(scene::Style::vector);
     look.render = render::preset(preset);
     look.summary =
         "style " + style + " (" + style_from + "), preset " + preset + " (" + preset_from + ")";

@@ -44,8 +44,8 @@ PlayOptions parse_play_options(int argc, char* const* argv) {
             o.preset = p;
         } else if (a == "--style") {
             const std::string s(cur.value(a));
-            if (s != "occluded" && s != "arcade") {
-                throw UsageError("--style: expected occluded or arcade, not '" + s + "'");
+            if (!scene::style_from_name(s)) {
+                throw UsageError("--style: expected " + scene::style_name_list() + ", not '" + s + "'");
             }
             o.style = s;
         } else if (a == "--windowed") {
@@ -93,7 +93,7 @@ PlayOptions parse_play_options(int argc, char* const* argv) {
 
 std::string play_usage(const std::string& settings_path, const std::string& high_scores_path) {
     return "usage: beamzone play [LEVEL] [--edit] [--preset fast|balanced|high]\n"
-           "                     [--style occluded|arcade] [--windowed|--fullscreen]\n"
+           "                     [--style NAME] [--windowed|--fullscreen]\n"
            "                     [--vsync off|on|adaptive] [--record FILE] [--replay FILE]\n"
            "                     [--seed N] [--size WxH] [--frames N] [--screenshot-at N]\n"
            "                     [--headless-test]\n"

@@ -5,7 +5,7 @@
 
 namespace bz::gl {
 
-enum class Blend { none, max, add };
+enum class Blend { none, max, add, alpha };  // alpha: src * a + dst * (1 - a)
 enum class DepthTest { off, less, greater, always };
 
 struct PipelineState {

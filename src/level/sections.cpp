@@ -4,6 +4,7 @@
 #include <array>
 
 #include "level/suggest.h"
+#include "scene/style.h"
 
 namespace bz::level::detail {
 
@@ -21,7 +22,6 @@ constexpr std::array<std::string_view, 4> kEnemyTypes = {"slow_tank", "super_tan
                                                          "saucer"};
 constexpr std::array<std::string_view, 5> kRenderKeys = {"style", "preset", "line_width",
                                                          "crease_angle", "bloom_strength"};
-constexpr std::array<std::string_view, 2> kStyles = {"occluded", "arcade"};
 // Must match bz::render::preset_names(); the level module may not link the renderer.
 constexpr std::array<std::string_view, 3> kPresets = {"fast", "balanced", "high"};
 
@@ -163,7 +163,7 @@ void read_render(const toml::table& root, Level& level, Diagnostics& diag) {
     if (!t) return;
     TableReader r(*t, "[render]", kRenderKeys, diag, kRootKeys);
     RenderSettings& s = level.render;
-    if (auto v = r.choice("style", kStyles)) {
+    if (auto v = r.choice("style", scene::accepted_style_names())) {
         s.style = *v;
         s.style_given = true;
     }

@@ -28,6 +28,7 @@ constexpr std::array<std::string_view, kActionCount> kNames = {
     "quit",
     "start",
     "back",
+    "cycle_style",
 };
 
 struct ModifierName {
@@ -132,6 +133,7 @@ Bindings default_bindings() {
     set(Action::quit, {key("F10"), key("F4", kModAlt)});
     set(Action::start, {key("Return"), key("Keypad Enter"), key("1")});
     set(Action::back, {key("Backspace")});
+    set(Action::cycle_style, {key("F6")});
     return b;
 }
 

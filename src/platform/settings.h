@@ -22,7 +22,7 @@ struct Settings {
     bool fullscreen = false;
     bool pause_on_focus_loss = true;
     std::string preset = "balanced";
-    std::string style = "occluded";  // "occluded" or "arcade"
+    std::string style = "vector";  // a style name (scene/style.h)
     GamepadMode gamepad = GamepadMode::tank;
 };
 

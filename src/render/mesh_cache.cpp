@@ -6,6 +6,7 @@
 #include "geometry/dihedral.h"
 
 #include "geometry/simplify.h"
+#include "geometry/edge_list.h"
 
 namespace bz::render {
 
@@ -50,6 +51,8 @@ const GpuMesh& MeshCache::get(const scene::MeshLibrary& library, scene::MeshId i
 void MeshCache::upload(GpuMesh& gpu, const geo::AdjacencyMesh& mesh) {
     ++uploads_;
     gpu.positions.set(std::span<const glm::vec3>(mesh.positions), GL_STATIC_DRAW);
+    const std::vector<glm::vec3> normals = geo::vertex_normals(mesh);
+    gpu.normals.set(std::span<const glm::vec3>(normals), GL_STATIC_DRAW);
     gpu.adjacency.set(std::span<const std::uint32_t>(mesh.adjacency), GL_STATIC_DRAW);
     gpu.triangles.set(std::span<const std::uint32_t>(mesh.triangles), GL_STATIC_DRAW);
     gpu.outward_closed = geo::is_outward_closed(mesh);
@@ -61,12 +64,21 @@ void MeshCache::upload(GpuMesh& gpu, const geo::AdjacencyMesh& mesh) {
     gpu.lines_vao.bind_buffer(0, gpu.positions, sizeof(glm::vec3));
     gpu.lines_vao.float_attribute(0, 0, 3, 0);
     instance_attributes(gpu.lines_vao, *instances_, true);
+    gpu.lines_vao.bind_buffer(2, gpu.normals, sizeof(glm::vec3));
+    gpu.lines_vao.float_attribute(7, 2, 3, 0);
     gpu.lines_vao.element_buffer(gpu.adjacency);
 
     gpu.prepass_vao.bind_buffer(0, gpu.positions, sizeof(glm::vec3));
     gpu.prepass_vao.float_attribute(0, 0, 3, 0);
     instance_attributes(gpu.prepass_vao, *instances_, false);
     gpu.prepass_vao.element_buffer(gpu.triangles);
+
+    gpu.fill_vao.bind_buffer(0, gpu.positions, sizeof(glm::vec3));
+    gpu.fill_vao.float_attribute(0, 0, 3, 0);
+    instance_attributes(gpu.fill_vao, *instances_, true);
+    gpu.fill_vao.bind_buffer(2, gpu.normals, sizeof(glm::vec3));
+    gpu.fill_vao.float_attribute(7, 2, 3, 0);
+    gpu.fill_vao.element_buffer(gpu.triangles);
 }
 
 }  // namespace bz::render

@@ -3,9 +3,9 @@
 namespace bz::render {
 
 // Lines + bloom, tone-mapped and gamma-encoded into the target (the window or output image).
-void pass_composite(const PassContext& ctx, GLuint target_fbo, int width, int height) {
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, target_fbo);
-    glViewport(0, 0, width, height);
+void pass_composite(const PassContext& ctx) {
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, ctx.target_fbo);
+    glViewport(0, 0, ctx.targets.width, ctx.targets.height);
     gl::apply(gl::PipelineState{});
     const gl::Program& p = ctx.programs.composite;
     p.use();

@@ -1,12 +1,15 @@
 #pragma once
-// The passes of one frame, one file each: prepass -> lines -> hud -> bloom -> composite.
-// Each states the whole GL state it needs (gl::apply), so order is the only coupling.
+// The passes of one frame, one file each. Which passes a frame runs, in which order, is the
+// style's list (frame_passes.h). Each states the whole GL state it needs (gl::apply), so
+// order is the only coupling.
 #include <span>
 
 #include "gl/state.h"
 #include "gl/vertex_array.h"
 #include "render/batches.h"
 #include "render/programs.h"
+#include "render/styles/style_def.h"
+#include "render/styles/style_textures.h"
 #include "render/targets.h"
 
 namespace bz::render {
@@ -22,6 +25,13 @@ struct PassContext {
     bool occlusion;                       // false in the arcade style
     const gl::VertexArray& empty_vao;     // for full-screen triangles
     const gl::Buffer& instances;          // the frame's InstanceData, also read as an SSBO
+    const StyleDef& style;                // what the frame looks like (render/styles/)
+    const StyleTextures& style_textures;  // noise and stroke profiles
+    const gl::VertexArray& hud_vao;
+    GLsizei hud_vertex_count = 0;
+    GLuint target_fbo = 0;                // where composite writes
+    FrameStats* stats = nullptr;          // passes that count something add it here
+    GLuint edge_query = 0;                // GL_PRIMITIVES_GENERATED query for count_edges
 };
 
 void pass_prepass(const PassContext& ctx);
@@ -34,11 +44,26 @@ double depth_clear_value(const PassContext& ctx);
 void draw_batch_triangles(const PassContext& ctx, gl::PipelineState state, bool occluders_only);
 // mask_mode: draw the 1-pixel visible-spine mask into targets.mask instead of shaded lines.
 void pass_lines(const PassContext& ctx, bool mask_mode);
-void pass_hud(const PassContext& ctx, const gl::VertexArray& hud_vao, GLsizei vertex_count);
+void pass_hud(const PassContext& ctx);
 void pass_bloom(const PassContext& ctx);
-void pass_composite(const PassContext& ctx, GLuint target_fbo, int width, int height);
+void pass_composite(const PassContext& ctx);
 // The image-space outline baseline (LineMethod::image_outline), in place of prepass + lines.
 void pass_outline_prepass(const PassContext& ctx);
 void pass_image_outline(const PassContext& ctx, bool mask_mode);
+
+// Filled styles (render/styles/pass_*.cpp).
+// The style's fill into the canvas and the depth texture (in place of the prepass): paper
+// tone, then every object's triangles, both faces.
+void pass_fill(const PassContext& ctx);
+// The halo's depth mask: every occluder shrunk along its vertex normals.
+void pass_shrunk_depth(const PassContext& ctx);
+// Ink outlines of the feature edges onto the canvas (toon, pop-art).
+void pass_outline(const PassContext& ctx);
+// Pencil strokes onto the canvas (sketch); mask_mode: their 1-pixel spines into targets.mask.
+void pass_sketch(const PassContext& ctx, bool mask_mode);
+// Soft halos (MAX blended off screen), laid over the canvas, then the silhouette strokes.
+void pass_halo(const PassContext& ctx);
+// Canvas + HUD lines into the target (filled styles' composite).
+void pass_ink_composite(const PassContext& ctx);
 
 }  // namespace bz::render

@@ -52,6 +52,16 @@ Programs load_programs(const RenderSettings& settings) {
     p.image_outline_mask = gl::Program({stage(GL_VERTEX_SHADER, "fullscreen.vert"),
                                         stage(GL_FRAGMENT_SHADER, "image_outline.frag")},
                                        {"MASK_MODE 1"});
+    const auto fill = [&](const char* define) {
+        return gl::Program({stage(GL_VERTEX_SHADER, "fill.vert"), stage(GL_FRAGMENT_SHADER, "fill.frag")},
+                           {define});
+    };
+    p.fill_toon = fill("FILL_TOON 1");
+    p.fill_pop_art = fill("FILL_POP_ART 1");
+    p.fill_paper = fill("FILL_PAPER 1");
+    p.shrunk_depth = gl::Program({stage(GL_VERTEX_SHADER, "fill.vert")}, {"SHRINK 1"});
+    p.ink_composite = gl::Program({stage(GL_VERTEX_SHADER, "fullscreen.vert"),
+                                   stage(GL_FRAGMENT_SHADER, "ink_composite.frag")});
     return p;
 }
 

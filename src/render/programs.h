@@ -18,6 +18,13 @@ struct Programs {
     gl::Program outline_prepass;     // image-space baseline: depth + face normals
     gl::Program image_outline;       // ... Sobel into the lines target
     gl::Program image_outline_mask;  // ... Sobel into the mask
+    // Filled styles (render/styles/): fill.vert + fill.frag per look, the halo's shrunk depth
+    // mask (fill.vert with SHRINK), and the canvas composite.
+    gl::Program fill_toon;
+    gl::Program fill_pop_art;
+    gl::Program fill_paper;
+    gl::Program shrunk_depth;
+    gl::Program ink_composite;
 };
 
 // Throws UserError naming file:line:col of every compile error. The bloom kernel is baked

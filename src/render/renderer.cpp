@@ -3,7 +3,7 @@
 #include <algorithm>
 
 #include "core/error.h"
-#include "render/passes.h"
+#include "render/frame_passes.h"
 
 namespace bz::render {
 
@@ -14,6 +14,7 @@ struct Renderer::Impl {
     gl::PassTimer timer;
     Programs programs;
     Targets targets;
+    StyleTextures style_textures = make_style_textures();
     gl::Buffer instances;
     MeshCache gpu_meshes{instances};
     gl::VertexArray empty_vao;
@@ -33,6 +34,19 @@ struct Renderer::Impl {
         glGenQueries(1, &edge_query);
     }
     ~Impl() { glDeleteQueries(1, &edge_query); }
+
+    const StyleDef& style_of(const scene::FrameList& frame) const {
+        return style_def(settings.style ? *settings.style : frame.style);
+    }
+
+    PassContext context(const scene::MeshLibrary& meshes, const FrameBatches& batches,
+                        const CameraMatrices& cam, const StyleDef& style, GLsizei hud_count,
+                        GLuint target) {
+        return PassContext{programs,  targets,   gpu_meshes, meshes,         batches,
+                           cam,       settings,  style.hidden_lines_removed, empty_vao,
+                           instances, style,     style_textures,             hud_vao,
+                           hud_count, target,    &stats,     edge_query};
+    }
 
     CameraMatrices camera(const scene::FrameList& frame) const {
         return camera_matrices(frame.camera, static_cast<double>(width) / height, settings.depth);
@@ -96,50 +110,19 @@ void Renderer::render(const scene::FrameList& frame, const scene::MeshLibrary& m
     const CameraMatrices cam = m.camera(frame);
     const FrameBatches batches = m.prepare(frame, meshes, cam);
     const GLsizei hud_count = m.upload_hud(frame.hud);
-    const bool occlusion = frame.style == scene::LineStyle::occluded;
-    const PassContext ctx{m.programs, m.targets, m.gpu_meshes, meshes, batches,
-                          cam,        m.settings, occlusion, m.empty_vao, m.instances};
     m.stats = batches.stats;
     const GLuint target = target_fbo == kOffscreen ? m.targets.output_fbo.id() : target_fbo;
     m.last_target = target;
+    const StyleDef& style = m.style_of(frame);
+    const PassContext ctx = m.context(meshes, batches, cam, style, hud_count, target);
 
+    // The frame is the style's list of passes (frame_passes.cpp), each timed under its name.
     m.timer.begin_frame();
-    if (m.settings.method == LineMethod::image_outline) {
-        // The baseline finds no edges as such: feature_edges stays 0.
-        m.timer.begin("prepass");
-        pass_outline_prepass(ctx);
-        m.timer.end();
-        m.timer.begin("outline");
-        pass_image_outline(ctx, false);
-        m.timer.end();
-    } else {
-        m.timer.begin("prepass");
-        pass_prepass(ctx);
-        m.timer.end();
-
-        m.timer.begin("lines");
-        if (m.settings.count_edges) glBeginQuery(GL_PRIMITIVES_GENERATED, m.edge_query);
-        pass_lines(ctx, false);
-        if (m.settings.count_edges) {
-            glEndQuery(GL_PRIMITIVES_GENERATED);
-            GLuint64 prims = 0;
-            glGetQueryObjectui64v(m.edge_query, GL_QUERY_RESULT, &prims);
-            m.stats.feature_edges = static_cast<std::size_t>(prims / 2);  // two triangles per quad
-        }
+    for (const FramePass& pass : frame_passes(style, m.settings)) {
+        m.timer.begin(pass.name);
+        pass.run(ctx);
         m.timer.end();
     }
-
-    m.timer.begin("hud");
-    pass_hud(ctx, m.hud_vao, hud_count);
-    m.timer.end();
-
-    m.timer.begin("bloom");
-    pass_bloom(ctx);
-    m.timer.end();
-
-    m.timer.begin("composite");
-    pass_composite(ctx, target, m.width, m.height);
-    m.timer.end();
     m.timer.end_frame();
 }
 
@@ -148,16 +131,9 @@ std::vector<std::uint8_t> Renderer::render_mask(const scene::FrameList& frame,
     Impl& m = *impl_;
     const CameraMatrices cam = m.camera(frame);
     const FrameBatches batches = m.prepare(frame, meshes, cam);
-    const bool occlusion = frame.style == scene::LineStyle::occluded;
-    const PassContext ctx{m.programs, m.targets, m.gpu_meshes, meshes, batches,
-                          cam,        m.settings, occlusion, m.empty_vao, m.instances};
-    if (m.settings.method == LineMethod::image_outline) {
-        pass_outline_prepass(ctx);
-        pass_image_outline(ctx, true);
-    } else {
-        pass_prepass(ctx);
-        pass_lines(ctx, true);
-    }
+    const StyleDef& style = m.style_of(frame);
+    const PassContext ctx = m.context(meshes, batches, cam, style, 0, m.targets.output_fbo.id());
+    for (const FramePass& pass : mask_passes(style, m.settings)) pass.run(ctx);
     std::vector<std::uint8_t> rows(static_cast<std::size_t>(m.width) * m.height);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     glGetTextureImage(m.targets.mask.id(), 0, GL_RED, GL_UNSIGNED_BYTE,

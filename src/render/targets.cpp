@@ -24,6 +24,14 @@ Targets make_targets(int width, int height, const RenderSettings& s) {
     t.bloom_b_fbo = gl::Framebuffer({&t.bloom_b}, nullptr);
     t.mask_fbo = gl::Framebuffer({&t.mask}, nullptr);
     t.output_fbo = gl::Framebuffer({&t.output}, nullptr);
+    t.canvas = gl::Texture2D(width, height, GL_RGBA8, gl::Filter::nearest);
+    t.shrunk_depth = gl::Texture2D(width, height, depth_format, gl::Filter::nearest);
+    t.halo = gl::Texture2D(width, height, GL_RG16F, gl::Filter::nearest);
+    t.canvas_depth_fbo = gl::Framebuffer({&t.canvas}, &t.depth);
+    t.canvas_fbo = gl::Framebuffer({&t.canvas}, nullptr);
+    t.canvas_shrunk_fbo = gl::Framebuffer({&t.canvas}, &t.shrunk_depth);
+    t.shrunk_fbo = gl::Framebuffer({}, &t.shrunk_depth);
+    t.halo_fbo = gl::Framebuffer({&t.halo}, &t.shrunk_depth);
     if (s.method == LineMethod::image_outline) {
         t.normals = gl::Texture2D(width, height, GL_RGBA8, gl::Filter::nearest);
         t.normals_fbo = gl::Framebuffer({&t.normals}, &t.depth);

@@ -1,0 +1,31 @@
+#version 450 core
+// Filled styles: the object's triangles with view-space position and normal, its colour and
+// whether it is shaded smooth (vertex normals) or flat (face normals, in the fragment shader).
+// With SHRINK the mesh is pulled in along its vertex normals: the halo's depth mask (seed 004).
+layout(location = 0) in vec3 a_position;
+layout(location = 1) in mat4 a_model_view;  // locations 1-4
+layout(location = 5) in vec4 a_color;
+layout(location = 6) in vec4 a_params;      // z: smooth shading, w: bounding radius
+layout(location = 7) in vec3 a_normal;
+
+uniform mat4 u_proj;
+uniform float u_shrink;  // SHRINK: fraction of the bounding radius
+
+out vec3 v_view_pos;
+out vec3 v_view_normal;
+flat out vec3 v_color;
+flat out float v_smooth;
+
+void main() {
+    vec3 p = a_position;
+#ifdef SHRINK
+    p -= a_normal * (u_shrink * a_params.w);
+#endif
+    vec4 view = a_model_view * vec4(p, 1.0);
+    v_view_pos = view.xyz;
+    // Inverse transpose: stays perpendicular to the surface under non-uniform scale.
+    v_view_normal = transpose(inverse(mat3(a_model_view))) * a_normal;
+    v_color = a_color.rgb;
+    v_smooth = a_params.z;
+    gl_Position = u_proj * view;
+}
