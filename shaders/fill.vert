@@ -9,7 +9,7 @@ layout(location = 6) in vec4 a_params;      // z: smooth shading, w: bounding ra
 layout(location = 7) in vec3 a_normal;
 
 uniform mat4 u_proj;
-uniform float u_shrink;  // SHRINK: fraction of the bounding radius
+uniform float u_shrink;  // SHRINK: view-space distance per unit of view depth (pixels at any depth)
 
 out vec3 v_view_pos;
 out vec3 v_view_normal;
@@ -17,14 +17,17 @@ flat out vec3 v_color;
 flat out float v_smooth;
 
 void main() {
-    vec3 p = a_position;
-#ifdef SHRINK
-    p -= a_normal * (u_shrink * a_params.w);
-#endif
-    vec4 view = a_model_view * vec4(p, 1.0);
-    v_view_pos = view.xyz;
+    vec4 view = a_model_view * vec4(a_position, 1.0);
     // Inverse transpose: stays perpendicular to the surface under non-uniform scale.
     v_view_normal = transpose(inverse(mat3(a_model_view))) * a_normal;
+#ifdef SHRINK
+    // Pulled in by a fixed number of pixels at its own depth: at a silhouette, where the normal
+    // lies in the screen plane, the shrunk outline sits that far inside the real one, which is
+    // where the halo strokes must stay visible.
+    float len = length(v_view_normal);
+    if (len > 0.0) view.xyz -= v_view_normal / len * (u_shrink * max(-view.z, 0.0));
+#endif
+    v_view_pos = view.xyz;
     v_color = a_color.rgb;
     v_smooth = a_params.z;
     gl_Position = u_proj * view;

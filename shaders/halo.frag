@@ -80,6 +80,6 @@ void main() {
     float line_inv = mix(g_inv_depth.x, g_inv_depth.y, t);
     if (halo.g > line_inv * 1.02) ink *= 1.0 - clamp(halo.r, 0.0, 1.0);
     if (ink <= 0.01) discard;
-    o_color = vec4(u_ink, ink);
+    o_color = vec4(mix(vec3(1.0), u_ink, ink), 1.0);  // MIN blended
 #endif
 }

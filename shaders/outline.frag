@@ -41,5 +41,5 @@ void main() {
     }
     cover *= clamp(0.5 - outside_ends, 0.0, 1.0);
     if (cover <= 0.0) discard;
-    o_color = vec4(u_ink, cover);
+    o_color = vec4(mix(vec3(1.0), u_ink, cover), 1.0);  // MIN blended onto the fill
 }

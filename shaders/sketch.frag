@@ -83,6 +83,6 @@ void main() {
 #ifdef MASK_MODE
     o_color = vec4(1.0);
 #else
-    o_color = vec4(u_ink, 1.0 - keep);
+    o_color = vec4(mix(vec3(1.0), u_ink, 1.0 - keep), 1.0);  // MIN blended onto the paper
 #endif
 }

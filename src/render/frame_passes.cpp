@@ -18,11 +18,29 @@ void lines_counted(const PassContext& ctx) {
     ctx.stats->feature_edges = static_cast<std::size_t>(prims / 2);  // two triangles per quad
 }
 
+// The edge buffer filled completely: grown and filled again when a frame appended more
+// records than it held (the mask must miss nothing; frames grow it for the next one).
+void edges_complete(const PassContext& ctx) {
+    pass_edges(ctx);
+    if (const std::size_t n = ctx.edges.appended(); n > ctx.edges.capacity()) {
+        ctx.edges.reserve(n);
+        pass_edges(ctx);
+    }
+}
+
+void sketch_strokes(const PassContext& ctx) { pass_sketch(ctx, false); }
+void sketch_mask(const PassContext& ctx) { pass_sketch(ctx, true); }
+
 void outline_baseline(const PassContext& ctx) { pass_image_outline(ctx, false); }
 void lines_mask(const PassContext& ctx) { pass_lines(ctx, true); }
 void outline_mask(const PassContext& ctx) { pass_image_outline(ctx, true); }
 
 }  // namespace
+
+bool style_needs_edge_buffer(const StyleDef& style) {
+    return style.lines == LinePass::outline || style.lines == LinePass::sketch ||
+           style.lines == LinePass::halo;
+}
 
 std::vector<FramePass> frame_passes(const StyleDef& style, const RenderSettings& settings) {
     std::vector<FramePass> list;
@@ -42,13 +60,18 @@ std::vector<FramePass> frame_passes(const StyleDef& style, const RenderSettings&
         return list;
     }
     list.push_back({"fill", pass_fill});
-    // The stroke passes on the edge buffer follow (outline, strokes, halo).
+    // Strokes are drawn from the edge buffer: the edges pass appends every visible feature edge.
+    if (style_needs_edge_buffer(style)) list.push_back({"edges", pass_edges});
     switch (style.lines) {
         case LinePass::outline:
+            list.push_back({"outline", pass_outline});
+            break;
         case LinePass::sketch:
+            list.push_back({"strokes", sketch_strokes});
             break;
         case LinePass::halo:
             list.push_back({"shrunk", pass_shrunk_depth});
+            list.push_back({"halo", pass_halo});
             break;
         case LinePass::beam:
             list.push_back({"lines", lines_counted});
@@ -62,6 +85,8 @@ std::vector<FramePass> frame_passes(const StyleDef& style, const RenderSettings&
 std::vector<FramePass> mask_passes(const StyleDef& style, const RenderSettings& settings) {
     if (style.fill == FillPass::none && settings.method == LineMethod::image_outline)
         return {{"prepass", pass_outline_prepass}, {"outline", outline_mask}};
+    if (style.lines == LinePass::sketch)
+        return {{"prepass", pass_prepass}, {"edges", edges_complete}, {"strokes", sketch_mask}};
     return {{"prepass", pass_prepass}, {"lines", lines_mask}};
 }
 

@@ -12,6 +12,9 @@ struct FramePass {
     void (*run)(const PassContext& ctx);
 };
 
+// Whether the style's passes read the edge buffer (the mesh cache then builds edge lists).
+bool style_needs_edge_buffer(const StyleDef& style);
+
 std::vector<FramePass> frame_passes(const StyleDef& style, const RenderSettings& settings);
 
 // The passes that draw the 1-pixel accuracy mask into targets.mask (untimed). Styles that draw

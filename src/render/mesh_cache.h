@@ -25,7 +25,11 @@ struct InstanceData {
 
 struct GpuMesh {
     gl::Buffer positions;
-    gl::Buffer normals;       // smooth vertex normals (geo::vertex_normals)
+    gl::Buffer vertex_normals;  // smooth vertex normals (geo::vertex_normals)
+    // Styles with strokes and LineMethod::compute (MeshCache::set_edge_lists): the unique edge
+    // list (geo::MeshEdge, binding kEdgeListBinding) the edge extraction reads.
+    gl::Buffer edge_list;
+    GLuint edge_count = 0;
     gl::Buffer adjacency;
     gl::Buffer triangles;
     gl::Buffer edge_cosines;  // 3 per triangle, read by the geometry shader (binding 0)
@@ -47,6 +51,9 @@ public:
     const GpuMesh& get(const scene::MeshLibrary& library, scene::MeshId id, int lod = 0);
     // GPU meshes uploaded so far (each model once, plus its simplified version if used).
     std::size_t uploads() const { return uploads_; }
+    // Build each mesh's edge list too. Turning it on drops the meshes uploaded without one, so
+    // they are uploaded again on their next use.
+    void set_edge_lists(bool on);
 
 private:
     struct Slot {
@@ -58,6 +65,7 @@ private:
     const gl::Buffer* instances_;
     std::vector<Slot> meshes_;
     std::size_t uploads_ = 0;
+    bool edge_lists_ = false;
 };
 
 }  // namespace bz::render

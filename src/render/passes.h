@@ -7,6 +7,7 @@
 #include "gl/state.h"
 #include "gl/vertex_array.h"
 #include "render/batches.h"
+#include "render/edge_storage.h"
 #include "render/programs.h"
 #include "render/styles/style_def.h"
 #include "render/styles/style_textures.h"
@@ -25,6 +26,7 @@ struct PassContext {
     bool occlusion;                       // false in the arcade style
     const gl::VertexArray& empty_vao;     // for full-screen triangles
     const gl::Buffer& instances;          // the frame's InstanceData, also read as an SSBO
+    EdgeStorage& edges;                   // the edge buffer (LineMethod::compute)
     const StyleDef& style;                // what the frame looks like (render/styles/)
     const StyleTextures& style_textures;  // noise and stroke profiles
     const gl::VertexArray& hud_vao;
@@ -44,6 +46,8 @@ double depth_clear_value(const PassContext& ctx);
 void draw_batch_triangles(const PassContext& ctx, gl::PipelineState state, bool occluders_only);
 // mask_mode: draw the 1-pixel visible-spine mask into targets.mask instead of shaded lines.
 void pass_lines(const PassContext& ctx, bool mask_mode);
+void set_line_uniforms(const gl::Program& program, const PassContext& ctx, float half_width);
+void pass_edges(const PassContext& ctx);
 void pass_hud(const PassContext& ctx);
 void pass_bloom(const PassContext& ctx);
 void pass_composite(const PassContext& ctx);

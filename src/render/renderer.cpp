@@ -17,6 +17,7 @@ struct Renderer::Impl {
     StyleTextures style_textures = make_style_textures();
     gl::Buffer instances;
     MeshCache gpu_meshes{instances};
+    EdgeStorage edges;
     gl::VertexArray empty_vao;
     gl::Buffer hud_vertices;
     gl::VertexArray hud_vao;
@@ -42,10 +43,11 @@ struct Renderer::Impl {
     PassContext context(const scene::MeshLibrary& meshes, const FrameBatches& batches,
                         const CameraMatrices& cam, const StyleDef& style, GLsizei hud_count,
                         GLuint target) {
-        return PassContext{programs,  targets,   gpu_meshes, meshes,         batches,
-                           cam,       settings,  style.hidden_lines_removed, empty_vao,
-                           instances, style,     style_textures,             hud_vao,
-                           hud_count, target,    &stats,     edge_query};
+        return PassContext{programs,  targets,  gpu_meshes, meshes,
+                           batches,   cam,      settings,   style.hidden_lines_removed,
+                           empty_vao, instances, edges,     style,
+                           style_textures, hud_vao, hud_count, target,
+                           &stats,    edge_query};
     }
 
     CameraMatrices camera(const scene::FrameList& frame) const {
@@ -108,12 +110,13 @@ void Renderer::render(const scene::FrameList& frame, const scene::MeshLibrary& m
                       unsigned target_fbo) {
     Impl& m = *impl_;
     const CameraMatrices cam = m.camera(frame);
+    const StyleDef& style = m.style_of(frame);
+    m.gpu_meshes.set_edge_lists(style_needs_edge_buffer(style));
     const FrameBatches batches = m.prepare(frame, meshes, cam);
     const GLsizei hud_count = m.upload_hud(frame.hud);
     m.stats = batches.stats;
     const GLuint target = target_fbo == kOffscreen ? m.targets.output_fbo.id() : target_fbo;
     m.last_target = target;
-    const StyleDef& style = m.style_of(frame);
     const PassContext ctx = m.context(meshes, batches, cam, style, hud_count, target);
 
     // The frame is the style's list of passes (frame_passes.cpp), each timed under its name.
@@ -130,8 +133,9 @@ std::vector<std::uint8_t> Renderer::render_mask(const scene::FrameList& frame,
                                                 const scene::MeshLibrary& meshes) {
     Impl& m = *impl_;
     const CameraMatrices cam = m.camera(frame);
-    const FrameBatches batches = m.prepare(frame, meshes, cam);
     const StyleDef& style = m.style_of(frame);
+    m.gpu_meshes.set_edge_lists(style_needs_edge_buffer(style));
+    const FrameBatches batches = m.prepare(frame, meshes, cam);
     const PassContext ctx = m.context(meshes, batches, cam, style, 0, m.targets.output_fbo.id());
     for (const FramePass& pass : mask_passes(style, m.settings)) pass.run(ctx);
     std::vector<std::uint8_t> rows(static_cast<std::size_t>(m.width) * m.height);

@@ -73,7 +73,9 @@ void pass_shrunk_depth(const PassContext& ctx) {
     const gl::Program& p = ctx.programs.shrunk_depth;
     p.use();
     p.set("u_proj", ctx.cam.proj);
-    p.set("u_shrink", ctx.style.halo.shrink);
+    // Pixels to view-space distance per unit of depth: 2 / (height * P[1][1]).
+    p.set("u_shrink", ctx.style.halo.shrink_px * 2.0f /
+                          (static_cast<float>(ctx.targets.height) * ctx.cam.proj[1][1]));
     draw_fill_batches(ctx, state, true);
 }
 

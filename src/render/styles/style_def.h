@@ -46,10 +46,10 @@ struct SketchParams {
 struct HaloParams {
     float inner_px = 2.0f;      // the stroke reaches this far inside the silhouette
     float outer_px = 2.5f;      // ... and this far outside
-    float halo_px = 9.0f;       // the soft halo's reach outside
+    float halo_px = 12.0f;      // the soft halo's reach outside
     int strokes_per_edge = 3;   // strokes in one pass, each with its own offset
-    float shrink = 0.02f;       // depth mask: the mesh shrunk along its normals, by this
-                                // fraction of its bounding radius
+    float shrink_px = 3.0f;     // depth mask: the mesh shrunk along its normals by this many
+                                // pixels (at each vertex's depth)
     bool cubic_smoothing = true;  // bend each silhouette edge to meet the vertex normals
 };
 

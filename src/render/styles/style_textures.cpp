@@ -1,5 +1,6 @@
 #include "render/styles/style_textures.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/rng.h"
@@ -36,8 +37,9 @@ std::vector<float> halo_profile_texels(int width, int rows) {
             const double x = (i + 0.5) / width;  // 0 inner edge .. 1 outer edge
             const double d = std::abs(x - 0.5) * 2.0;
             const double ink = d < core ? 1.0 : std::max(0.0, 1.0 - (d - core) / (1.0 - core));
-            // The halo: strongest at the stroke, fading smoothly to nothing.
-            const double halo = std::exp(-3.0 * x * x);
+            // The halo: full next to the stroke, fading smoothly to nothing at its reach.
+            const double fade = std::clamp((x - 0.5) / 0.5, 0.0, 1.0);
+            const double halo = 1.0 - fade * fade * (3.0 - 2.0 * fade);
             const std::size_t k = (static_cast<std::size_t>(row) * width + i) * 2;
             v[k] = static_cast<float>(ink * ink * (3.0 - 2.0 * ink));
             v[k + 1] = static_cast<float>(halo);
