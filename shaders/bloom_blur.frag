@@ -3,9 +3,13 @@
 // texels returns their weighted sum through the bilinear filter, halving the fetch count.
 // The kernel arrives as compile-time constants (BLOOM_FETCHES, BLOOM_OFFSETS, BLOOM_WEIGHTS):
 // on llvmpipe a loop over uniform arrays costs three times as much as the unrolled constants.
+// The last direction writes the encoded 8-bit image the composite reads (u_encode).
+#include "bloom_encoding.glsl"
+
 in vec2 v_uv;
 uniform sampler2D u_source;
 uniform vec2 u_direction;  // (1,0) or (0,1)
+uniform bool u_encode;
 layout(location = 0) out vec4 o_color;
 
 const float kOffsets[BLOOM_FETCHES] = BLOOM_OFFSETS;
@@ -18,5 +22,5 @@ void main() {
         vec2 off = step_uv * kOffsets[i];
         sum += (texture(u_source, v_uv + off) + texture(u_source, v_uv - off)) * kWeights[i];
     }
-    o_color = sum;
+    o_color = u_encode ? vec4(encode_bloom(sum.rgb), 1.0) : sum;
 }

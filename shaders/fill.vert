@@ -5,7 +5,7 @@
 layout(location = 0) in vec3 a_position;
 layout(location = 1) in mat4 a_model_view;  // locations 1-4
 layout(location = 5) in vec4 a_color;
-layout(location = 6) in vec4 a_params;      // z: smooth shading, w: bounding radius
+layout(location = 6) in vec4 a_params;      // w: smooth shading
 layout(location = 7) in vec3 a_normal;
 
 uniform mat4 u_proj;
@@ -29,6 +29,6 @@ void main() {
 #endif
     v_view_pos = view.xyz;
     v_color = a_color.rgb;
-    v_smooth = a_params.z;
+    v_smooth = a_params.w;
     gl_Position = u_proj * view;
 }

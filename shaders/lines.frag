@@ -13,8 +13,7 @@ flat in vec3 g_face_pos;
 flat in vec3 g_face_neg;
 flat in vec2 g_nudge;
 flat in vec3 g_color;
-
-uniform float u_half_width;
+flat in vec3 g_beam;  // half-width (px), gain, softness (beam_width.glsl)
 
 layout(location = 0) out vec4 o_color;
 
@@ -44,8 +43,8 @@ void main() {
     o_color = vec4(1.0);
 #else
     float dist = distance(p, spine);
-    if (dist >= u_half_width) discard;
+    if (dist >= g_beam.x) discard;
     if (!spine_visible(spine, line_inv, g_edge_plane, g_face_pos, g_face_neg, g_nudge)) discard;
-    o_color = vec4(g_color * beam_profile(dist, u_half_width), 1.0);
+    o_color = vec4(g_color * (g_beam.y * beam_profile(dist, g_beam.x, g_beam.z)), 1.0);
 #endif
 }

@@ -2,6 +2,8 @@
 // Finds silhouette, crease and boundary edges of each triangle (GL_TRIANGLES_ADJACENCY:
 // triangle 0-2-4, neighbour vertices 1, 3, 5) and extrudes each visible edge into a
 // screen-space quad of constant pixel half-width, extended at both ends for round caps.
+#include "beam_width.glsl"
+
 layout(triangles_adjacency) in;
 layout(triangle_strip, max_vertices = 12) out;
 
@@ -16,7 +18,8 @@ in VertexData {
 layout(std430, binding = 0) readonly buffer EdgeCosines { float edge_cos[]; };
 
 // The frame's per-instance data (render::InstanceData): 6 vec4 each, the model-view matrix in
-// the first four, then colour (rgb * intensity), then parameters (x: cos(crease angle)).
+// the first four, then colour (rgb * intensity), then parameters (x: cos(crease angle),
+// z: intensity).
 layout(std430, binding = 1) readonly buffer Instances { vec4 instance_data[]; };
 vec4 instance_color(uint i) { return instance_data[i * 6u + 4u]; }
 vec4 instance_params(uint i) { return instance_data[i * 6u + 5u]; }
@@ -29,7 +32,6 @@ uniform int u_edges_to_test;  // always 3; a uniform bound stops the compiler un
 
 uniform mat4 u_proj;
 uniform vec2 u_viewport;       // pixels
-uniform float u_half_width;    // pixels
 uniform float u_near;
 uniform float u_far;
 
@@ -43,6 +45,7 @@ flat out vec3 g_face_pos;        // plane of the face on the edge plane's positi
 flat out vec3 g_face_neg;        // ... negative side; all zero: compare with the spine's depth
 flat out vec2 g_nudge;           // pixel offset that moves a silhouette sample off its own face
 flat out vec3 g_color;
+flat out vec3 g_beam;            // half-width (px), gain, softness (beam_width.glsl)
 
 const float kGuard = 2.0;  // lateral guard band: clip to twice the view frustum
 
@@ -111,7 +114,10 @@ void emit_edge(int i0, int i1, int kind, vec3 face, vec3 other, vec3 opp) {
     float len = length(d);
     vec2 dir = len > 1e-6 ? d / len : vec2(1.0, 0.0);
     vec2 nrm = vec2(-dir.y, dir.x);
-    float h = u_half_width;
+    uint instance = v_in[0].instance;
+    BeamShape beam = beam_shape(instance_params(instance).z, len,
+                                (instance * 0x01000193u) ^ uint(gl_PrimitiveIDIn * 3 + i0 / 2));
+    float h = beam.half_width;
 
     g_edge_plane = m;
     g_face_pos = kind == 1 ? vec3(0.0) : face;
@@ -124,7 +130,8 @@ void emit_edge(int i0, int i1, int kind, vec3 face, vec3 other, vec3 opp) {
     g_p0 = s0;
     g_p1 = s1;
     g_inv_depth = vec2(1.0 / ca.w, 1.0 / cb.w);
-    g_color = instance_color(v_in[0].instance).rgb;
+    g_color = instance_color(instance).rgb;
+    g_beam = vec3(beam.half_width, beam.gain, beam.softness);
     vec2 corners[4] = vec2[4](s0 - dir * h - nrm * h, s0 - dir * h + nrm * h,
                               s1 + dir * h - nrm * h, s1 + dir * h + nrm * h);
     for (int k = 0; k < 4; ++k) {

@@ -21,16 +21,19 @@ glm::dvec3 parse_vec3(std::string_view option, std::string_view text);  // "x,y,
 glm::ivec2 parse_size(std::string_view option, std::string_view text);  // "WxH"
 scene::Style parse_style(std::string_view option, std::string_view text);  // a style name
 
-// Walks argv: `next_value()` takes the value of the current option or throws UsageError.
+// Whether a command-line word is an option name ("--out", "-h") rather than a value; a
+// negative number ("-2", "-0.5,1,0") is a value.
+bool looks_like_option(std::string_view word);
+
+// Walks argv: `value()` takes the value of the current option or throws UsageError. A value
+// that is missing, empty or another option is refused, so `--mask --out x` cannot write a
+// file named "--out".
 class ArgCursor {
 public:
     ArgCursor(int count, char* const* args) : count_(count), args_(args) {}
     bool done() const { return index_ >= count_; }
     std::string_view next() { return args_[index_++]; }
-    std::string_view value(std::string_view option) {
-        if (done()) throw UsageError(std::string(option) + " needs a value");
-        return next();
-    }
+    std::string_view value(std::string_view option);
 
 private:
     int count_;

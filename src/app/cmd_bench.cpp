@@ -5,6 +5,9 @@
 #include <filesystem>
 #include <string>
 
+#include "app/bench_accuracy.h"
+#include "core/output_path.h"
+#include "core/printable.h"
 #include "app/bench_plots.h"
 #include "app/bench_report.h"
 #include "app/bench_run.h"
@@ -30,6 +33,8 @@ constexpr const char* kUsage =
     "                      [--preset fast|balanced|high] [--style NAME] [--sweep | --scaling]\n"
     "                      [--out DIR] [--replay FILE] [--samples N] [--rounds N]\n"
     "                      [--timing auto|cpu|gpu]\n"
+    "       beamzone bench --accuracy [--models-dir DIR] [--model FILE]... [--size WxH]\n"
+    "                      [--frames N] [--out DIR] [--timing auto|cpu|gpu]\n"
     "Renders the level offscreen along its benchmark camera path ([[camera_key]]; without one\n"
     "the autopilot's own view), one simulation tick (1/60 s) per frame, so every machine draws\n"
     "the same frames. --replay FILE plays a recorded game instead, seen by the player.\n"
@@ -49,9 +54,16 @@ constexpr const char* kUsage =
     "Its timed frames run in --rounds stretches (default 4), round-robin over the\n"
     "configurations, so a machine whose load drifts treats them alike.\n"
     "--scaling draws the frames from meshes subdivided to 1x, 4x, 16x and 64x the triangles\n"
-    "and writes scaling.json and scaling.png (default 40 frames).\n";
+    "and writes scaling.json and scaling.png (default 40 frames).\n"
+    "--accuracy needs no LEVEL: it scores every preset and the baseline on real models\n"
+    "(default: 16 files under /usr/share/assimp/models; --model FILE, repeatable, relative to\n"
+    "--models-dir, replaces the list) from 4 views each (framed, behind, close, above) at\n"
+    "640x480 against the exact CPU reference (F1 at 1 px Chebyshev), times each view\n"
+    "(--frames, default 10) and writes accuracy.json, accuracy_tradeoff.png, masks/, diffs/\n"
+    "(red: drawn but hidden in the reference, cyan: missing) and reference-cache/ (exact\n"
+    "masks reused by later runs into the same --out).\n";
 
-enum class Mode { single, sweep, scaling };
+enum class Mode { single, sweep, scaling, accuracy };
 
 struct Options {
     std::string level;
@@ -67,6 +79,9 @@ struct Options {
     int samples = 6;
     int rounds = 4;
     std::string timing = "auto";
+    bool size_given = false;
+    std::string models_dir = "/usr/share/assimp/models";
+    std::vector<std::string> models;
 };
 
 Options parse(Args args) {
@@ -82,16 +97,23 @@ Options parse(Args args) {
             o.warmup = parse_int(a, cur.value(a), 0, 100000);
         } else if (a == "--size") {
             o.size = parse_size(a, cur.value(a));
+            o.size_given = true;
         } else if (a == "--preset") {
             o.preset = cur.value(a);
             preset_given = true;
         } else if (a == "--style") {
             o.style = parse_style(a, cur.value(a));
-        } else if (a == "--sweep" || a == "--scaling") {
-            const Mode m = a == "--sweep" ? Mode::sweep : Mode::scaling;
+        } else if (a == "--sweep" || a == "--scaling" || a == "--accuracy") {
+            const Mode m = a == "--sweep"     ? Mode::sweep
+                           : a == "--scaling" ? Mode::scaling
+                                              : Mode::accuracy;
             if (o.mode != Mode::single && o.mode != m)
-                throw UsageError("--sweep and --scaling exclude each other");
+                throw UsageError("--sweep, --scaling and --accuracy exclude each other");
             o.mode = m;
+        } else if (a == "--models-dir") {
+            o.models_dir = cur.value(a);
+        } else if (a == "--model") {
+            o.models.emplace_back(cur.value(a));
         } else if (a == "--out") {
             o.out = cur.value(a);
         } else if (a == "--replay") {
@@ -106,13 +128,23 @@ Options parse(Args args) {
                 throw UsageError("--timing: expected auto, cpu or gpu");
             }
         } else if (!a.empty() && a[0] == '-') {
-            throw UsageError("unknown option " + std::string(a));
+            throw UsageError("unknown option " + printable(a));
         } else if (o.level.empty()) {
             o.level = a;
         } else {
             throw UsageError("more than one LEVEL given");
         }
     }
+    if (o.mode == Mode::accuracy) {
+        if (!o.level.empty()) throw UsageError("--accuracy takes no LEVEL (it draws models)");
+        if (preset_given) throw UsageError("--preset and --accuracy exclude each other");
+        if (!o.replay.empty()) throw UsageError("--replay and --accuracy exclude each other");
+        if (!o.frames_given) o.frames = 10;
+        if (!o.size_given) o.size = {640, 480};
+        if (o.out.empty()) throw UsageError("--out needs a directory");
+        return o;
+    }
+    if (!o.models.empty()) throw UsageError("--model needs --accuracy");
     if (o.level.empty()) throw UsageError("no LEVEL given");
     if (preset_given && o.mode == Mode::sweep)
         throw UsageError("--preset and --sweep exclude each other (the sweep runs every preset)");
@@ -159,7 +191,64 @@ void write_text(const fs::path& p, const std::string& s) {
     write_file_atomic(p, s);
 }
 
+int run_accuracy_mode(const Options& o) {
+    std::error_code ec;
+    fs::create_directory(o.out, ec);  // the folder itself, never missing parents
+    if (ec) throw UserError(o.out + ": cannot create the output directory: " + ec.message());
+    auto context = make_headless_context();
+    const gl::TimingMethod timing = pick_timing(o.timing, *context);
+    std::unique_ptr<scene::VectorFont> font;
+    try {
+        font = std::make_unique<scene::VectorFont>(scene::VectorFont::load_default());
+    } catch (const UserError& e) {
+        std::fprintf(stderr, "beamzone bench: warning: plots without labels: %s\n", e.what());
+    }
+    AccuracyOptions ao;
+    ao.models_dir = o.models_dir;
+    for (const std::string& m : o.models) ao.models.push_back({m, "given with --model"});
+    ao.width = o.size.x;
+    ao.height = o.size.y;
+    ao.frames = o.frames;
+    ao.warmup = std::min(o.warmup, 2);
+    ao.out = o.out;
+    BenchMeta meta;
+    meta.level = "real models (" + o.models_dir + ")";
+    meta.camera = "framed, behind, close, above per model";
+    meta.width = o.size.x;
+    meta.height = o.size.y;
+    meta.frames = o.frames;
+    meta.warmup = ao.warmup;
+    meta.gl_renderer = context->renderer_name();
+    meta.software = context->is_software();
+    meta.timing = timing;
+    meta.load_before = load_average();
+    const AccuracyResult result = run_accuracy(ao, timing);
+    meta.load_after = load_average();
+    if (result.views.empty()) throw UserError("accuracy: no model could be loaded");
+    const std::vector<Goal> goals = judge_accuracy_goals(result);
+    const fs::path out(o.out);
+    write_text(out / "accuracy.json", accuracy_json(meta, ao, result, goals));
+    std::vector<TradeoffPoint> points;
+    for (const AccuracyRow& r : result.rows)
+        points.push_back({r.config.label, r.mean_p50_ms, r.mean_f1, r.min_f1});
+    plot_tradeoff(points,
+                  "speed vs accuracy, " + std::to_string(result.views.size()) +
+                      " views of real models",
+                  font.get(), out / "accuracy_tradeoff.png");
+    print_accuracy_table(stdout, result, goals, ao.tolerance_px);
+    std::printf("load average %.2f before, %.2f after\nwrote %s/\n", meta.load_before,
+                meta.load_after, o.out.c_str());
+    if (context->debug().error_count() > 0) {
+        std::fprintf(stderr, "beamzone bench: %d OpenGL error(s) reported\n",
+                     context->debug().error_count());
+        return 1;
+    }
+    return 0;
+}
+
 int run(const Options& o) {
+    check_output_dir("--out", o.out);
+    if (o.mode == Mode::accuracy) return run_accuracy_mode(o);
     level::LoadResult loaded = level::load_level_file(o.level);
     if (!loaded.ok()) {
         for (const level::Diagnostic& d : loaded.errors)
@@ -180,7 +269,7 @@ int run(const Options& o) {
     const BenchFrames frames = simulate(scene, o, aspect);
 
     std::error_code ec;
-    fs::create_directories(o.out, ec);
+    fs::create_directory(o.out, ec);  // the folder itself, never missing parents
     if (ec) throw UserError(o.out + ": cannot create the output directory: " + ec.message());
 
     auto context = make_headless_context();
@@ -212,7 +301,7 @@ int run(const Options& o) {
         SweepOptions so;
         so.samples = o.samples;
         so.masks_dir = out / "masks";
-        fs::create_directories(so.masks_dir, ec);
+        fs::create_directory(so.masks_dir, ec);
         if (ec) throw UserError(so.masks_dir.string() + ": cannot create: " + ec.message());
         so.rounds = o.rounds;
         const SweepResult result =

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <string>
 
+#include "core/printable.h"
 #include "app/cli_args.h"
 #include "app/commands.h"
 #include "app/parse_command.h"
@@ -36,13 +37,13 @@ Options parse(Args args) {
         if (a == "--tol") {
             o.tol = parse_int(a, cur.value(a), 0, 64);
         } else if (!a.empty() && a[0] == '-') {
-            throw UsageError("unknown option " + std::string(a));
+            throw UsageError("unknown option " + printable(a));
         } else if (o.test.empty()) {
             o.test = a;
         } else if (o.ref.empty()) {
             o.ref = a;
         } else {
-            throw UsageError("expected two images, got a third: " + std::string(a));
+            throw UsageError("expected two images, got a third: " + printable(a));
         }
     }
     if (o.ref.empty()) throw UsageError("need TEST.png and REF.png");

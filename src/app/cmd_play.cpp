@@ -1,5 +1,7 @@
 // `beamzone play`: the game in a window. Setup lives here; the frame loop is in play_loop.cpp
 // and what is simulated and drawn in play_sessions.cpp.
+#include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -12,9 +14,14 @@
 #include "app/play_loop.h"
 #include "app/play_options.h"
 #include "app/play_sessions.h"
+#include "app/replay_level.h"
 #include "core/error.h"
+#include "core/interrupt.h"
 #include "core/log.h"
+#include "core/output_path.h"
 #include "core/paths.h"
+#include "game/default_level.h"
+#include "game/replay.h"
 #include "level/loader.h"
 #include "platform/pref_paths.h"
 #include "render/settings.h"
@@ -22,6 +29,29 @@
 namespace bz::app {
 
 namespace {
+
+// The levels the title menu offers: the shipped ones, then the player's own (*.toml in the
+// pref folder's levels/), each list sorted by name.
+std::vector<menu::LevelChoice> find_levels(const std::filesystem::path& shipped,
+                                           const std::filesystem::path& user) {
+    std::vector<menu::LevelChoice> out;
+    for (const auto& [dir, mine] : {std::pair{shipped, false}, std::pair{user, true}}) {
+        std::error_code ec;
+        std::vector<std::filesystem::path> files;
+        for (const auto& e : std::filesystem::directory_iterator(dir, ec)) {
+            if (e.path().extension() == ".toml") files.push_back(e.path());
+        }
+        std::sort(files.begin(), files.end());
+        for (const auto& f : files) {
+            std::string name = f.stem().string();
+            for (char& c : name) {
+                c = c == '_' ? ' ' : static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+            }
+            out.push_back({name, f, mine});
+        }
+    }
+    return out;
+}
 
 bool offscreen_allowed(const PlayOptions& o) {
     const char* env = std::getenv("BEAMZONE_ALLOW_OFFSCREEN");
@@ -34,6 +64,14 @@ struct Play {
     Log& log;
 
     int run() {
+        if (!options.record.empty()) {
+            // Checked before anything starts, so a game is never played into a recording that
+            // cannot be saved or that would replace the level, a setting or a high score.
+            const std::filesystem::path inputs[] = {
+                options.level,   level::default_level_path(), paths.settings,
+                paths.high_scores, paths.log,                 paths.gamepad_db};
+            check_output_file("--record", options.record, kReplayOutput, inputs);
+        }
         log.info("settings: " + paths.settings.string());
         log.info("high scores: " + paths.high_scores.string());
         log.info("log: " + paths.log.string());
@@ -56,13 +94,27 @@ struct Play {
         look.settings_style_given = loaded.style_given || !loaded.file_existed;
         if (loaded.preset_given || !loaded.file_existed) look.settings_preset = settings.preset;
 
+        // A replay names its level: without a LEVEL argument, play it on that one (the
+        // built-in level included), as `replay --verify` does.
+        std::string level_arg = options.level;
+        bool replay_on_builtin = false;
+        if (level_arg.empty() && !options.replay.empty()) {
+            const std::string recorded = game::replay::load(options.replay).header.level;
+            if (recorded == game::kBuiltinLevelName) {
+                replay_on_builtin = true;
+            } else {
+                level_arg = replay_level_path(recorded, options.replay).string();
+            }
+        }
+
         // The level before the window, so a broken level file fails fast and plainly.
         std::unique_ptr<level::LevelWatcher> watcher;
-        const std::filesystem::path level_path = options.level.empty()
+        const std::filesystem::path level_path = level_arg.empty()
                                                      ? level::default_level_path()
-                                                     : std::filesystem::path(options.level);
+                                                     : std::filesystem::path(level_arg);
         std::error_code ec;
-        if (!options.level.empty() || std::filesystem::exists(level_path, ec)) {
+        if (!replay_on_builtin &&
+            (!level_arg.empty() || std::filesystem::exists(level_path, ec))) {
             watcher = std::make_unique<level::LevelWatcher>(level_path);
             if (!watcher->current()) {
                 for (const auto& line : format_diagnostics(watcher->errors())) {
@@ -74,6 +126,8 @@ struct Play {
                 return 1;
             }
             log.info("level: " + level_path.string() + " (edits reload while playing)");
+        } else if (replay_on_builtin) {
+            log.info("the replay was recorded on the built-in level; playing it there");
         } else {
             log.info("no " + level_path.string() + "; playing the built-in level");
         }
@@ -103,7 +157,7 @@ struct Play {
                      " is not available; using " + std::string(platform::vsync_name(vsync)));
         }
 
-        auto choose = [look](const level::Level* current) { return choose_look(look, current); };
+        auto choose = [&look](const level::Level* current) { return choose_look(look, current); };
         auto make_renderer = [](const render::RenderSettings& r, int w, int h) {
             return std::make_unique<render::Renderer>(r, w, h, gl::TimingMethod::off);
         };
@@ -123,18 +177,37 @@ struct Play {
         so.high_scores = paths.high_scores;
         so.pause_on_focus_loss = settings.pause_on_focus_loss;
         so.font = &font;
+        so.hints = screen_hints(settings.keys);
         std::unique_ptr<PlaySession> session =
             options.edit ? make_edit_session(so, log) : make_game_session(so, log);
+
+        for (const std::string& notice : session->take_notices()) overlay.notify(notice, 10.0);
 
         LoopConfig config;
         config.frames = options.frames;
         config.screenshot_at = options.screenshot_at;
         config.edit = options.edit;
         config.screenshots = paths.screenshots;
-        LoopParts parts{context,  choose,        make_renderer, audio, input,
-                        gamepads, watcher.get(), overlay,       log,   settings};
+        for (const auto& [frame, key] : options.presses) config.presses.push_back({frame, key});
+        LoopParts parts{context, choose,  make_renderer, audio,    input, gamepads, watcher.get(),
+                        overlay, log,     settings,      font,     {},    {},       nullptr,
+                        {},      {}};
+        // From here on a signal ends the loop, and what must be saved is saved below.
+        stop_gracefully_on_signal();
+        parts.presets = render::preset_names();
+        parts.levels = find_levels(level::default_level_path().parent_path(), paths.levels);
+        parts.look_sources = &look;
+        parts.settings_errors = loaded.errors;
+        // The menus save at once; never over a file that did not load cleanly.
+        parts.save_settings = [this, &loaded](const platform::Settings& s) -> std::string {
+            if (!loaded.may_save()) {
+                return "NOT SAVED: SETTINGS.TOML HAS ERRORS TO FIX FIRST (SEE THE LOG)";
+            }
+            return save(s) ? std::string() : "NOT SAVED: SEE THE LOG";
+        };
         const LoopResult result = run_play_loop(*session, parts, config);
-        session.reset();  // flushes a recording before we report
+        const bool saved = session->save_on_exit();  // before we report
+        session.reset();
 
         if (result.settings_changed) {
             if (loaded.may_save()) {
@@ -148,14 +221,20 @@ struct Play {
             std::printf("play: %d frames, %d ticks, %d GL errors\n", result.frames, result.ticks,
                         result.gl_errors);
         }
-        return result.gl_errors > 0 || result.session_failed ? 1 : 0;
+        if (interrupt_requested()) {
+            // Asked to quit, the game quit cleanly, as when its window is closed.
+            log.info("stopped by a signal; what needed saving was saved");
+        }
+        return result.gl_errors > 0 || result.session_failed || !saved ? 1 : 0;
     }
 
-    void save(const platform::Settings& s) {
+    bool save(const platform::Settings& s) {
         try {
             platform::save_settings(paths.settings, s);
+            return true;
         } catch (const UserError& e) {
             log.warn(std::string("cannot save settings: ") + e.what());
+            return false;
         }
     }
 };

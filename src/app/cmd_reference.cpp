@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <string>
 
+#include "core/output_path.h"
+#include "core/printable.h"
 #include "app/bench_scene.h"
 #include "app/camera_args.h"
 #include "app/cli_args.h"
@@ -62,7 +64,7 @@ Options parse(Args args) {
         } else if (a == "--style") {
             o.style = parse_style(a, cur.value(a));
         } else if (!a.empty() && a[0] == '-') {
-            throw UsageError("unknown option " + std::string(a));
+            throw UsageError("unknown option " + printable(a));
         } else if (o.input.empty()) {
             o.input = a;
         } else {
@@ -141,6 +143,8 @@ int cmd_reference(Args args) {
     const std::optional<Options> parsed = parse_command("reference", args, kUsage, parse, &exit_code);
     if (!parsed) return exit_code;
     const Options& o = *parsed;
+    const std::filesystem::path inputs[] = {o.input, o.level};
+    check_output_file("--mask", o.mask, kPngOutput, inputs);
     return run(o);
 }
 

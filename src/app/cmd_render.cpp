@@ -2,6 +2,8 @@
 #include <cstdio>
 #include <string>
 
+#include "core/output_path.h"
+#include "core/printable.h"
 #include "app/camera_args.h"
 #include "app/cli_args.h"
 #include "app/commands.h"
@@ -25,7 +27,7 @@ constexpr const char* kUsage =
     "                       [--near N] [--far F] [--size WxH] [--preset fast|balanced|high]\n"
     "                       [--style NAME] [--shading flat|smooth] [--no-smoothing]\n"
     "                       [--color r,g,b] [--out frame.png]\n"
-    "                       [--mask mask.png] [--repeat N] [--copies N]\n"
+    "                       [--mask mask.png] [--repeat N] [--copies N] [--beam classic|mame]\n"
     "Renders a model file (or builtin:cube, builtin:sphere, builtin:grid) headless to PNG. Without --eye the camera frames the model's bounding\n"
     "box from a 3/4 view. --mask writes the 1-pixel visible-spine mask (255 = line).\n"
     "--style: vector (default), vector-xray, toon, sketch, pop-art or halo (occluded and arcade\n"
@@ -33,7 +35,8 @@ constexpr const char* kUsage =
     "--no-smoothing: the halo style's silhouettes stay polygonal (no cubic smoothing).\n"
     "--repeat N renders N timed frames and prints the mean milliseconds of each pass.\n"
     "--copies N draws N instances of the model on a square grid in the xz plane (a scene of a\n"
-    "chosen size for timing; the camera frames them all).\n";
+    "chosen size for timing; the camera frames them all).\n"
+    "--beam picks the vector beam's look (default classic; `play` defaults to mame).\n";
 
 struct RenderOptions {
     std::string input;
@@ -47,6 +50,7 @@ struct RenderOptions {
     std::string mask;
     int repeat = 0;
     int copies = 1;
+    std::string beam = "classic";
 };
 
 RenderOptions parse(Args args) {
@@ -61,6 +65,7 @@ RenderOptions parse(Args args) {
         else if (a == "--mask") o.mask = cur.value(a);
         else if (a == "--repeat") o.repeat = parse_int(a, cur.value(a), 1, 100000);
         else if (a == "--copies") o.copies = parse_int(a, cur.value(a), 1, 100000);
+        else if (a == "--beam") o.beam = cur.value(a);
         else if (a == "--style") {
             o.style = parse_style(a, cur.value(a));
         } else if (a == "--no-smoothing") {
@@ -70,7 +75,7 @@ RenderOptions parse(Args args) {
             if (s != "flat" && s != "smooth") throw UsageError("--shading: expected flat or smooth");
             o.smooth = s == "smooth";
         } else if (!a.empty() && a[0] == '-') {
-            throw UsageError("unknown option " + std::string(a));
+            throw UsageError("unknown option " + printable(a));
         } else if (o.input.empty()) {
             o.input = a;
         } else {
@@ -78,6 +83,7 @@ RenderOptions parse(Args args) {
         }
     }
     if (o.input.empty()) throw UsageError("no INPUT model given");
+    if (o.out == o.mask) throw UsageError("--out and --mask name the same file");
     validate_camera(o.camera);
     return o;
 }
@@ -124,6 +130,7 @@ int cmd_render(Args args) {
         RenderOptions parsed = parse(a);
         try {
             settings = render::preset(parsed.preset);
+            settings.beam = render::beam_look(parsed.beam);
         } catch (const UserError& e) {
             throw UsageError(e.what());  // an unknown preset name is a usage error
         }
@@ -132,6 +139,9 @@ int cmd_render(Args args) {
     const std::optional<RenderOptions> parsed = parse_command("render", args, kUsage, parse_checked, &exit_code);
     if (!parsed) return exit_code;
     const RenderOptions& o = *parsed;
+    const std::filesystem::path inputs[] = {o.input};
+    check_output_file("--out", o.out, kPngOutput, inputs);
+    if (!o.mask.empty()) check_output_file("--mask", o.mask, kPngOutput, inputs);
     limit_memory_for_untrusted_input();
     geo::MeshReport report;
     geo::AdjacencyMesh mesh = geo::build_line_mesh(load_model_source(o.input), &report);

@@ -6,9 +6,12 @@
 #include <filesystem>
 #include <string>
 
+#include "core/output_path.h"
+#include "core/printable.h"
 #include "app/cli_args.h"
 #include "app/commands.h"
 #include "app/parse_command.h"
+#include "app/replay_level.h"
 #include "core/error.h"
 #include "core/paths.h"
 #include "game/assets.h"
@@ -54,7 +57,7 @@ Options parse(Args args) {
         } else if (a == "--seed") {
             o.seed = static_cast<std::uint64_t>(parse_int(a, cur.value(a), 0, 2147483647));
         } else if (!a.empty() && a[0] == '-') {
-            throw UsageError("unknown option " + std::string(a));
+            throw UsageError("unknown option " + printable(a));
         } else if (o.file.empty()) {
             o.file = a;
         } else {
@@ -65,17 +68,6 @@ Options parse(Args args) {
     if (o.verify && o.record_seconds > 0)
         throw UsageError("--verify and --record-demo exclude each other");
     return o;
-}
-
-// A relative level path is tried as given, then next to the replay, then under the project.
-fs::path find_level(const std::string& recorded, const fs::path& replay_file) {
-    const fs::path p(recorded);
-    std::error_code ec;
-    if (p.is_absolute() || fs::exists(p, ec)) return p;
-    for (const fs::path& base : {replay_file.parent_path(), project_root()}) {
-        if (fs::exists(base / p, ec)) return base / p;
-    }
-    return p;
 }
 
 std::string hex(std::uint64_t v) {
@@ -96,6 +88,8 @@ level::Level load_level_or_report(const fs::path& path, bool& ok) {
 }
 
 int record_demo(const Options& o) {
+    const fs::path inputs[] = {o.level};
+    check_output_file("replay --record-demo", o.file, kReplayOutput, inputs);
     level::Level lv = game::default_level();
     std::string name = game::kBuiltinLevelName;
     if (!o.level.empty()) {
@@ -138,7 +132,7 @@ int run(const Options& o) {
         lv = game::default_level();
         level_label = h.level;
     } else {
-        const fs::path path = o.level.empty() ? find_level(h.level, o.file) : fs::path(o.level);
+        const fs::path path = o.level.empty() ? replay_level_path(h.level, o.file) : fs::path(o.level);
         bool ok = false;
         lv = load_level_or_report(path, ok);
         if (!ok) {

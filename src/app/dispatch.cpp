@@ -5,6 +5,7 @@
 
 #include "app/commands.h"
 #include "core/error.h"
+#include "core/interrupt.h"
 
 namespace bz::app {
 
@@ -34,6 +35,7 @@ void print_usage(std::FILE* out) {
 std::span<const Command> commands() { return kCommands; }
 
 int dispatch(int argc, char** argv) {
+    install_interrupt_handlers();  // before anything starts SDL (see core/interrupt.h)
     if (argc < 2) {
         print_usage(stderr);
         return 2;

@@ -6,6 +6,7 @@
 #include <memory>
 #include <string>
 
+#include "app/menu/play_menus.h"
 #include "app/play_look.h"
 #include "app/play_overlay.h"
 #include "app/play_session.h"
@@ -20,11 +21,19 @@
 
 namespace bz::app {
 
+// A key tapped by a script (--press): pressed and released before frame `frame` (1-based),
+// through SDL's own event queue, so it takes the path a real key takes.
+struct ScriptedKey {
+    int frame = 1;
+    platform::KeyBinding key;
+};
+
 struct LoopConfig {
     int frames = 0;         // > 0: stop after this many frames, each exactly one tick long
     int screenshot_at = 0;  // > 0: take a screenshot on this frame (1-based)
     bool edit = false;      // free-fly camera controls instead of tank controls
     std::filesystem::path screenshots;
+    std::vector<ScriptedKey> presses;
 };
 
 struct LoopParts {
@@ -45,6 +54,14 @@ struct LoopParts {
     PlayOverlay& overlay;
     Log& log;
     platform::Settings& settings;  // volume, mute and fullscreen changes are written back here
+    const scene::VectorFont& font;
+    // For the menus: the renderer's presets, the levels to choose from, where their preset and
+    // style choices go, and how settings are saved (returns "" when saved, else why not).
+    std::vector<std::string> presets;
+    std::vector<menu::LevelChoice> levels;
+    LookSources* look_sources = nullptr;
+    std::function<std::string(const platform::Settings&)> save_settings;
+    std::vector<std::string> settings_errors;  // shown on screen for a while at the start
 };
 
 struct LoopResult {

@@ -4,6 +4,7 @@
 #include <charconv>
 
 #include "app/cli_args.h"
+#include "core/printable.h"
 #include "platform/settings.h"
 #include "render/settings.h"
 
@@ -16,10 +17,32 @@ std::uint64_t parse_seed(std::string_view option, std::string_view text) {
     const char* end = text.data() + text.size();
     const auto r = std::from_chars(text.data(), end, v);
     if (text.empty() || r.ec != std::errc{} || r.ptr != end) {
-        throw UsageError(std::string(option) + ": '" + std::string(text) +
+        throw UsageError(std::string(option) + ": '" + printable(text) +
                          "' is not a whole number from 0 to 18446744073709551615");
     }
     return v;
+}
+
+// "30:Down,31:Return,90:Alt+Return": frame numbers from 1, keys as the settings file names them.
+std::vector<std::pair<int, platform::KeyBinding>> parse_presses(std::string_view option,
+                                                                std::string_view text) {
+    std::vector<std::pair<int, platform::KeyBinding>> out;
+    while (!text.empty()) {
+        const std::size_t comma = text.find(',');
+        const std::string_view item = text.substr(0, comma);
+        text = comma == std::string_view::npos ? std::string_view() : text.substr(comma + 1);
+        const std::size_t colon = item.find(':');
+        if (colon == std::string_view::npos) {
+            throw UsageError(std::string(option) + ": '" + std::string(item) +
+                             "' is not FRAME:KEY (e.g. 30:Return)");
+        }
+        const int frame = parse_int(option, item.substr(0, colon), 1, 100000000);
+        std::string why;
+        const auto key = platform::parse_key(item.substr(colon + 1), &why);
+        if (!key) throw UsageError(std::string(option) + ": " + why);
+        out.emplace_back(frame, *key);
+    }
+    return out;
 }
 
 }  // namespace
@@ -39,13 +62,13 @@ PlayOptions parse_play_options(int argc, char* const* argv) {
             if (std::find(names.begin(), names.end(), p) == names.end()) {
                 std::string list;
                 for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
-                throw UsageError("--preset: expected one of " + list + ", not '" + p + "'");
+                throw UsageError("--preset: expected one of " + list + ", not '" + printable(p) + "'");
             }
             o.preset = p;
         } else if (a == "--style") {
             const std::string s(cur.value(a));
             if (!scene::style_from_name(s)) {
-                throw UsageError("--style: expected " + scene::style_name_list() + ", not '" + s + "'");
+                throw UsageError("--style: expected " + scene::style_name_list() + ", not '" + printable(s) + "'");
             }
             o.style = s;
         } else if (a == "--windowed") {
@@ -56,7 +79,7 @@ PlayOptions parse_play_options(int argc, char* const* argv) {
             const std::string_view v = cur.value(a);
             platform::Vsync mode{};
             if (!platform::parse_vsync(v, &mode)) {
-                throw UsageError("--vsync: expected off, on or adaptive, not '" + std::string(v) +
+                throw UsageError("--vsync: expected off, on or adaptive, not '" + printable(v) +
                                  "'");
             }
             o.vsync = mode;
@@ -72,10 +95,13 @@ PlayOptions parse_play_options(int argc, char* const* argv) {
             o.frames = parse_int(a, cur.value(a), 1, 100000000);
         } else if (a == "--screenshot-at") {
             o.screenshot_at = parse_int(a, cur.value(a), 1, 100000000);
+        } else if (a == "--press") {
+            const auto more = parse_presses(a, cur.value(a));
+            o.presses.insert(o.presses.end(), more.begin(), more.end());
         } else if (a == "--headless-test") {
             o.headless_test = true;
         } else if (!a.empty() && a[0] == '-') {
-            throw UsageError("unknown option " + std::string(a) + " (see beamzone play --help)");
+            throw UsageError("unknown option " + printable(a) + " (see beamzone play --help)");
         } else if (o.level.empty()) {
             o.level = a;
         } else {
@@ -96,7 +122,7 @@ std::string play_usage(const std::string& settings_path, const std::string& high
            "                     [--style NAME] [--windowed|--fullscreen]\n"
            "                     [--vsync off|on|adaptive] [--record FILE] [--replay FILE]\n"
            "                     [--seed N] [--size WxH] [--frames N] [--screenshot-at N]\n"
-           "                     [--headless-test]\n"
+           "                     [--press FRAME:KEY,...] [--headless-test]\n"
            "Plays LEVEL (default levels/classic.toml) in a window. Edits to the level file are\n"
            "picked up while playing; errors show on screen and the last good level stays.\n"
            "  --edit           fly around the level without gameplay (WASD, R/F up/down,\n"
@@ -109,12 +135,13 @@ std::string play_usage(const std::string& settings_path, const std::string& high
            "  --size WxH       window size (default 1280x720; 640x360 for --headless-test)\n"
            "  --frames N       run N frames, one 60 Hz tick each, then exit (for tests)\n"
            "  --screenshot-at N  save a screenshot after frame N, as F12 does\n"
+           "  --press F:KEY,... tap KEY before frame F (e.g. 2:Down,3:Return opens Level)\n"
            "  --headless-test  run in a hidden window, e.g. with SDL_VIDEODRIVER=offscreen\n"
            "                   (BEAMZONE_ALLOW_OFFSCREEN=1 does the same)\n"
-           "Keys (change them in the settings file): treads Q/A and E/D, or drive with the\n"
-           "arrows (W/S too); fire Space or Ctrl; pause P or Esc; F11 or Alt+Enter fullscreen;\n"
-           "F12 screenshot; F5 reload shaders; M mute; +/- volume; F10 quit; Enter start;\n"
-           "Backspace back (menus).\n"
+           "Keys (change them in Options > Keys, or in the settings file): treads Q/A and\n"
+           "E/D, or drive with the arrows (W/S too); fire Space or Ctrl; pause P or Esc; F11\n"
+           "or Alt+Enter fullscreen; F12 screenshot; F5 reload shaders; F3 frame rate; M mute;\n"
+           "+/- volume; F10 quit. Menus: arrows choose, Enter selects, Backspace or Esc back.\n"
            "Game controllers: sticks drive the treads (or the left stick alone: gamepad =\n"
            "\"drive\" in the settings), triggers, A or R1 fire, Start pauses or starts, B back.\n"
            "\n"

@@ -3,9 +3,12 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <glm/glm.hpp>
 
+#include "platform/bindings.h"
 #include "platform/gl_context.h"
 
 namespace bz::app {
@@ -24,6 +27,8 @@ struct PlayOptions {
     int frames = 0;              // > 0: run this many frames (one tick each) and exit
     int screenshot_at = 0;       // > 0: take a screenshot after this frame, as F12 would
     bool headless_test = false;  // run in a hidden window under SDL's offscreen driver
+    // --press FRAME:KEY,...: keys tapped before those frames (tests, screenshots of menus).
+    std::vector<std::pair<int, platform::KeyBinding>> presses;
     bool help = false;
 };
 

@@ -3,6 +3,9 @@
 // input, timing, audio, hot reload and overlays; a session owns what is simulated and drawn.
 #include <vector>
 
+#include "core/interrupt.h"
+#include "app/menu/play_menus.h"
+#include "game/highscores.h"
 #include "level/level.h"
 #include "platform/free_fly.h"
 #include "platform/input.h"
@@ -41,12 +44,29 @@ class PlaySession {
     virtual void level_changed(const level::Level& level) = 0;
     // Game actions the player pressed (pause, start, back); window-level ones stay in the loop.
     virtual void on_action(platform::Action) {}
+    // Which of the app's menus the session's screen calls for (title, pause, or none).
+    virtual menu::Context menu_context() const { return menu::Context::none; }
+    // What the menus chose; outside the simulation (a recording starts with the game).
+    enum class MenuCommand : std::uint8_t { start_game, resume, quit_to_title };
+    virtual void menu_command(MenuCommand) {}
+    // The player rebound keys: on-screen hints should name the new ones.
+    virtual void keys_changed(const platform::Bindings&) {}
+    // The table the High scores page shows; null when the session keeps none.
+    virtual const game::HighScoreTable* high_scores() const { return nullptr; }
     // The window lost focus (the game pauses itself if the settings say so).
     virtual void on_focus_lost() {}
-    // True when the session has nothing more to show (a replay reached its end).
-    virtual bool finished() const { return false; }
+    // True when the session has nothing more to show (a replay reached its end), or the
+    // process was asked to stop (SIGINT, SIGTERM): the loop then ends and play saves.
+    virtual bool finished() const { return interrupt_requested(); }
     // True when the run failed in a way the exit code should show (a replay that diverged).
     virtual bool failed() const { return false; }
+    // Called once when the run ends, however it ends (quit, --frames, a signal): saves what
+    // must outlive it (a recording). False when a save failed (it was reported; the exit code
+    // shows it too).
+    virtual bool save_on_exit() { return true; }
+    // Messages for the player that arose outside the loop (a damaged high-score file), to
+    // show on screen once.
+    virtual std::vector<std::string> take_notices() { return {}; }
 };
 
 }  // namespace bz::app

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <utility>
 
+#include "app/edit_status.h"
 #include "core/error.h"
 #include "core/log.h"
 #include "game/assets.h"
@@ -12,6 +13,8 @@
 #include "game/fixed_step.h"
 #include "game/game.h"
 #include "game/highscores.h"
+#include "game/level_rules.h"
+#include "game/hud_layout.h"
 #include "game/replay.h"
 #include "platform/free_fly.h"
 
@@ -35,9 +38,18 @@ class GameSession final : public PlaySession {
           log_(log) {
         options_.seed = o.seed.value_or(clock_seed());
         game::HighScoreLoad scores = game::load_highscores(high_scores_path_);
-        if (!scores.warning.empty()) log_.warn(scores.warning);
-        options_.highscores = std::move(scores.table);
+        for (const std::string& e : scores.errors) log_.warn(e);
+        if (!scores.message.empty()) {
+            log_.warn(scores.message);
+            notices_.push_back(scores.message);
+        }
+        scores_may_save_ = scores.may_save;
+        book_ = std::move(scores.book);
+        key_ = key_of(lvl);
+        options_.highscores = book_.table(key_);
         options_.record = !record_path_.empty();
+        options_.app_menus = o.app_menus;
+        options_.hints = o.hints;
         // Recording starts a game at once rather than recording the title screen's wait.
         if (options_.record) options_.attract = false;
         game_ = std::make_unique<game::Game>(std::move(lvl), options_, font_);
@@ -49,23 +61,36 @@ class GameSession final : public PlaySession {
         }
     }
 
-    ~GameSession() override {
-        if (record_path_.empty()) return;
+    // A run cut short by an exception still keeps its recording.
+    ~GameSession() override { save_on_exit(); }
+
+    bool save_on_exit() override {
+        if (record_path_.empty()) return !save_failed_;
+        const std::string path = std::exchange(record_path_, std::string());
         try {
             if (const auto rec = game_->recording()) {
-                game::replay::save(record_path_, *rec);
+                game::replay::save(path, *rec);
                 log_.info("recorded " + std::to_string(rec->commands.size()) + " ticks to " +
-                          record_path_);
+                          path);
             } else {
-                log_.warn("nothing to record in " + record_path_ + ": no game was started");
+                log_.warn("nothing to record in " + path + ": no game was started");
             }
         } catch (const std::exception& e) {
             log_.error(std::string("cannot save the recording: ") + e.what());
+            save_failed_ = true;
         }
+        return !save_failed_;
     }
 
     void tick(const platform::InputState& in) override {
         game::TickCommand cmd;
+        if (menu_context() != menu::Context::none) {
+            // A menu has the keys: the game under it only animates (the demo runs on).
+            pause_ = start_ = back_ = false;
+            game_->tick(cmd);
+            collect_results();
+            return;
+        }
         cmd.left_tread = in.left_tread;
         cmd.right_tread = in.right_tread;
         cmd.fire = in.fire;
@@ -79,6 +104,36 @@ class GameSession final : public PlaySession {
         cmd.start = std::exchange(start_, false);
         cmd.back = std::exchange(back_, false);
         game_->tick(cmd);
+        collect_results();
+    }
+
+    menu::Context menu_context() const override {
+        if (!options_.app_menus) return menu::Context::none;
+        if (game_->screen() == game::Screen::attract) return menu::Context::title;
+        if (game_->screen() == game::Screen::paused) return menu::Context::paused;
+        return menu::Context::none;
+    }
+
+    void menu_command(MenuCommand c) override {
+        switch (c) {
+            case MenuCommand::start_game:
+                if (game_->screen() == game::Screen::attract) game_->start_game();
+                break;
+            case MenuCommand::resume:
+                game_->resume();
+                break;
+            case MenuCommand::quit_to_title:
+                game_->quit_to_title();
+                break;
+        }
+    }
+
+    const game::HighScoreTable* high_scores() const override { return &game_->highscores(); }
+    void keys_changed(const platform::Bindings& keys) override {
+        game_->set_hints(screen_hints(keys));
+    }
+
+    void collect_results() {
         const game::SoundFrame& s = game_->sounds();
         engine_ = s.engine;
         for (const game::SoundEvent e : s.events) sounds_.push_back(e);
@@ -120,6 +175,11 @@ class GameSession final : public PlaySession {
         // The game goes on in the edited level: score, lives, screen and the tank stay.
         const game::ReloadReport r = game_->reload_level(lvl);
         if (r.ended_recording) end_recording(*r.ended_recording);
+        // Edited rules make another table (high scores are kept per level and rules).
+        if (const game::LevelKey key = key_of(lvl); key != key_) {
+            key_ = key;
+            game_->set_highscores(book_.table(key_));
+        }
         if (const game::World* w = game_->world()) {
             const glm::dvec3& at = w->state().player.body.transform.position;
             char where[64];
@@ -133,7 +193,11 @@ class GameSession final : public PlaySession {
         }
     }
 
-    bool finished() const override { return game_->replay_finished(); }
+    std::vector<std::string> take_notices() override { return std::exchange(notices_, {}); }
+
+    bool finished() const override {
+        return game_->replay_finished() || PlaySession::finished();
+    }
     bool failed() const override { return game_->replay_mismatch().has_value(); }
 
   private:
@@ -149,12 +213,23 @@ class GameSession final : public PlaySession {
                       "; the rest of this run is not recorded");
         } catch (const std::exception& e) {
             log_.error(std::string("cannot save the recording: ") + e.what());
+            save_failed_ = true;
         }
     }
 
+    static game::LevelKey key_of(const level::Level& lvl) {
+        return game::level_key(lvl.name, game::level_rules_hash(lvl));
+    }
+
     void save_scores() {
+        book_.set(key_, game_->highscores());
+        if (!scores_may_save_) {
+            log_.warn("not saving high scores: " + high_scores_path_.string() +
+                      " is damaged and could not be moved aside");
+            return;
+        }
         try {
-            game::save_highscores(high_scores_path_, game_->highscores());
+            game::save_highscores(high_scores_path_, book_);
             log_.info("high scores saved: " + high_scores_path_.string());
         } catch (const UserError& e) {
             log_.warn(std::string("cannot save high scores: ") + e.what());
@@ -185,14 +260,20 @@ class GameSession final : public PlaySession {
     float engine_ = 0.0f;
     bool pause_ = false, start_ = false, back_ = false;
     bool replay_reported_ = false;
+    bool save_failed_ = false;
+    game::HighScoreBook book_;  // every level's table; the game shows key_'s
+    game::LevelKey key_;
+    bool scores_may_save_ = true;
+    std::vector<std::string> notices_;
 };
 
 // --edit: the level's objects and horizon from a free-flying camera; nothing moves but the
 // volcano.
 class EditSession final : public PlaySession {
   public:
-    explicit EditSession(level::Level lvl)
-        : level_(std::move(lvl)),
+    EditSession(level::Level lvl, const scene::VectorFont* font)
+        : font_(font),
+          level_(std::move(lvl)),
           assets_(std::make_unique<game::Assets>(level_.backdrop)),
           camera_(level_.player_start + glm::dvec3(0.0, 6.0, 0.0), level_.player_heading_deg,
                   -10.0),
@@ -201,7 +282,7 @@ class EditSession final : public PlaySession {
     void tick(const platform::InputState&) override { ++ticks_; }
     void update(const platform::FlyControls& fly, double dt) override { camera_.update(fly, dt); }
 
-    scene::FrameList frame(double alpha, double) override {
+    scene::FrameList frame(double alpha, double aspect) override {
         scene::FrameList f;
         f.camera.eye = camera_.position();
         f.camera.target = camera_.target();
@@ -219,6 +300,7 @@ class EditSession final : public PlaySession {
             (static_cast<double>(ticks_) + alpha) * game::FixedStep::kTickSeconds;
         game::backdrop::append_items(f.items, level_.backdrop, assets_->horizon(), f.camera.eye,
                                      seconds);
+        draw_status(f.hud, aspect);
         return f;
     }
 
@@ -235,11 +317,39 @@ class EditSession final : public PlaySession {
     }
 
   private:
+    // Where the camera is and what it looks at, the reticle, and the keys, in the footer.
+    void draw_status(std::vector<scene::HudLine>& out, double aspect) const {
+        namespace hud = game::hud;
+        const auto a = static_cast<float>(aspect);
+        constexpr float s = 0.03f;  // a small cross: the point the status line names
+        out.push_back({{-s, 0.0f}, {s, 0.0f}, hud::kWhite, 0.8f});
+        out.push_back({{0.0f, -s}, {0.0f, s}, hud::kWhite, 0.8f});
+        if (!font_) return;
+        const hud::Box f = hud::footer_box(a);
+        const std::string status =
+            edit_status_line(level_, camera_.position(), camera_.yaw_deg(), camera_.pitch_deg(),
+                             camera_.forward());
+        const std::string keys =
+            "W A S D MOVE   R / F UP, DOWN   ARROWS OR RIGHT MOUSE LOOK   SHIFT FAST   "
+            "F5 SHADERS   ESCAPE LEAVE";
+        auto fit = [&](const std::string& text, float h) {
+            const float w = font_->width(text, h);
+            return w > f.width() ? h * f.width() / w : h;
+        };
+        font_->draw(out, status, {f.min.x, f.min.y + 0.055f}, fit(status, 0.036f), hud::kGreen,
+                    scene::TextAlign::left, 1.1f);
+        font_->draw(out, keys, {f.min.x, f.min.y + 0.011f}, fit(keys, 0.03f), hud::kWhite,
+                    scene::TextAlign::left, 0.8f);
+        font_->draw(out, "EDIT  " + level_.file.filename().string(), {f.max.x, 0.9f}, 0.04f,
+                    hud::kRed, scene::TextAlign::right);
+    }
+
     // A world builds the obstacles through the factory table; its simulation never runs.
     std::vector<scene::Entity> build(const level::Level& lvl) const {
         return game::World(lvl, 0, assets_->factories(), assets_->models()).obstacles();
     }
 
+    const scene::VectorFont* font_;
     level::Level level_;
     std::unique_ptr<game::Assets> assets_;
     platform::FreeFlyCamera camera_;
@@ -279,12 +389,26 @@ SoundCue sound_cue(game::SoundEvent e) {
     return {Sound::radar_blip, 0.0f};
 }
 
+game::screens::Hints screen_hints(const platform::Bindings& keys) {
+    using platform::Action;
+    using platform::keys_label;
+    game::screens::Hints h;
+    h.initials = keys_label(keys, Action::drive_forward, 1) + " / " +
+                 keys_label(keys, Action::drive_back, 1) + " CHOOSE   " +
+                 keys_label(keys, Action::fire, 1) + " NEXT   " +
+                 keys_label(keys, Action::back, 1) + " ERASE";
+    h.paused = keys_label(keys, Action::pause) + " RESUME   " + keys_label(keys, Action::back, 1) +
+               " QUIT";
+    h.title = keys_label(keys, Action::start, 1) + " START";
+    return h;
+}
+
 std::unique_ptr<PlaySession> make_game_session(const SessionOptions& o, Log& log) {
     return std::make_unique<GameSession>(chosen_level(o), o, log);
 }
 
 std::unique_ptr<PlaySession> make_edit_session(const SessionOptions& o, Log&) {
-    return std::make_unique<EditSession>(chosen_level(o));
+    return std::make_unique<EditSession>(chosen_level(o), o.font);
 }
 
 }  // namespace bz::app

@@ -8,6 +8,8 @@
 
 #include "app/play_session.h"
 #include "game/events.h"
+#include "game/screens.h"
+#include "platform/bindings.h"
 #include "scene/vector_font.h"
 
 namespace bz {
@@ -24,7 +26,12 @@ struct SessionOptions {
     std::filesystem::path high_scores;
     bool pause_on_focus_loss = true;
     const scene::VectorFont* font = nullptr;  // must outlive the session
+    bool app_menus = true;  // title and pause menus come from the play loop (game::GameOptions)
+    game::screens::Hints hints;  // key hints naming the player's keys
 };
+
+// The game's on-screen hints for `keys` ("P / ESCAPE RESUME").
+game::screens::Hints screen_hints(const platform::Bindings& keys);
 
 // Throws UserError for a level the game cannot build or an unreadable replay.
 std::unique_ptr<PlaySession> make_game_session(const SessionOptions& options, Log& log);

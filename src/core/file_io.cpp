@@ -11,27 +11,22 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "core/regular_file.h"
 
 namespace bz {
 namespace fs = std::filesystem;
 
 std::string read_file(const fs::path& path, std::size_t max_bytes) {
-    std::error_code ec;
-    const auto status = fs::status(path, ec);
-    if (ec || !fs::exists(status)) throw UserError(path.string() + ": file not found");
-    if (!fs::is_regular_file(status)) throw UserError(path.string() + ": not a regular file");
-    const auto size = fs::file_size(path, ec);
-    if (ec) throw UserError(path.string() + ": cannot read size: " + ec.message());
+    // Opened without blocking and checked on the descriptor: a FIFO or device swapped in
+    // after a check by name can neither hang nor feed us endless bytes.
+    RegularFileResult opened = open_regular_file(path);
+    if (!opened.why.empty()) throw UserError(path.string() + ": " + opened.why);
+    const std::uintmax_t size = opened.file.size();
     if (size > max_bytes) {
         throw UserError(path.string() + ": file is " + std::to_string(size) +
                         " bytes, over the limit of " + std::to_string(max_bytes));
     }
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw UserError(path.string() + ": cannot open: " + std::strerror(errno));
-    std::string data(size, '\0');
-    in.read(data.data(), static_cast<std::streamsize>(size));
-    data.resize(static_cast<std::size_t>(in.gcount()));
-    return data;
+    return read_head(opened.file, static_cast<std::size_t>(size));
 }
 
 namespace {
@@ -50,12 +45,28 @@ void write_all(int fd, std::string_view bytes, const fs::path& path) {
     }
 }
 
+// A symbolic link (a dotfiles setup links settings.toml into a repository) is written
+// through: the new file replaces the link's final target, and the link stays a link.
+fs::path final_target(const fs::path& path) {
+    constexpr int kMaxLinks = 40;  // as the kernel's ELOOP limit
+    fs::path p = path;
+    for (int i = 0; i < kMaxLinks; ++i) {
+        std::error_code ec;
+        if (!fs::is_symlink(fs::symlink_status(p, ec))) return p;
+        const fs::path target = fs::read_symlink(p, ec);
+        if (ec) throw UserError(path.string() + ": cannot read the link: " + ec.message());
+        const fs::path base = p.has_parent_path() ? p.parent_path() : fs::path(".");
+        p = target.is_absolute() ? target : base / target;
+    }
+    throw UserError(path.string() + ": too many levels of symbolic links");
+}
+
 }  // namespace
 
-void write_file_atomic(const fs::path& path, std::string_view bytes) {
+void write_file_atomic(const fs::path& requested, std::string_view bytes) {
+    // The folder is never created here: a mistyped output path must fail, not grow folders.
+    const fs::path path = final_target(requested);
     const fs::path dir = path.has_parent_path() ? path.parent_path() : fs::path(".");
-    std::error_code ec;
-    fs::create_directories(dir, ec);
     std::random_device rd;
     const fs::path tmp = dir / ("." + path.filename().string() + ".tmp" + std::to_string(rd()));
     const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);

@@ -12,7 +12,8 @@ std::string read_file(const std::filesystem::path& path, std::size_t max_bytes =
 
 // Writes a file so that a crash at any moment leaves either the old or the new content:
 // write a temp file in the same folder, fsync it, rename over the target, fsync the folder.
-// Throws UserError on failure; the old file is untouched then.
+// A symbolic link is written through (its target is replaced; the link stays). The folder
+// must exist. Throws UserError on failure; the old file is untouched then.
 void write_file_atomic(const std::filesystem::path& path, std::string_view bytes);
 
 }  // namespace bz

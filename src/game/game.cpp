@@ -1,12 +1,14 @@
 #include "game/game.h"
 
 #include <algorithm>
+#include <cctype>
 
 #include "core/error.h"
 #include "game/autopilot.h"
 #include "game/backdrop.h"
 #include "game/default_level.h"
 #include "game/hud.h"
+#include "game/hud_layout.h"
 #include "game/screens.h"
 #include "game/tuning.h"
 
@@ -78,6 +80,18 @@ void Game::start_game() {
         recorder_.emplace(std::move(h));
     }
     screen_ = Screen::playing;
+    screen_ticks_ = 0;
+}
+
+void Game::resume() {
+    if (screen_ == Screen::paused) screen_ = Screen::playing;
+}
+
+void Game::quit_to_title() {
+    if (recorder_ && world_) ended_recording_ = recorder_->finish(*world_);
+    recorder_.reset();
+    playback_.reset();
+    screen_ = Screen::attract;
     screen_ticks_ = 0;
 }
 
@@ -259,7 +273,11 @@ scene::FrameList Game::frame(double alpha, double aspect) const {
     const World& shown = live ? *world_ : *demo_;
     const double a = screen_ == Screen::paused ? 1.0 : alpha;
     scene::FrameList f = shown.interpolated_frame(a, options_.fov_y_deg);
+    // The play HUD's band is the radar strip; the scene (sky included) stays under it.
+    if (live) f.view_top = hud::kBandBottom;
     const double seconds = (static_cast<double>(ticks_) + a) / tuning::kTicksPerSecond;
+    f.time_s = seconds;  // phosphor decay and frame holding follow game time
+    f.seed = static_cast<std::uint32_t>(ticks_);
     backdrop::append_items(f.items, level_.backdrop, assets_->horizon(), f.camera.eye, seconds);
     if (screen_ == Screen::enter_initials || screen_ == Screen::high_scores) {
         f.items.clear();  // text only: the table must be readable
@@ -275,8 +293,10 @@ scene::FrameList Game::frame(double alpha, double aspect) const {
     view.font = font_;
     switch (screen_) {
         case Screen::attract:
+            if (options_.app_menus) break;  // the app's title menu is drawn over the demo
             if ((ticks_ / kAttractCycleTicks) % 2 == 0) {
-                screens::title(f.hud, font_, aspect, ticks_, highscores_.best());
+                screens::title(f.hud, font_, aspect, ticks_, highscores_.best(),
+                               options_.hints.title);
             } else {
                 screens::high_scores(f.hud, font_, highscores_, -1, ticks_);
             }
@@ -286,7 +306,7 @@ scene::FrameList Game::frame(double alpha, double aspect) const {
             break;
         case Screen::paused:
             hud::play_hud(f.hud, *world_, view);
-            screens::paused(f.hud, font_);
+            if (!options_.app_menus) screens::paused(f.hud, font_, options_.hints.paused);
             break;
         case Screen::game_over:
             hud::status(f.hud, *world_, view);
@@ -294,11 +314,19 @@ scene::FrameList Game::frame(double alpha, double aspect) const {
             break;
         case Screen::enter_initials:
             screens::enter_initials(f.hud, font_, initials_, initial_, world_ ? world_->score() : 0,
-                                    ticks_);
+                                    ticks_, options_.hints.initials);
             break;
         case Screen::high_scores:
             screens::high_scores(f.hud, font_, highscores_, new_rank_, ticks_);
             break;
+    }
+    // Tables are kept per level: say whose this is.
+    if (screen_ == Screen::high_scores ||
+        (screen_ == Screen::attract && (ticks_ / kAttractCycleTicks) % 2 == 1)) {
+        std::string title = level_key(level_.name, 0).name;
+        for (char& c : title) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+        hud::text(f.hud, font_, title, {0.0f, 0.54f}, 0.045f, hud::kGreen,
+                  scene::TextAlign::center);
     }
     if (playback_ && live) {
         std::string note;

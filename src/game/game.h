@@ -6,7 +6,7 @@
 //   each frame:  for (plan.ticks) game.tick(command_from_input);
 //                renderer.render(game.frame(plan.alpha, aspect), game.meshes());
 //                synth.play(game.sounds());   // the last tick's
-//                if (game.take_highscores_changed()) save_highscores(path, game.highscores());
+//                if (game.take_highscores_changed()) save the table game.highscores();
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -16,6 +16,7 @@
 #include "game/events.h"
 #include "game/highscores.h"
 #include "game/replay.h"
+#include "game/screens.h"
 #include "game/tick_command.h"
 #include "game/world.h"
 #include "level/level.h"
@@ -44,6 +45,11 @@ struct GameOptions {
     bool attract = true;  // false: start playing at once (tests, benchmarks)
     int hash_interval = 60;
     double fov_y_deg = 45.0;
+    // The app draws its own title and pause menus over the game: the attract screen then
+    // shows the demo without the title text, pause shows no text, and the app starts, resumes
+    // and leaves games through start_game(), resume() and quit_to_title().
+    bool app_menus = false;
+    screens::Hints hints;
 };
 
 // What reload_level() did.
@@ -85,8 +91,16 @@ class Game {
     const level::Level& level() const { return level_; }
 
     const HighScoreTable& highscores() const { return highscores_; }
+    // Shows another level's table from now on (high scores are kept per level).
+    void set_highscores(HighScoreTable table) { highscores_ = std::move(table); }
     // True once after the table changed: the caller saves it then.
     bool take_highscores_changed();
+
+    // For the app's menus (outside the simulation; a recording begins with the game).
+    void start_game();
+    void resume();         // paused -> playing
+    void quit_to_title();  // ends the game in play without a score entry
+    void set_hints(screens::Hints hints) { options_.hints = std::move(hints); }
 
     // Plays a recorded game back from its seed, checking state hashes as it goes. Live input
     // only pauses or quits. Throws UserError if the replay's level hash differs.
@@ -101,7 +115,6 @@ class Game {
 
   private:
     struct Buttons;
-    void start_game();
     void end_game();
     void step_world(const TickCommand& command);
     void step_demo();

@@ -1,30 +1,18 @@
 #include "game/highscores.h"
 
 #include <algorithm>
-#include <charconv>
-
-#include "core/error.h"
-#include "core/line_reader.h"
-#include "core/file_io.h"
 
 namespace bz::game {
 
-namespace {
-
-constexpr std::string_view kMagic = "beamzone-highscores";
-constexpr int kMaxScore = 99'999'999;
-
-bool valid_initial(char c) {
+bool is_initial(char c) {
     return (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == ' ';
 }
-
-}  // namespace
 
 std::string clean_initials(std::string_view text) {
     std::string out;
     for (char c : text) {
         if (c >= 'a' && c <= 'z') c = static_cast<char>(c - 'a' + 'A');
-        if (valid_initial(c)) out += c;
+        if (is_initial(c)) out += c;
         if (out.size() == HighScoreTable::kInitials) break;
     }
     out.resize(HighScoreTable::kInitials, ' ');
@@ -59,87 +47,55 @@ std::optional<std::size_t> HighScoreTable::insert(HighScore entry) {
     return rank;
 }
 
-std::string serialise(const HighScoreTable& table) {
-    std::string out = std::string(kMagic) + " 1\n";
-    for (const HighScore& e : table.entries()) {
-        out += clean_initials(e.initials) + " " + std::to_string(e.score) + "\n";
+LevelKey level_key(std::string_view level_name, std::uint64_t rules_hash) {
+    // Stored on one line of the file and shown on screen: printable ASCII only, bounded.
+    LevelKey key;
+    key.rules = rules_hash;
+    for (const char c : level_name) {
+        if (key.name.size() == kMaxLevelNameBytes) break;
+        const bool plain = c >= 0x20 && c < 0x7f;
+        key.name += plain ? c : '?';
     }
-    out += "end\n";  // a file cut short (even at a line end) lacks it
-    return out;
+    while (!key.name.empty() && key.name.back() == ' ') key.name.pop_back();
+    return key;
 }
 
-HighScoreTable parse_highscores(std::string_view text, const std::string& name) {
-    HighScoreTable t;
-    std::vector<HighScore> read;
-    bool magic = false;
-    bool ended = false;
-    LineReader lines(text);
-    auto fail = [&](const std::string& what) -> void {
-        throw UserError(name + ":" + std::to_string(lines.line_number()) + ": error: " + what);
-    };
-    std::string_view line;
-    while (lines.next(line)) {
-        if (line.empty()) continue;
-        if (!magic) {
-            if (line != std::string(kMagic) + " 1") fail("not a beamzone high-score file");
-            magic = true;
-            continue;
-        }
-        if (ended) fail("text after 'end'");
-        if (line == "end") {
-            ended = true;
-            continue;
-        }
-        // "III SCORE": three initials (spaces allowed), one space, digits.
-        if (line.size() < 5 || line[3] != ' ') fail("expected three initials, a space and a score");
-        const std::string_view initials = line.substr(0, 3);
-        if (!std::all_of(initials.begin(), initials.end(), valid_initial)) {
-            fail("initials must be A-Z, 0-9 or space");
-        }
-        const std::string_view digits = line.substr(4);
-        int score = -1;
-        const auto [p, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), score);
-        if (ec != std::errc() || p != digits.data() + digits.size() || score < 0 ||
-            score > kMaxScore) {
-            fail("score '" + std::string(digits) + "' is not a number in 0.." +
-                 std::to_string(kMaxScore));
-        }
-        if (read.size() == HighScoreTable::kSize) fail("more than 10 entries");
-        if (!read.empty() && score > read.back().score) fail("entries are not sorted best first");
-        read.push_back({std::string(initials), score});
+HighScoreTable HighScoreBook::table(const LevelKey& key) const {
+    for (const auto& [k, t] : tables_) {
+        if (k == key) return t;
     }
-    if (!magic) fail("empty high-score file");
-    if (!ended) fail("the file is cut short (no 'end' line)");
-    for (HighScore& e : read) {
-        if (!t.insert(e)) {
-            // A zero score never qualifies; keep the file's entry anyway for a faithful load.
-            fail("score must be above 0");
-        }
-    }
-    return t;
+    return HighScoreTable::defaults();
 }
 
-HighScoreLoad load_highscores(const std::filesystem::path& file) {
-    HighScoreLoad out{HighScoreTable::defaults(), {}};
-    std::error_code ec;
-    if (!std::filesystem::exists(file, ec)) return out;
-    try {
-        out.table = parse_highscores(read_file(file, 64u << 10), file.string());
-    } catch (const UserError& e) {
-        out.table = HighScoreTable::defaults();
-        out.warning = std::string(e.what()) + " (using the default high scores)";
-    }
-    return out;
+bool HighScoreBook::has(const LevelKey& key) const {
+    return std::any_of(tables_.begin(), tables_.end(),
+                       [&](const auto& kt) { return kt.first == key; });
 }
 
-void save_highscores(const std::filesystem::path& file, const HighScoreTable& table,
-                     const FileWriter& writer) {
-    const std::string bytes = serialise(table);
-    if (writer) {
-        writer(file, bytes);
-    } else {
-        write_file_atomic(file, bytes);
+void HighScoreBook::set(const LevelKey& key, HighScoreTable table) {
+    for (auto& [k, t] : tables_) {
+        if (k == key) {
+            t = std::move(table);
+            return;
+        }
     }
+    tables_.emplace_back(key, std::move(table));
+}
+
+void HighScoreBook::merge(const LevelKey& key, const HighScoreTable& table) {
+    for (auto& [k, t] : tables_) {
+        if (k == key) {
+            for (const HighScore& e : table.entries()) t.insert(e);
+            return;
+        }
+    }
+    tables_.emplace_back(key, table);
+}
+
+std::size_t HighScoreBook::entry_count() const {
+    std::size_t n = 0;
+    for (const auto& kt : tables_) n += kt.second.entries().size();
+    return n;
 }
 
 }  // namespace bz::game

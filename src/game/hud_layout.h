@@ -15,6 +15,53 @@ inline constexpr float kTopLine = 0.88f;     // baseline of the first status lin
 inline constexpr float kSecondLine = 0.79f;  // baseline of the second
 inline constexpr float kLivesLine = 0.68f;   // bottom of the reserve-tank icons
 
+// The HUD band: the top strip above this holds radar, messages, score and lives, and the
+// scene is not drawn into it (FrameList::view_top).
+inline constexpr float kBandBottom = 0.52f;
+
+// A region of the screen that one kind of HUD content owns; nothing else draws into it.
+struct Box {
+    glm::vec2 min{0.0f};
+    glm::vec2 max{0.0f};
+    bool contains(glm::vec2 p, float slack = 1e-4f) const {
+        return p.x >= min.x - slack && p.x <= max.x + slack && p.y >= min.y - slack &&
+               p.y <= max.y + slack;
+    }
+    float width() const { return max.x - min.x; }
+    float height() const { return max.y - min.y; }
+};
+
+// The regions for a screen `aspect` wide (x spans -aspect..aspect). In the band, left to right:
+// messages ("ENEMY IN RANGE"), the radar, score over lives. Under the band: the error box.
+// Along the bottom: notices (screenshot saved, volume) and the footer line (key hints, replay
+// banner, frame rate).
+inline constexpr float kRadarGap = 0.03f;  // between the radar and its neighbours
+inline Box radar_box() {
+    const glm::vec2 r{kRadarRadius + 0.015f};
+    return {kRadarCenter - r, kRadarCenter + r};
+}
+inline Box messages_box(float aspect) {
+    return {{-aspect + kMargin, kBandBottom + 0.08f},
+            {kRadarCenter.x - kRadarRadius - kRadarGap, 1.0f - 0.04f}};
+}
+inline Box score_box(float aspect) {
+    return {{kRadarCenter.x + kRadarRadius + kRadarGap, kSecondLine - 0.03f},
+            {aspect - kMargin, 1.0f - 0.04f}};
+}
+inline Box lives_box(float aspect) {
+    return {{kRadarCenter.x + kRadarRadius + kRadarGap, kBandBottom + 0.08f},
+            {aspect - kMargin, kSecondLine - 0.03f}};
+}
+inline Box error_box(float aspect) {
+    return {{-aspect + kMargin, kReticleHalfHeight + 0.04f}, {aspect - kMargin, kBandBottom - 0.02f}};
+}
+inline Box notice_box(float aspect) {
+    return {{-aspect + kMargin, -0.86f}, {aspect - kMargin, -0.56f}};
+}
+inline Box footer_box(float aspect) {
+    return {{-aspect + kMargin, -0.98f}, {aspect - kMargin, -0.88f}};
+}
+
 // The arcade's colour overlay: the top strip (radar, messages, score) red, the rest green.
 inline constexpr glm::vec3 kRed{1.0f, 0.22f, 0.15f};
 inline constexpr glm::vec3 kGreen{0.2f, 1.0f, 0.3f};

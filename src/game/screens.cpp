@@ -16,13 +16,12 @@ bool blink(std::uint64_t tick, std::uint64_t period = 40) {
 }  // namespace
 
 void title(std::vector<scene::HudLine>& out, const scene::VectorFont* font, double aspect,
-           std::uint64_t tick, int high_score) {
+           std::uint64_t tick, int high_score, const std::string& hint) {
     hud::text(out, font, "BEAMZONE", {0.0f, 0.42f}, 0.2f, hud::kGreen, TextAlign::center, 1.4f);
     hud::text(out, font, "A VECTOR TANK BATTLE", {0.0f, 0.28f}, 0.05f, hud::kGreen,
               TextAlign::center);
     if (blink(tick, 60)) {
-        hud::text(out, font, "PRESS START", {0.0f, -0.55f}, 0.07f, hud::kRed, TextAlign::center,
-                  1.2f);
+        hud::text(out, font, hint, {0.0f, -0.55f}, 0.07f, hud::kRed, TextAlign::center, 1.2f);
     }
     hud::text(out, font, "HIGH SCORE " + std::to_string(high_score),
               {static_cast<float>(aspect) - hud::kMargin, hud::kTopLine}, hud::kTextHeight,
@@ -53,10 +52,10 @@ void high_scores(std::vector<scene::HudLine>& out, const scene::VectorFont* font
     }
 }
 
-void paused(std::vector<scene::HudLine>& out, const scene::VectorFont* font) {
+void paused(std::vector<scene::HudLine>& out, const scene::VectorFont* font,
+            const std::string& hint) {
     hud::text(out, font, "PAUSED", {0.0f, -0.35f}, 0.12f, hud::kWhite, TextAlign::center, 1.3f);
-    hud::text(out, font, "PAUSE TO CONTINUE   BACK TO QUIT", {0.0f, -0.5f}, 0.045f, hud::kWhite,
-              TextAlign::center);
+    hud::text(out, font, hint, {0.0f, -0.5f}, 0.045f, hud::kWhite, TextAlign::center);
 }
 
 void game_over(std::vector<scene::HudLine>& out, const scene::VectorFont* font, int score) {
@@ -66,7 +65,8 @@ void game_over(std::vector<scene::HudLine>& out, const scene::VectorFont* font, 
 }
 
 void enter_initials(std::vector<scene::HudLine>& out, const scene::VectorFont* font,
-                    const std::string& letters, char current, int score, std::uint64_t tick) {
+                    const std::string& letters, char current, int score, std::uint64_t tick,
+                    const std::string& hint) {
     hud::text(out, font, "GREAT SCORE", {0.0f, 0.55f}, 0.1f, hud::kRed, TextAlign::center, 1.3f);
     hud::text(out, font, std::to_string(score), {0.0f, 0.4f}, 0.07f, hud::kRed, TextAlign::center);
     hud::text(out, font, "ENTER YOUR INITIALS", {0.0f, 0.22f}, 0.06f, hud::kGreen,
@@ -84,8 +84,7 @@ void enter_initials(std::vector<scene::HudLine>& out, const scene::VectorFont* f
         }
         out.push_back({{x - 0.06f, -0.1f}, {x + 0.06f, -0.1f}, hud::kGreen, active ? 1.4f : 0.8f});
     }
-    hud::text(out, font, "UP DOWN CHOOSE   FIRE NEXT   BACK ERASE", {0.0f, -0.35f}, 0.04f,
-              hud::kGreen, TextAlign::center);
+    hud::text(out, font, hint, {0.0f, -0.35f}, 0.04f, hud::kGreen, TextAlign::center);
 }
 
 void replay_banner(std::vector<scene::HudLine>& out, const scene::VectorFont* font, double aspect,

@@ -44,6 +44,12 @@ void apply(const PipelineState& s) {
         glDisable(GL_CULL_FACE);
     }
     glClipControl(GL_LOWER_LEFT, s.depth_zero_to_one ? GL_ZERO_TO_ONE : GL_NEGATIVE_ONE_TO_ONE);
+    if (s.scissor_rows > 0) {
+        glEnable(GL_SCISSOR_TEST);
+        glScissor(0, 0, s.scissor_width, s.scissor_rows);
+    } else {
+        glDisable(GL_SCISSOR_TEST);
+    }
     if (s.depth_clamp) {
         glEnable(GL_DEPTH_CLAMP);
     } else {

@@ -17,6 +17,10 @@ struct PipelineState {
     bool cull_back = false;
     bool depth_clamp = false;
     bool depth_zero_to_one = true;  // glClipControl depth range: [0,1] for reversed-Z
+    // > 0: draw only into the bottom `scissor_rows` pixel rows (the 3D view below a HUD band).
+    // Clears obey the scissor too, so a pass clears before it applies a scissored state.
+    int scissor_rows = 0;
+    int scissor_width = 0;
 };
 
 void apply(const PipelineState& state);

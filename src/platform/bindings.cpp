@@ -2,7 +2,10 @@
 
 #include <SDL_keyboard.h>
 
+#include <algorithm>
 #include <cctype>
+
+#include "core/printable.h"
 
 namespace bz::platform {
 
@@ -26,6 +29,7 @@ constexpr std::array<std::string_view, kActionCount> kNames = {
     "volume_up",
     "volume_down",
     "quit",
+    "show_fps",
     "start",
     "back",
     "cycle_style",
@@ -88,7 +92,7 @@ std::optional<KeyBinding> parse_key(std::string_view text, std::string* error) {
         name.empty() ? SDL_SCANCODE_UNKNOWN : SDL_GetScancodeFromName(name.c_str());
     if (sc == SDL_SCANCODE_UNKNOWN) {
         if (error) {
-            *error = "unknown key '" + std::string(text) +
+            *error = "unknown key '" + printable(text) +
                      "' (use SDL scancode names such as \"Q\", \"Space\", \"Left Ctrl\", "
                      "\"Alt+Return\")";
         }
@@ -131,10 +135,44 @@ Bindings default_bindings() {
     set(Action::volume_up, {key("="), key("Keypad +")});
     set(Action::volume_down, {key("-"), key("Keypad -")});
     set(Action::quit, {key("F10"), key("F4", kModAlt)});
+    set(Action::show_fps, {key("F3")});
     set(Action::start, {key("Return"), key("Keypad Enter"), key("1")});
     set(Action::back, {key("Backspace")});
     set(Action::cycle_style, {key("F6")});
     return b;
+}
+
+std::optional<Action> conflicting_action(const Bindings& b, Action a, const KeyBinding& key) {
+    for (std::size_t i = 0; i < kActionCount; ++i) {
+        if (static_cast<Action>(i) == a) continue;
+        if (std::find(b[i].begin(), b[i].end(), key) != b[i].end()) return static_cast<Action>(i);
+    }
+    return std::nullopt;
+}
+
+std::vector<Action> actions_in_conflict(const Bindings& b) {
+    std::vector<Action> out;
+    for (std::size_t i = 0; i < kActionCount; ++i) {
+        const auto a = static_cast<Action>(i);
+        for (const KeyBinding& k : b[i]) {
+            if (conflicting_action(b, a, k)) {
+                out.push_back(a);
+                break;
+            }
+        }
+    }
+    return out;
+}
+
+std::string keys_label(const Bindings& b, Action a, std::size_t max_keys) {
+    const auto& keys = b[static_cast<std::size_t>(a)];
+    std::string out;
+    for (std::size_t i = 0; i < keys.size() && i < max_keys; ++i) {
+        if (i) out += " / ";
+        out += key_name(keys[i]);
+    }
+    for (char& c : out) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    return out.empty() ? "-" : out;
 }
 
 std::uint8_t modifiers_from_sdl(unsigned sdl_mod) {

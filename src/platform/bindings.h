@@ -31,6 +31,7 @@ enum class Action : std::uint8_t {
     volume_up,
     volume_down,
     quit,
+    show_fps,  // the frame-rate and frame-time readout
     start,  // begin a game, confirm (menus, initials)
     back,   // menus and initials: go back, delete
     cycle_style,  // the next look (scene::next_style), for this run only
@@ -59,6 +60,14 @@ std::string key_name(const KeyBinding& key);  // parse_key(key_name(k)) == k
 
 using Bindings = std::array<std::vector<KeyBinding>, kActionCount>;
 Bindings default_bindings();
+
+// The other action bound to exactly `key`, if any: the options screen shows it as a conflict.
+std::optional<Action> conflicting_action(const Bindings& b, Action a, const KeyBinding& key);
+// Every action with a key that another action also has.
+std::vector<Action> actions_in_conflict(const Bindings& b);
+// The keys of an action for on-screen hints, in capitals: "P / ESCAPE", or "-" for none.
+// At most `max_keys` keys are named.
+std::string keys_label(const Bindings& b, Action a, std::size_t max_keys = 2);
 
 // Maps SDL's modifier state (KMOD_*) to Modifier bits, left and right alike.
 std::uint8_t modifiers_from_sdl(unsigned sdl_mod);

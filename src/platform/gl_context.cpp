@@ -2,6 +2,7 @@
 
 #include <SDL.h>
 
+#include <algorithm>
 #include <cstring>
 
 #include "core/error.h"
@@ -36,7 +37,11 @@ GlContext::GlContext(const ContextOptions& o) : debug_(std::make_unique<gl::Debu
     SDL_GL_SetAttribute(SDL_GL_FRAMEBUFFER_SRGB_CAPABLE, 0);
     Uint32 flags = SDL_WINDOW_OPENGL | SDL_WINDOW_ALLOW_HIGHDPI;
     if (o.mode == WindowMode::hidden) flags |= SDL_WINDOW_HIDDEN;
-    if (o.mode == WindowMode::fullscreen_desktop) flags |= SDL_WINDOW_FULLSCREEN_DESKTOP;
+    const char* driver = SDL_GetCurrentVideoDriver();
+    resize_for_fullscreen_ = driver && std::strcmp(driver, "x11") == 0;
+    if (o.mode == WindowMode::fullscreen_desktop && !resize_for_fullscreen_) {
+        flags |= SDL_WINDOW_FULLSCREEN_DESKTOP;
+    }
     if (o.mode != WindowMode::hidden) flags |= SDL_WINDOW_RESIZABLE;
     window_ = SDL_CreateWindow(o.title.c_str(), SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED,
                                o.width, o.height, flags);
@@ -53,6 +58,7 @@ GlContext::GlContext(const ContextOptions& o) : debug_(std::make_unique<gl::Debu
         throw UserError("cannot load OpenGL 4.5 functions");
     }
     if (o.debug && GLAD_GL_KHR_debug) debug_->install();
+    if (o.mode == WindowMode::fullscreen_desktop && resize_for_fullscreen_) set_fullscreen(true);
 }
 
 GlContext::~GlContext() {
@@ -102,11 +108,40 @@ Vsync GlContext::set_vsync(Vsync v) {
 }
 
 void GlContext::set_fullscreen(bool on) {
-    SDL_SetWindowFullscreen(window_, on ? SDL_WINDOW_FULLSCREEN_DESKTOP : 0);
+    if (on == fullscreen()) return;
+    if (!resize_for_fullscreen_) {
+        SDL_SetWindowFullscreen(window_, on ? SDL_WINDOW_FULLSCREEN_DESKTOP : 0);
+        return;
+    }
+    if (on) {
+        SDL_Rect bounds;
+        if (SDL_GetDisplayBounds(std::max(0, SDL_GetWindowDisplayIndex(window_)), &bounds) != 0) {
+            SDL_SetWindowFullscreen(window_, SDL_WINDOW_FULLSCREEN_DESKTOP);  // the usual way
+            return;
+        }
+        SDL_GetWindowPosition(window_, &windowed_.x, &windowed_.y);
+        SDL_GetWindowSize(window_, &windowed_.w, &windowed_.h);
+        SDL_SetWindowBordered(window_, SDL_FALSE);
+        SDL_SetWindowPosition(window_, bounds.x, bounds.y);
+        SDL_SetWindowSize(window_, bounds.w, bounds.h);
+        SDL_RaiseWindow(window_);
+        resized_fullscreen_ = true;
+    } else {
+        if (SDL_GetWindowFlags(window_) & SDL_WINDOW_FULLSCREEN_DESKTOP) {
+            SDL_SetWindowFullscreen(window_, 0);
+        }
+        if (resized_fullscreen_) {
+            SDL_SetWindowSize(window_, windowed_.w, windowed_.h);
+            SDL_SetWindowPosition(window_, windowed_.x, windowed_.y);
+            SDL_SetWindowBordered(window_, SDL_TRUE);
+        }
+        resized_fullscreen_ = false;
+    }
 }
 
 bool GlContext::fullscreen() const {
-    return (SDL_GetWindowFlags(window_) & SDL_WINDOW_FULLSCREEN_DESKTOP) != 0;
+    return resized_fullscreen_ ||
+           (SDL_GetWindowFlags(window_) & SDL_WINDOW_FULLSCREEN_DESKTOP) != 0;
 }
 
 bool display_available(std::string* why) {

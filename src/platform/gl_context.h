@@ -37,11 +37,21 @@ class GlContext {
     void swap();
     // Returns the mode actually set (adaptive falls back to on when the driver refuses).
     Vsync set_vsync(Vsync v);
+    // Borderless fullscreen on the window's display, and back to the window it was. Under X11
+    // this moves and resizes a borderless window itself rather than asking the window manager:
+    // without one (Xvfb, kiosks) SDL's request changes only SDL's idea of the size, and a
+    // display-sized frame was drawn into the unchanged window.
     void set_fullscreen(bool on);
     bool fullscreen() const;
 
   private:
+    struct WindowedPlace {
+        int x = 0, y = 0, w = 0, h = 0;
+    };
     SDL_Window* window_ = nullptr;
+    bool resize_for_fullscreen_ = false;  // the X11 way above
+    bool resized_fullscreen_ = false;     // in that fullscreen now
+    WindowedPlace windowed_;
     void* context_ = nullptr;
     std::unique_ptr<gl::DebugSink> debug_;
 };

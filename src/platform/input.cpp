@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace bz::platform {
 
@@ -16,6 +17,7 @@ static_assert(SDL_CONTROLLER_BUTTON_MAX <= 32, "Input::Pad::buttons is too small
 // Below this a stick counts as centred: worn sticks rest a little off centre.
 constexpr float kDeadZone = 0.2f;
 constexpr float kTriggerFire = 0.5f;
+constexpr float kStickPress = 0.5f;
 
 // Radial dead zone, then rescaled so the output still reaches 1 at the rim.
 void dead_zone(float& x, float& y) {
@@ -67,19 +69,39 @@ bool Input::action_held(Action a) const {
     return false;
 }
 
+void Input::latch_action(Action a) {
+    switch (a) {
+        case Action::fire:
+            latches_[fire].pending = true;
+            break;
+        case Action::drive_forward:
+            latches_[up].pending = true;
+            break;
+        case Action::drive_back:
+            latches_[down].pending = true;
+            break;
+        case Action::turn_left:
+            latches_[left].pending = true;
+            break;
+        case Action::turn_right:
+            latches_[right].pending = true;
+            break;
+        default:
+            break;
+    }
+}
+
 void Input::key_down(int scancode, unsigned sdl_mod, bool repeat) {
     if (scancode >= 0 && scancode < static_cast<int>(keys_.size())) {
         keys_[static_cast<std::size_t>(scancode)] = true;
     }
     mods_ = modifiers_from_sdl(sdl_mod);
-    if (repeat) return;
     // The most specific binding wins: Alt+Return toggles fullscreen without also doing what a
     // bare Return is bound to. Extra modifiers do not block a binding (fire is on Ctrl).
     int best = -1;
     std::vector<Action> matches;
     for (std::size_t i = 0; i < kActionCount; ++i) {
         const auto action = static_cast<Action>(i);
-        if (is_held_action(action)) continue;
         for (const auto& k : bindings_[i]) {
             if (k.scancode != scancode || (k.mods & ~mods_) != 0) continue;
             const int specificity = __builtin_popcount(k.mods);
@@ -91,62 +113,184 @@ void Input::key_down(int scancode, unsigned sdl_mod, bool repeat) {
             break;
         }
     }
-    pressed_.insert(pressed_.end(), matches.begin(), matches.end());
+    auto has = [&matches](Action a) {
+        return std::find(matches.begin(), matches.end(), a) != matches.end();
+    };
+    // One menu key per press, confirm and back first: Return is both start and (say) a drive
+    // key only if the player bound it so, and then confirming is what they meant.
+    if (!repeat && (has(Action::start) || has(Action::fire))) {
+        menu(MenuKey::confirm);
+    } else if (!repeat && (has(Action::back) || has(Action::pause))) {
+        menu(MenuKey::back);
+    } else if (has(Action::drive_forward)) {
+        menu(MenuKey::up);  // held arrows repeat in menus
+    } else if (has(Action::drive_back)) {
+        menu(MenuKey::down);
+    } else if (has(Action::turn_left)) {
+        menu(MenuKey::left);
+    } else if (has(Action::turn_right)) {
+        menu(MenuKey::right);
+    }
+    if (repeat) return;
+    for (const Action a : matches) {
+        if (is_held_action(a)) {
+            latch_action(a);
+        } else {
+            pressed_.push_back(a);
+        }
+    }
+}
+
+void Input::key_up(int scancode, unsigned sdl_mod) {
+    if (scancode >= 0 && scancode < static_cast<int>(keys_.size()))
+        keys_[static_cast<std::size_t>(scancode)] = false;
+    mods_ = modifiers_from_sdl(sdl_mod);
+    if (capturing_ && scancode == capture_modifier_) {
+        captured_ = KeyBinding{scancode, kModNone};
+        capturing_ = false;
+        capture_modifier_ = -1;
+    }
+}
+
+namespace {
+
+bool is_modifier_key(int scancode) {
+    return scancode >= SDL_SCANCODE_LCTRL && scancode <= SDL_SCANCODE_RGUI;
+}
+
+}  // namespace
+
+void Input::capture_key_down(int scancode, unsigned sdl_mod) {
+    if (scancode >= 0 && scancode < static_cast<int>(keys_.size())) {
+        keys_[static_cast<std::size_t>(scancode)] = true;
+    }
+    mods_ = modifiers_from_sdl(sdl_mod);
+    if (scancode == SDL_SCANCODE_ESCAPE) {
+        captured_ = kCaptureCancelled;
+        capturing_ = false;
+    } else if (is_modifier_key(scancode)) {
+        capture_modifier_ = scancode;  // bound alone if released with nothing else
+    } else if (scancode > SDL_SCANCODE_UNKNOWN && scancode < SDL_NUM_SCANCODES) {
+        captured_ = KeyBinding{scancode, mods_};
+        capturing_ = false;
+        capture_modifier_ = -1;
+    }
+}
+
+void Input::begin_capture() {
+    capturing_ = true;
+    capture_modifier_ = -1;
+    captured_.reset();
+}
+
+std::optional<KeyBinding> Input::take_captured() {
+    return std::exchange(captured_, std::nullopt);
+}
+
+void Input::pad_button(const SDL_Event& e) {
+    const bool down = e.type == SDL_CONTROLLERBUTTONDOWN;
+    if (e.cbutton.button < 32) pads_[e.cbutton.which].buttons[e.cbutton.button] = down;
+    if (!down) return;
+    switch (e.cbutton.button) {
+        case SDL_CONTROLLER_BUTTON_START:
+            // Start pauses in play and starts from the title; the game knows which.
+            pressed_.push_back(Action::pause);
+            pressed_.push_back(Action::start);
+            menu(MenuKey::confirm);
+            break;
+        case SDL_CONTROLLER_BUTTON_A:
+        case SDL_CONTROLLER_BUTTON_RIGHTSHOULDER:
+            latches_[fire].pending = true;
+            if (e.cbutton.button == SDL_CONTROLLER_BUTTON_A) menu(MenuKey::confirm);
+            break;
+        case SDL_CONTROLLER_BUTTON_B:
+        case SDL_CONTROLLER_BUTTON_BACK:
+            pressed_.push_back(Action::back);
+            menu(MenuKey::back);
+            break;
+        case SDL_CONTROLLER_BUTTON_DPAD_UP:
+            latches_[up].pending = true;
+            menu(MenuKey::up);
+            break;
+        case SDL_CONTROLLER_BUTTON_DPAD_DOWN:
+            latches_[down].pending = true;
+            menu(MenuKey::down);
+            break;
+        case SDL_CONTROLLER_BUTTON_DPAD_LEFT:
+            latches_[left].pending = true;
+            menu(MenuKey::left);
+            break;
+        case SDL_CONTROLLER_BUTTON_DPAD_RIGHT:
+            latches_[right].pending = true;
+            menu(MenuKey::right);
+            break;
+        default:
+            break;
+    }
+}
+
+void Input::pad_axis(const SDL_Event& e) {
+    PadAxes& a = pads_[e.caxis.which].axes;
+    const float v = axis_value(e.caxis.value);
+    // A stick pushed past half way is a press for the menus; a trigger pulled past its fire
+    // point is a shot, latched like a button so a quick pull is never lost.
+    auto crossed = [v](float before, float threshold) {
+        return (v > threshold && before <= threshold) || (v < -threshold && before >= -threshold);
+    };
+    switch (e.caxis.axis) {
+        case SDL_CONTROLLER_AXIS_LEFTX:
+            if (crossed(a.left_x, kStickPress)) menu(v > 0 ? MenuKey::right : MenuKey::left);
+            a.left_x = v;
+            break;
+        case SDL_CONTROLLER_AXIS_LEFTY:
+            if (crossed(a.left_y, kStickPress)) {
+                const bool is_up = v < 0;  // SDL's y grows toward the player
+                latches_[is_up ? up : down].pending = true;
+                menu(is_up ? MenuKey::up : MenuKey::down);
+            }
+            a.left_y = v;
+            break;
+        case SDL_CONTROLLER_AXIS_RIGHTX:
+            a.right_x = v;
+            break;
+        case SDL_CONTROLLER_AXIS_RIGHTY:
+            a.right_y = v;
+            break;
+        case SDL_CONTROLLER_AXIS_TRIGGERLEFT:
+        case SDL_CONTROLLER_AXIS_TRIGGERRIGHT: {
+            float& t = e.caxis.axis == SDL_CONTROLLER_AXIS_TRIGGERLEFT ? a.trigger_left
+                                                                        : a.trigger_right;
+            const float next = std::max(0.0f, v);
+            if (next > kTriggerFire && t <= kTriggerFire) latches_[fire].pending = true;
+            t = next;
+            break;
+        }
+        default:
+            break;
+    }
 }
 
 void Input::handle_event(const SDL_Event& e) {
     switch (e.type) {
-        case SDL_KEYDOWN:
-            key_down(static_cast<int>(e.key.keysym.scancode), e.key.keysym.mod, e.key.repeat != 0);
-            break;
-        case SDL_KEYUP: {
+        case SDL_KEYDOWN: {
             const int sc = static_cast<int>(e.key.keysym.scancode);
-            if (sc >= 0 && sc < static_cast<int>(keys_.size()))
-                keys_[static_cast<std::size_t>(sc)] = false;
-            mods_ = modifiers_from_sdl(e.key.keysym.mod);
-            break;
-        }
-        case SDL_CONTROLLERAXISMOTION: {
-            PadAxes& a = pads_[e.caxis.which].axes;
-            const float v = axis_value(e.caxis.value);
-            switch (e.caxis.axis) {
-                case SDL_CONTROLLER_AXIS_LEFTX:
-                    a.left_x = v;
-                    break;
-                case SDL_CONTROLLER_AXIS_LEFTY:
-                    a.left_y = v;
-                    break;
-                case SDL_CONTROLLER_AXIS_RIGHTX:
-                    a.right_x = v;
-                    break;
-                case SDL_CONTROLLER_AXIS_RIGHTY:
-                    a.right_y = v;
-                    break;
-                case SDL_CONTROLLER_AXIS_TRIGGERLEFT:
-                    a.trigger_left = std::max(0.0f, v);
-                    break;
-                case SDL_CONTROLLER_AXIS_TRIGGERRIGHT:
-                    a.trigger_right = std::max(0.0f, v);
-                    break;
-                default:
-                    break;
+            if (capturing_ && e.key.repeat == 0) {
+                capture_key_down(sc, e.key.keysym.mod);
+            } else if (!capturing_) {
+                key_down(sc, e.key.keysym.mod, e.key.repeat != 0);
             }
             break;
         }
+        case SDL_KEYUP:
+            key_up(static_cast<int>(e.key.keysym.scancode), e.key.keysym.mod);
+            break;
+        case SDL_CONTROLLERAXISMOTION:
+            pad_axis(e);
+            break;
         case SDL_CONTROLLERBUTTONDOWN:
-        case SDL_CONTROLLERBUTTONUP: {
-            const bool down = e.type == SDL_CONTROLLERBUTTONDOWN;
-            if (e.cbutton.button < 32) pads_[e.cbutton.which].buttons[e.cbutton.button] = down;
-            if (down) {
-                // Start pauses in play and starts from the title; the game knows which.
-                if (e.cbutton.button == SDL_CONTROLLER_BUTTON_START) {
-                    pressed_.push_back(Action::pause);
-                    pressed_.push_back(Action::start);
-                }
-                if (e.cbutton.button == SDL_CONTROLLER_BUTTON_B) pressed_.push_back(Action::back);
-            }
+        case SDL_CONTROLLERBUTTONUP:
+            pad_button(e);
             break;
-        }
         case SDL_CONTROLLERDEVICEREMOVED:
             pads_.erase(e.cdevice.which);
             break;
@@ -187,6 +331,31 @@ InputState Input::state() const {
     return out;
 }
 
+InputState Input::next_tick() {
+    InputState s = state();
+    bool* fields[latched_count] = {&s.fire, &s.up, &s.down, &s.left, &s.right};
+    for (std::size_t i = 0; i < latches_.size(); ++i) {
+        Latch& l = latches_[i];
+        bool& value = *fields[i];
+        if (l.pending) {
+            if (l.sent) {
+                value = false;  // released and pressed again: show the release first
+            } else {
+                value = true;
+                l.pending = false;
+            }
+        }
+        l.sent = value;
+    }
+    return s;
+}
+
+std::vector<MenuKey> Input::take_menu_keys() {
+    std::vector<MenuKey> out;
+    out.swap(menu_keys_);
+    return out;
+}
+
 std::vector<Action> Input::take_pressed() {
     std::vector<Action> out;
     out.swap(pressed_);
@@ -195,6 +364,7 @@ std::vector<Action> Input::take_pressed() {
 
 void Input::release_all() {
     keys_.fill(false);
+    for (Latch& l : latches_) l.pending = false;
     mods_ = kModNone;
     for (auto& [id, pad] : pads_) {
         pad.buttons.fill(false);

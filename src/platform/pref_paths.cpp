@@ -19,6 +19,7 @@ PrefPaths pref_paths_in(const std::filesystem::path& dir) {
     p.log = dir / "beamzone.log";
     p.screenshots = dir / "screenshots";
     p.gamepad_db = dir / "gamecontrollerdb.txt";
+    p.levels = dir / "levels";
     return p;
 }
 

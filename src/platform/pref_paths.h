@@ -13,6 +13,7 @@ struct PrefPaths {
     std::filesystem::path log;          // beamzone.log
     std::filesystem::path screenshots;  // screenshots/ (made on first use)
     std::filesystem::path gamepad_db;   // gamecontrollerdb.txt: user controller mappings
+    std::filesystem::path levels;       // levels/: the player's own levels, offered in the menu
 };
 
 PrefPaths pref_paths_in(const std::filesystem::path& dir);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cstdio>
+#include <set>
 #include <string>
 
 #include "core/error.h"
@@ -14,6 +15,9 @@ namespace {
 
 constexpr std::string_view kPrefix = "screenshot-";
 constexpr std::string_view kSuffix = ".png";
+// Numbers past this (a file someone named screenshot-99999999999999999999.png) are not
+// continued from: counting on from them would overflow and reuse one name forever.
+constexpr long kMaxNumber = 99'999'999;
 
 // The number in "screenshot-0042.png", or -1 for any other name.
 long number_of(const std::string& name) {
@@ -31,14 +35,33 @@ long number_of(const std::string& name) {
 }  // namespace
 
 std::filesystem::path next_screenshot_path(const std::filesystem::path& dir) {
-    long highest = 0;
+    std::set<long> used;
     std::error_code ec;
     for (std::filesystem::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
-        highest = std::max(highest, number_of(it->path().filename().string()));
+        const long n = number_of(it->path().filename().string());
+        if (n >= 1 && n <= kMaxNumber) used.insert(n);
     }
-    char name[48];
-    std::snprintf(name, sizeof name, "screenshot-%04ld.png", highest + 1);
-    return dir / name;
+    auto path_for = [&](long n) {
+        char name[48];
+        std::snprintf(name, sizeof name, "screenshot-%04ld.png", n);
+        return dir / name;
+    };
+    // One past the highest, as long as that fits; else the lowest free number.
+    long next = used.empty() ? 1 : *used.rbegin() + 1;
+    if (next > kMaxNumber) {
+        next = 1;
+        for (const long n : used) {
+            if (n != next) break;
+            ++next;
+        }
+    }
+    // Never a name that is taken, whatever else is in the folder.
+    while (next <= kMaxNumber && std::filesystem::exists(path_for(next), ec)) ++next;
+    if (next > kMaxNumber) {
+        throw UserError(dir.string() + ": no free screenshot number left (" +
+                        std::to_string(kMaxNumber) + " shots); move some away");
+    }
+    return path_for(next);
 }
 
 std::filesystem::path save_screenshot(const std::filesystem::path& dir, int width, int height,

@@ -4,10 +4,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
+#include <utility>
 #include <sstream>
 
 #include "core/error.h"
 #include "core/file_io.h"
+#include "core/printable.h"
+#include "core/toml_scan.h"
 
 namespace bz::platform {
 
@@ -15,6 +19,48 @@ namespace {
 
 // Settings are a few hundred bytes; anything this large is not a settings file.
 constexpr std::size_t kMaxSettingsBytes = 1u << 20;
+// toml++ recurses once per level of a dotted key, so a key thousands of levels deep overflows
+// the stack; the deepest real setting is keys.fire. Refused before parsing, as levels do.
+constexpr int kMaxSettingsKeyDots = 8;
+// As for levels: a generated file full of junk should not print forever.
+constexpr std::size_t kMaxSettingsErrors = 100;
+
+std::string located(const std::string& source, std::size_t line, std::size_t column,
+                    const std::string& message) {
+    return source + ":" + std::to_string(line) + ":" + std::to_string(column) +
+           ": error: " + message;
+}
+
+// 1-based line and column of a byte offset.
+std::pair<std::size_t, std::size_t> position_of(std::string_view text, std::size_t offset) {
+    std::size_t line = 1, column = 1;
+    for (std::size_t i = 0; i < offset && i < text.size(); ++i) {
+        if (text[i] == '\n') {
+            ++line;
+            column = 1;
+        } else {
+            ++column;
+        }
+    }
+    return {line, column};
+}
+
+// What toml++ must not be given (see core/toml_scan.h), as one positioned message.
+std::optional<std::string> unsafe_toml(std::string_view text, const std::string& source) {
+    if (const auto deep = find_deep_key(text, kMaxSettingsKeyDots)) {
+        std::size_t at = deep->offset;
+        while (at < text.size() && (text[at] == ' ' || text[at] == '\t')) ++at;
+        const auto [line, column] = position_of(text, at);
+        return located(source, line, column,
+                       "key is nested more than " + std::to_string(kMaxSettingsKeyDots) +
+                           " levels deep (too many dots)");
+    }
+    if (const auto bad = find_unsafe_char(text)) {
+        const auto [line, column] = position_of(text, bad->offset);
+        return located(source, line, column, std::string("syntax error: ") + bad->why);
+    }
+    return std::nullopt;
+}
 
 class Reader {
   public:
@@ -24,15 +70,21 @@ class Reader {
         error_at(at ? at->source().begin : toml::source_position{1, 1}, message);
     }
     void error_at(const toml::source_position& b, const std::string& message) {
-        found_.push_back({b.line, b.column,
-                          source_ + ":" + std::to_string(b.line) + ":" + std::to_string(b.column) +
-                              ": error: " + message});
+        found_.push_back({b.line, b.column, located(source_, b.line, b.column, message)});
     }
-    // Errors in file order, however the checks were ordered.
+    // Errors in file order, however the checks were ordered; at most kMaxSettingsErrors
+    // lines, the last of which then says how many were left out.
     void flush() {
         std::stable_sort(found_.begin(), found_.end(), [](const Found& a, const Found& b) {
             return a.line != b.line ? a.line < b.line : a.column < b.column;
         });
+        const std::size_t total = found_.size();
+        if (total > kMaxSettingsErrors) {
+            found_.resize(kMaxSettingsErrors - 1);
+            const std::size_t left_out = total - found_.size();
+            found_.push_back({0, 0, source_ + ": error: " + std::to_string(left_out) +
+                                        " more errors not shown"});
+        }
         for (auto& f : found_) out_.errors.push_back(std::move(f.text));
         found_.clear();
     }
@@ -93,7 +145,7 @@ class Reader {
                 for (std::size_t i = 0; i < kActionCount; ++i) {
                     list += (i ? ", " : "") + std::string(action_name(static_cast<Action>(i)));
                 }
-                error_at(name.source().begin, "unknown action '" + std::string(name.str()) +
+                error_at(name.source().begin, "unknown action '" + printable(name.str()) +
                                                   "' (actions: " + list + ")");
                 continue;
             }
@@ -112,7 +164,7 @@ class Reader {
                 if (!text) why = "a key must be a string such as \"Space\"";
                 if (!key) {
                     error(item,
-                          std::string(name.str()) + ": " + why + "; keeping the default keys");
+                          printable(name.str()) + ": " + why + "; keeping the default keys");
                     ok = false;
                     break;
                 }
@@ -125,10 +177,11 @@ class Reader {
     void unknown_keys(const toml::table& t) {
         static constexpr std::string_view kKnown[] = {"keys",   "volume",     "mute",
                                                       "vsync",  "fullscreen", "pause_on_focus_loss",
-                                                      "preset", "style",      "gamepad"};
+                                                      "preset", "style",      "gamepad",
+                                                      "show_fps"};
         for (const auto& [name, value] : t) {
             if (std::find(std::begin(kKnown), std::end(kKnown), name.str()) == std::end(kKnown)) {
-                error_at(name.source().begin, "unknown setting '" + std::string(name.str()) + "'");
+                error_at(name.source().begin, "unknown setting '" + printable(name.str()) + "'");
             }
         }
     }
@@ -180,13 +233,19 @@ SettingsLoad parse_settings(std::string_view text, const std::string& source,
                             std::span<const std::string> presets) {
     SettingsLoad out;
     out.file_existed = true;
+    if (const auto unsafe = unsafe_toml(text, source)) {
+        out.errors.push_back(*unsafe + "; using default settings");
+        return out;
+    }
     toml::table t;
     try {
         t = toml::parse(text, source);
     } catch (const toml::parse_error& e) {
+        // toml++ counts from 1, but an empty or cut-short file must still say line 1.
         const auto& b = e.source().begin;
-        out.errors.push_back(source + ":" + std::to_string(b.line) + ":" +
-                             std::to_string(b.column) + ": error: " + std::string(e.description()) +
+        out.errors.push_back(located(source, std::max<std::size_t>(b.line, 1),
+                                     std::max<std::size_t>(b.column, 1),
+                                     printable(e.description())) +
                              "; using default settings");
         return out;
     }
@@ -196,6 +255,7 @@ SettingsLoad parse_settings(std::string_view text, const std::string& source,
     r.boolean(t, "mute", s.mute);
     r.boolean(t, "fullscreen", s.fullscreen);
     r.boolean(t, "pause_on_focus_loss", s.pause_on_focus_loss);
+    r.boolean(t, "show_fps", s.show_fps);
 
     const std::string vsyncs[] = {"off", "on", "adaptive"};
     if (const int i = r.choice(t, "vsync", vsyncs, vsync_name(s.vsync)); i >= 0) {
@@ -255,6 +315,8 @@ std::string format_settings(const Settings& s) {
       << "      # vector, vector-xray (no hidden-line removal), toon, sketch, pop-art or halo\n"
       << "gamepad = " << quoted(s.gamepad == GamepadMode::tank ? "tank" : "drive")
       << "          # \"tank\" (two sticks, one per tread) or \"drive\" (left stick)\n"
+      << "show_fps = " << (s.show_fps ? "true" : "false")
+      << "         # frame rate and frame-time readout\n"
       << "\n# Keys per action, as SDL scancode names (\"Q\", \"Space\", \"Left Ctrl\", "
          "\"Alt+Return\").\n"
       << "[keys]\n";

@@ -24,6 +24,7 @@ struct Settings {
     std::string preset = "balanced";
     std::string style = "vector";  // a style name (scene/style.h)
     GamepadMode gamepad = GamepadMode::tank;
+    bool show_fps = false;  // the frame-rate readout (toggled by its key too)
 };
 
 struct SettingsLoad {

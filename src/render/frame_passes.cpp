@@ -31,6 +31,22 @@ void edges_complete(const PassContext& ctx) {
 void sketch_strokes(const PassContext& ctx) { pass_sketch(ctx, false); }
 void sketch_mask(const PassContext& ctx) { pass_sketch(ctx, true); }
 
+// The beam passes hand the picture on (FramePicture): phosphor may replace the lines target
+// with its persistence texture, bloom and composite read whichever it is.
+void phosphor(const PassContext& ctx) {
+    ctx.picture->texture = &pass_phosphor(ctx, ctx.targets.lines, ctx.picture->dt_seconds);
+}
+
+void bloom(const PassContext& ctx) {
+    pass_bloom(ctx, *ctx.picture->texture);
+    ctx.picture->bloom = true;
+}
+
+void composite(const PassContext& ctx) {
+    pass_composite(ctx, *ctx.picture->texture, ctx.picture->bloom, ctx.target_fbo, ctx.targets.width,
+                   ctx.targets.height);
+}
+
 void outline_baseline(const PassContext& ctx) { pass_image_outline(ctx, false); }
 void lines_mask(const PassContext& ctx) { pass_lines(ctx, true); }
 void outline_mask(const PassContext& ctx) { pass_image_outline(ctx, true); }
@@ -55,8 +71,9 @@ std::vector<FramePass> frame_passes(const StyleDef& style, const RenderSettings&
             list.push_back({"lines", lines_counted});
         }
         list.push_back({"hud", pass_hud});
-        if (style.bloom) list.push_back({"bloom", pass_bloom});
-        list.push_back({"composite", pass_composite});
+        if (settings.beam.phosphor != PhosphorDecay::off) list.push_back({"phosphor", phosphor});
+        if (style.bloom && settings.bloom_strength > 0.0f) list.push_back({"bloom", bloom});
+        list.push_back({"composite", composite});
         return list;
     }
     list.push_back({"fill", pass_fill});

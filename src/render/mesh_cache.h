@@ -20,7 +20,8 @@ struct InstanceData {
     glm::mat4 model_view;
     glm::vec4 color;
     glm::vec4 params;  // x: cos(crease angle), y: this instance's index in the buffer,
-                       // z: 1 = smooth shading (filled styles), w: the mesh's bounding radius
+                       // z: intensity (the beam's width follows it: shaders/beam_width.glsl),
+                       // w: 1 = smooth shading (filled styles)
 };
 
 struct GpuMesh {

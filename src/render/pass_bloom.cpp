@@ -2,19 +2,24 @@
 
 namespace bz::render {
 
-// Downsample to the bloom resolution, then a separable linear-sampled Gaussian: horizontal
-// into bloom_b, vertical back into bloom_a.
-void pass_bloom(const PassContext& ctx) {
-    Targets& t = ctx.targets;
-    gl::apply(gl::PipelineState{});
-    ctx.empty_vao.bind();
+namespace {
 
+void set_threshold(const gl::Program& p, const BeamSettings& b) {
+    p.set("u_threshold", b.bloom_threshold);
+    p.set("u_knee", b.bloom_knee);
+}
+
+// Downsample to the bloom resolution, then a separable linear-sampled Gaussian: horizontal
+// into bloom_b, vertical into bloom_out, encoded in 8 bits for the composite's cheap fetch.
+void gaussian_bloom(const PassContext& ctx, const gl::Texture2D& source) {
+    Targets& t = ctx.targets;
     t.bloom_a_fbo.bind();
     const gl::Program& down = ctx.programs.bloom_down;
     down.use();
     down.set("u_source", 0);
     down.set("u_factor", static_cast<int>(ctx.settings.bloom_resolution));
-    t.lines.bind(0);
+    set_threshold(down, ctx.settings.beam);
+    source.bind(0);
     glDrawArrays(GL_TRIANGLES, 0, 3);
 
     const gl::Program& blur = ctx.programs.bloom_blur;  // kernel baked in (programs.cpp)
@@ -22,14 +27,79 @@ void pass_bloom(const PassContext& ctx) {
     blur.set("u_source", 0);
 
     t.bloom_b_fbo.bind();
+    blur.set("u_encode", 0);
     blur.set("u_direction", glm::vec2(1.0f, 0.0f));
     t.bloom_a.bind(0);
     glDrawArrays(GL_TRIANGLES, 0, 3);
 
-    t.bloom_a_fbo.bind();
+    t.bloom_out_fbo.bind();
+    blur.set("u_encode", 1);
     blur.set("u_direction", glm::vec2(0.0f, 1.0f));
     t.bloom_b.bind(0);
     glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+// MAME's bloom: a chain of levels, each half the size of the one before, summed with a
+// weight per level (BeamSettings::mip_weights). Wide, soft glow for little work: the levels
+// past the first cost a fraction of one full-resolution pass together.
+void mip_chain_bloom(const PassContext& ctx, const gl::Texture2D& source) {
+    Targets& t = ctx.targets;
+    const auto& w = ctx.settings.beam.mip_weights;
+    const std::size_t n = t.bloom_mips.size();
+    const gl::Program& down = ctx.programs.bloom_down;
+    down.use();
+    down.set("u_source", 0);
+    for (std::size_t k = 0; k < n; ++k) {
+        t.bloom_mip_fbos[k].bind();
+        down.set("u_factor", k == 0 ? static_cast<int>(ctx.settings.bloom_resolution) : 2);
+        // Only the first level filters by brightness; the rest downsample what it kept.
+        down.set("u_threshold", k == 0 ? ctx.settings.beam.bloom_threshold : 0.0f);
+        down.set("u_knee", ctx.settings.beam.bloom_knee);
+        (k == 0 ? source : t.bloom_mips[k - 1]).bind(0);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+    }
+
+    float total = 0.0f;
+    for (std::size_t k = 0; k < n; ++k) total += mip_weight(w, k);
+    const gl::Program& up = ctx.programs.bloom_up;
+    up.use();
+    up.set("u_coarser", 0);
+    up.set("u_level", 1);
+    up.set("u_final", 0);
+    gl::PipelineState add;
+    add.blend = gl::Blend::add;
+    gl::apply(add);
+    for (std::size_t k = n - 1; k-- > 1;) {  // levels n-2 .. 1
+        t.bloom_mip_fbos[k].bind();
+        up.set("u_ratio", mip_weight(w, k + 1) / mip_weight(w, k));
+        t.bloom_mips[k + 1].bind(0);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+    }
+    gl::apply(gl::PipelineState{});
+    t.bloom_out_fbo.bind();
+    up.set("u_final", 1);
+    up.set("u_ratio", n > 1 ? mip_weight(w, 1) / mip_weight(w, 0) : 0.0f);
+    up.set("u_weight", mip_weight(w, 0) / total);
+    t.bloom_mips[n > 1 ? 1 : 0].bind(0);
+    t.bloom_mips[0].bind(1);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+}  // namespace
+
+float mip_weight(const std::vector<float>& weights, std::size_t level) {
+    // A zero weight would break the chain's ratios; a tiny one switches the level off.
+    return level < weights.size() ? std::max(weights[level], 1e-4f) : 1e-4f;
+}
+
+void pass_bloom(const PassContext& ctx, const gl::Texture2D& source) {
+    gl::apply(gl::PipelineState{});
+    ctx.empty_vao.bind();
+    if (ctx.settings.beam.bloom == BloomKind::mip_chain && !ctx.targets.bloom_mips.empty()) {
+        mip_chain_bloom(ctx, source);
+    } else {
+        gaussian_bloom(ctx, source);
+    }
 }
 
 }  // namespace bz::render

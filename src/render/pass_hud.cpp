@@ -1,3 +1,4 @@
+#include "render/beam_uniforms.h"
 #include "render/passes.h"
 
 namespace bz::render {
@@ -7,12 +8,12 @@ void pass_hud(const PassContext& ctx) {
     if (ctx.hud_vertex_count == 0) return;
     ctx.targets.lines_fbo.bind();
     gl::PipelineState state;
-    state.blend = gl::Blend::max;
+    state.blend = ctx.settings.beam.blend == BeamBlend::additive ? gl::Blend::add : gl::Blend::max;
     gl::apply(state);
     const gl::Program& p = ctx.programs.hud;
     p.use();
     p.set("u_viewport", glm::vec2(static_cast<float>(ctx.targets.width), static_cast<float>(ctx.targets.height)));
-    p.set("u_half_width", ctx.settings.line_half_width_px);
+    set_beam_uniforms(p, ctx.settings.beam, ctx.settings.line_half_width_px, ctx.targets.height, ctx.seed, false);
     ctx.hud_vao.bind();
     glDrawArrays(GL_LINES, 0, ctx.hud_vertex_count);
 }

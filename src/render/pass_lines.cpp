@@ -1,3 +1,4 @@
+#include "render/beam_uniforms.h"
 #include "render/passes.h"
 
 namespace bz::render {
@@ -6,7 +7,7 @@ void set_line_uniforms(const gl::Program& p, const PassContext& ctx, float half_
     const auto& s = ctx.settings;
     p.set("u_proj", ctx.cam.proj);
     p.set("u_viewport", glm::vec2(static_cast<float>(ctx.targets.width), static_cast<float>(ctx.targets.height)));
-    p.set("u_half_width", half_width);
+    p.set("u_half_width", half_width);  // the mask's quads; lines take theirs from the beam
     p.set("u_near", ctx.cam.near);
     p.set("u_far", ctx.cam.far);
     p.set("u_bias_scale", 1.0f / (1.0f - s.depth_bias));
@@ -26,19 +27,27 @@ void set_line_uniforms(const gl::Program& p, const PassContext& ctx, float half_
 
 // The feature-line pass: the geometry shader finds and extrudes edges, the fragment shader
 // runs the spine test against the prepass depth and shades the beam. GL_MAX blending keeps
-// overlapping ends and crossings from getting brighter than a single line.
+// overlapping ends and crossings from getting brighter than a single line; additive blending
+// (BeamBlend::additive, MAME's) lets them add, as on a tube.
 void pass_lines(const PassContext& ctx, bool mask_mode) {
     const gl::Program& program = mask_mode ? ctx.programs.mask : ctx.programs.lines;
     (mask_mode ? ctx.targets.mask_fbo : ctx.targets.lines_fbo).bind();
     gl::PipelineState state;
-    state.blend = gl::Blend::max;
+    state.blend = !mask_mode && ctx.settings.beam.blend == BeamBlend::additive ? gl::Blend::add : gl::Blend::max;
     state.depth_zero_to_one = ctx.cam.zero_to_one;
     gl::apply(state);
     glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
     glClear(GL_COLOR_BUFFER_BIT);
+    if (!mask_mode && ctx.view_rows > 0 && ctx.view_rows < ctx.targets.height) {
+        state.scissor_rows = ctx.view_rows;  // after the clear, which must cover every row
+        state.scissor_width = ctx.targets.width;
+        gl::apply(state);
+    }
     program.use();
     // The mask needs only the pixels the spine crosses: a quad one pixel to each side.
     set_line_uniforms(program, ctx, mask_mode ? 1.0f : ctx.settings.line_half_width_px);
+    set_beam_uniforms(program, ctx.settings.beam, ctx.settings.line_half_width_px, ctx.targets.height, ctx.seed,
+                      mask_mode);
     ctx.targets.depth.bind(0);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, ctx.instances.id());
     for (const Batch& b : ctx.batches.batches) {

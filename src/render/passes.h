@@ -3,6 +3,7 @@
 // style's list (frame_passes.h). Each states the whole GL state it needs (gl::apply), so
 // order is the only coupling.
 #include <span>
+#include <vector>
 
 #include "gl/state.h"
 #include "gl/vertex_array.h"
@@ -14,6 +15,14 @@
 #include "render/targets.h"
 
 namespace bz::render {
+
+// What the beam passes hand on within one frame: the picture bloom and composite read (the
+// lines target, or a phosphor texture after pass_phosphor), and whether bloom ran.
+struct FramePicture {
+    const gl::Texture2D* texture = nullptr;
+    double dt_seconds = 0.0;  // game time since the last picture (phosphor decay)
+    bool bloom = false;
+};
 
 struct PassContext {
     const Programs& programs;
@@ -34,6 +43,11 @@ struct PassContext {
     GLuint target_fbo = 0;                // where composite writes
     FrameStats* stats = nullptr;          // passes that count something add it here
     GLuint edge_query = 0;                // GL_PRIMITIVES_GENERATED query for count_edges
+    FramePicture* picture = nullptr;      // the picture phosphor, bloom and composite pass on
+    std::uint32_t seed = 0;               // the frame's beam flicker seed (FrameList::seed)
+    // Pixel rows from the bottom that the scene's lines may light (FrameList::view_top); the
+    // rows above belong to the HUD band. 0: all of them.
+    int view_rows = 0;
 };
 
 void pass_prepass(const PassContext& ctx);
@@ -49,8 +63,15 @@ void pass_lines(const PassContext& ctx, bool mask_mode);
 void set_line_uniforms(const gl::Program& program, const PassContext& ctx, float half_width);
 void pass_edges(const PassContext& ctx);
 void pass_hud(const PassContext& ctx);
-void pass_bloom(const PassContext& ctx);
-void pass_composite(const PassContext& ctx);
+// Beam passes (the vector-monitor look, BeamSettings); each reads the image it is given, so a
+// style may skip any of them. pass_phosphor returns the picture that bloom and composite read.
+const gl::Texture2D& pass_phosphor(const PassContext& ctx, const gl::Texture2D& beam, double dt_seconds);
+void pass_bloom(const PassContext& ctx, const gl::Texture2D& source);
+// The weight of one level of the bloom chain (never zero: the chain divides by it).
+float mip_weight(const std::vector<float>& weights, std::size_t level);
+// `bloom`: false draws the picture without glow (bloom_out is not read).
+void pass_composite(const PassContext& ctx, const gl::Texture2D& picture, bool bloom, GLuint target_fbo,
+                    int width, int height);
 // The image-space outline baseline (LineMethod::image_outline), in place of prepass + lines.
 void pass_outline_prepass(const PassContext& ctx);
 void pass_image_outline(const PassContext& ctx, bool mask_mode);

@@ -46,6 +46,8 @@ Programs load_programs(const RenderSettings& settings) {
     p.bloom_blur = load_bloom_blur(settings);
     p.composite = gl::Program({stage(GL_VERTEX_SHADER, "fullscreen.vert"),
                                stage(GL_FRAGMENT_SHADER, "composite.frag")});
+    p.bloom_up = gl::Program({stage(GL_VERTEX_SHADER, "fullscreen.vert"), stage(GL_FRAGMENT_SHADER, "bloom_up.frag")});
+    p.phosphor = gl::Program({stage(GL_VERTEX_SHADER, "fullscreen.vert"), stage(GL_FRAGMENT_SHADER, "phosphor.frag")});
     p.outline_prepass = gl::Program({stage(GL_VERTEX_SHADER, "outline_prepass.vert"),
                                      stage(GL_FRAGMENT_SHADER, "outline_prepass.frag")});
     p.image_outline = gl::Program({stage(GL_VERTEX_SHADER, "fullscreen.vert"),

@@ -16,6 +16,8 @@ struct Programs {
     gl::Program bloom_down;
     gl::Program bloom_blur;
     gl::Program composite;
+    gl::Program bloom_up;   // one step up the bloom chain (BloomKind::mip_chain)
+    gl::Program phosphor;   // phosphor persistence
     gl::Program outline_prepass;     // image-space baseline: depth + face normals
     gl::Program image_outline;       // ... Sobel into the lines target
     gl::Program image_outline_mask;  // ... Sobel into the mask

@@ -1,6 +1,7 @@
 #include "render/renderer.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "core/error.h"
 #include "render/frame_passes.h"
@@ -24,14 +25,19 @@ struct Renderer::Impl {
     FrameStats stats;
     GLuint last_target = 0;
     GLuint edge_query = 0;
+    // The picture bloom and composite read last frame (the lines target, or a phosphor
+    // texture), and when that frame was shown, for phosphor decay and frame holding.
+    const gl::Texture2D* last_picture = nullptr;
+    double last_time_s = 0.0;
 
     Impl(const RenderSettings& s, int w, int h, gl::TimingMethod timing)
         : settings(s), width(std::max(w, 1)), height(std::max(h, 1)), timer(timing) {
         programs = load_programs(settings);
         targets = make_targets(width, height, settings);
-        hud_vao.bind_buffer(0, hud_vertices, sizeof(float) * 5);
+        hud_vao.bind_buffer(0, hud_vertices, sizeof(float) * 6);
         hud_vao.float_attribute(0, 0, 2, 0);
         hud_vao.float_attribute(1, 0, 3, sizeof(float) * 2);
+        hud_vao.float_attribute(2, 0, 1, sizeof(float) * 5);
         glGenQueries(1, &edge_query);
     }
     ~Impl() { glDeleteQueries(1, &edge_query); }
@@ -42,12 +48,17 @@ struct Renderer::Impl {
 
     PassContext context(const scene::MeshLibrary& meshes, const FrameBatches& batches,
                         const CameraMatrices& cam, const StyleDef& style, GLsizei hud_count,
-                        GLuint target) {
+                        GLuint target, const scene::FrameList& frame, FramePicture* picture) {
+        // The rows below FrameList::view_top (NDC y), rounded so the band's edge is never lit.
+        const float top = std::clamp(frame.view_top, -1.0f, 1.0f);
+        const int view_rows =
+            top >= 1.0f ? 0 : std::max(1, static_cast<int>((top + 1.0f) * 0.5f * static_cast<float>(height)));
         return PassContext{programs,  targets,  gpu_meshes, meshes,
                            batches,   cam,      settings,   style.hidden_lines_removed,
                            empty_vao, instances, edges,     style,
                            style_textures, hud_vao, hud_count, target,
-                           &stats,    edge_query};
+                           &stats,    edge_query, picture, frame.seed,
+                           view_rows};
     }
 
     CameraMatrices camera(const scene::FrameList& frame) const {
@@ -69,10 +80,10 @@ struct Renderer::Impl {
 
     GLsizei upload_hud(const std::vector<scene::HudLine>& hud) {
         std::vector<float> v;
-        v.reserve(hud.size() * 10);
+        v.reserve(hud.size() * 12);
         for (const auto& l : hud) {
             const glm::vec3 c = l.color * l.intensity;
-            for (const glm::vec2& p : {l.a, l.b}) v.insert(v.end(), {p.x, p.y, c.r, c.g, c.b});
+            for (const glm::vec2& p : {l.a, l.b}) v.insert(v.end(), {p.x, p.y, c.r, c.g, c.b, l.intensity});
         }
         hud_vertices.set(std::span<const float>(v), GL_STREAM_DRAW);
         return static_cast<GLsizei>(hud.size() * 2);
@@ -91,24 +102,55 @@ void Renderer::resize(int width, int height) {
     impl_->width = width;
     impl_->height = height;
     impl_->targets = make_targets(width, height, impl_->settings);
+    impl_->last_picture = nullptr;
 }
 
 void Renderer::set_settings(const RenderSettings& settings) {
+    const BeamSettings& old_beam = impl_->settings.beam;
     const bool remake = settings.depth != impl_->settings.depth ||
                         settings.bloom_resolution != impl_->settings.bloom_resolution ||
-                        settings.method != impl_->settings.method;
+                        settings.method != impl_->settings.method || settings.beam.bloom != old_beam.bloom ||
+                        settings.beam.mip_weights.size() != old_beam.mip_weights.size() ||
+                        (settings.beam.phosphor == PhosphorDecay::off) != (old_beam.phosphor == PhosphorDecay::off);
     const bool new_kernel = settings.bloom_taps != impl_->settings.bloom_taps ||
                             settings.bloom_sigma_px != impl_->settings.bloom_sigma_px;
     if (new_kernel) impl_->programs.bloom_blur = load_bloom_blur(settings);
     impl_->settings = settings;
-    if (remake) impl_->targets = make_targets(impl_->width, impl_->height, settings);
+    if (remake) {
+        impl_->targets = make_targets(impl_->width, impl_->height, settings);
+        impl_->last_picture = nullptr;
+    }
 }
 
 const RenderSettings& Renderer::settings() const { return impl_->settings; }
 
+namespace {
+
+// With a held refresh (BeamSettings::refresh_hz), frames whose times fall into the same
+// refresh period show the same picture.
+bool same_refresh(double hz, double a_s, double b_s) {
+    return hz > 0.0 && std::floor(a_s * hz) == std::floor(b_s * hz);
+}
+
+}  // namespace
+
 void Renderer::render(const scene::FrameList& frame, const scene::MeshLibrary& meshes,
                       unsigned target_fbo) {
     Impl& m = *impl_;
+    const GLuint held_target = target_fbo == kOffscreen ? m.targets.output_fbo.id() : target_fbo;
+    if (m.last_picture && same_refresh(m.settings.beam.refresh_hz, frame.time_s, m.last_time_s)) {
+        // The original machine redrew at ~41 Hz: hold the last picture, only show it again.
+        m.last_target = held_target;
+        const CameraMatrices cam = m.camera(frame);
+        const FrameBatches none;
+        const PassContext ctx = m.context(meshes, none, cam, m.style_of(frame), 0, held_target, frame, nullptr);
+        m.timer.begin_frame();
+        m.timer.begin("composite");
+        pass_composite(ctx, *m.last_picture, m.settings.bloom_strength > 0.0f, held_target, m.width, m.height);
+        m.timer.end();
+        m.timer.end_frame();
+        return;
+    }
     const CameraMatrices cam = m.camera(frame);
     const StyleDef& style = m.style_of(frame);
     m.gpu_meshes.set_edge_lists(style_needs_edge_buffer(style));
@@ -117,7 +159,9 @@ void Renderer::render(const scene::FrameList& frame, const scene::MeshLibrary& m
     m.stats = batches.stats;
     const GLuint target = target_fbo == kOffscreen ? m.targets.output_fbo.id() : target_fbo;
     m.last_target = target;
-    const PassContext ctx = m.context(meshes, batches, cam, style, hud_count, target);
+    // The first picture after new targets has no past: its history is black either way.
+    FramePicture picture{&m.targets.lines, m.last_picture ? frame.time_s - m.last_time_s : 0.0, false};
+    const PassContext ctx = m.context(meshes, batches, cam, style, hud_count, target, frame, &picture);
 
     // The frame is the style's list of passes (frame_passes.cpp), each timed under its name.
     m.timer.begin_frame();
@@ -127,6 +171,9 @@ void Renderer::render(const scene::FrameList& frame, const scene::MeshLibrary& m
         m.timer.end();
     }
     m.timer.end_frame();
+    // Only the beam styles' pictures can be held and shown again (pass_composite).
+    m.last_picture = style.fill == FillPass::none ? picture.texture : nullptr;
+    m.last_time_s = frame.time_s;
 }
 
 std::vector<std::uint8_t> Renderer::render_mask(const scene::FrameList& frame,
@@ -136,7 +183,8 @@ std::vector<std::uint8_t> Renderer::render_mask(const scene::FrameList& frame,
     const StyleDef& style = m.style_of(frame);
     m.gpu_meshes.set_edge_lists(style_needs_edge_buffer(style));
     const FrameBatches batches = m.prepare(frame, meshes, cam);
-    const PassContext ctx = m.context(meshes, batches, cam, style, 0, m.targets.output_fbo.id());
+    const PassContext ctx = m.context(meshes, batches, cam, style, 0, m.targets.output_fbo.id(),
+                                      frame, nullptr);
     for (const FramePass& pass : mask_passes(style, m.settings)) pass.run(ctx);
     std::vector<std::uint8_t> rows(static_cast<std::size_t>(m.width) * m.height);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
@@ -168,12 +216,18 @@ std::vector<std::uint8_t> Renderer::read_color() {
     return out;
 }
 
-std::vector<float> Renderer::read_lines_hdr() {
+std::vector<float> Renderer::read_lines_hdr() { return read_hdr(impl_->targets.lines); }
+
+std::vector<float> Renderer::read_picture_hdr() {
+    return read_hdr(impl_->last_picture ? *impl_->last_picture : impl_->targets.lines);
+}
+
+std::vector<float> Renderer::read_hdr(const gl::Texture2D& texture) {
     Impl& m = *impl_;
     const std::size_t row = static_cast<std::size_t>(m.width) * 4;
     std::vector<float> rows(row * static_cast<std::size_t>(m.height));
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
-    glGetTextureImage(m.targets.lines.id(), 0, GL_RGBA, GL_FLOAT,
+    glGetTextureImage(texture.id(), 0, GL_RGBA, GL_FLOAT,
                       static_cast<GLsizei>(rows.size() * sizeof(float)), rows.data());
     std::vector<float> out(rows.size());
     for (int y = 0; y < m.height; ++y) {

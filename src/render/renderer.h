@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "gl/pass_timer.h"
+#include "gl/texture.h"
 #include "render/settings.h"
 #include "scene/frame_list.h"
 #include "scene/mesh_library.h"
@@ -50,6 +51,9 @@ public:
     // The HDR lines target (lines + HUD, before bloom) of the last render(): RGBA float,
     // row 0 at the top. For checks such as "no NaN or Inf pixels".
     std::vector<float> read_lines_hdr();
+    // The picture of the last render() as bloom and composite saw it: the lines target, or,
+    // with phosphor persistence on, this frame's lines over the decayed earlier pictures.
+    std::vector<float> read_picture_hdr();
 
     // Recompiles every shader from shaders/. On error keeps the old programs and returns false
     // with the message (file:line:col) in *error.
@@ -67,6 +71,7 @@ public:
     int height() const;
 
 private:
+    std::vector<float> read_hdr(const gl::Texture2D& texture);
     struct Impl;
     std::unique_ptr<Impl> impl_;
 };

@@ -22,6 +22,45 @@ enum class LineMethod {
     image_outline,  // baseline: Sobel edges on the prepass depth and normals (pass_image_outline)
 };
 
+// The vector beam: how a line's intensity becomes width and brightness, how lines combine,
+// how the phosphor holds them, and the glow. The `classic` look is the original beamzone beam
+// (constant width, GL_MAX, Gaussian bloom); `mame` follows MAME's vector renderer
+// (src/emu/video/vector.cpp and its monochrome vector preset) and goes beyond it (dwell,
+// overdrive defocus, frame-rate independent phosphor). Widths are full widths in pixels on a
+// 1080-line screen, scaled to the target's height.
+enum class BeamBlend { max, additive };
+enum class PhosphorDecay { off, exponential, power_law };
+enum class BloomKind { gaussian, mip_chain };
+
+struct BeamSettings {
+    std::string look = "classic";
+    BeamBlend blend = BeamBlend::max;
+    // Width = min + sigmoid(intensity * nominal, weight) * (max - min) (MAME's normalized
+    // tunable sigmoid); min == max keeps the preset's constant line width.
+    bool intensity_width = false;
+    float width_min_px = 2.1f;
+    float width_max_px = 8.4f;
+    float intensity_weight = 0.75f;
+    float nominal = 0.75f;        // the MAME intensity (0..1) of a line of intensity 1
+    float flicker = 0.0f;         // intensity -= intensity * random * flicker, per line
+    // Dwell (MAME issue #399): the beam spends a fixed time on every vector, so short vectors
+    // and dots get more energy per pixel: gain = (length + dwell) / length, at most dwell_max.
+    float dwell_px = 0.0f;        // at 1080 lines
+    float dwell_max = 1.0f;
+    // Overdrive (MAME issue #14180): above MAME intensity 1 the spot widens and softens
+    // instead of clipping: width x (1 + defocus * excess), peak / that factor.
+    float defocus = 0.0f;
+    PhosphorDecay phosphor = PhosphorDecay::off;
+    float persistence_ms = 20.0f;  // exponential: tau; power law: the time to half brightness
+    float power_law_exponent = 2.0f;
+    BloomKind bloom = BloomKind::gaussian;
+    std::vector<float> mip_weights;  // mip_chain: weight of each level, half resolution first
+    float bloom_threshold = 0.0f;    // glow only from brightness above this (peak channel) ...
+    float bloom_knee = 0.0f;         // ... with a soft knee of this half-width
+    bool overlay = false;            // Battlezone's overlay: top 20% red, the rest green
+    float refresh_hz = 0.0f;         // > 0: hold frames to this refresh (the original's ~41 Hz)
+};
+
 struct RenderSettings {
     std::string preset = "balanced";
     DepthFormat depth = DepthFormat::reversed_f32;
@@ -47,10 +86,15 @@ struct RenderSettings {
     // The halo style's cubic silhouette smoothing (seed 004); off to compare with the plain
     // polygonal outline (render --no-smoothing, the smoothing test).
     bool cubic_smoothing = true;
+    BeamSettings beam;
 };
 
 // "fast", "balanced" or "high"; throws UserError naming the valid ones otherwise.
 RenderSettings preset(std::string_view name);
 const std::vector<std::string>& preset_names();
+
+// "classic" or "mame"; throws UserError naming the valid ones otherwise.
+BeamSettings beam_look(std::string_view name);
+const std::vector<std::string>& beam_look_names();
 
 }  // namespace bz::render

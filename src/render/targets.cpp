@@ -16,12 +16,14 @@ Targets make_targets(int width, int height, const RenderSettings& s) {
     const int bw = std::max(1, width / f), bh = std::max(1, height / f);
     t.bloom_a = gl::Texture2D(bw, bh, GL_RGBA16F, gl::Filter::linear);
     t.bloom_b = gl::Texture2D(bw, bh, GL_RGBA16F, gl::Filter::linear);
+    t.bloom_out = gl::Texture2D(bw, bh, GL_RGBA8, gl::Filter::linear);
     t.mask = gl::Texture2D(width, height, GL_R8, gl::Filter::nearest);
     t.output = gl::Texture2D(width, height, GL_RGBA8, gl::Filter::nearest);
     t.depth_fbo = gl::Framebuffer({}, &t.depth);
     t.lines_fbo = gl::Framebuffer({&t.lines}, nullptr);
     t.bloom_a_fbo = gl::Framebuffer({&t.bloom_a}, nullptr);
     t.bloom_b_fbo = gl::Framebuffer({&t.bloom_b}, nullptr);
+    t.bloom_out_fbo = gl::Framebuffer({&t.bloom_out}, nullptr);
     t.mask_fbo = gl::Framebuffer({&t.mask}, nullptr);
     t.output_fbo = gl::Framebuffer({&t.output}, nullptr);
     t.canvas = gl::Texture2D(width, height, GL_RGBA8, gl::Filter::nearest);
@@ -32,6 +34,24 @@ Targets make_targets(int width, int height, const RenderSettings& s) {
     t.canvas_shrunk_fbo = gl::Framebuffer({&t.canvas}, &t.shrunk_depth);
     t.shrunk_fbo = gl::Framebuffer({}, &t.shrunk_depth);
     t.halo_fbo = gl::Framebuffer({&t.halo}, &t.shrunk_depth);
+    if (s.beam.bloom == BloomKind::mip_chain) {
+        int lw = bw, lh = bh;
+        const std::size_t levels = std::clamp<std::size_t>(s.beam.mip_weights.size(), 1, 12);
+        for (std::size_t k = 0; k < levels; ++k) {
+            if (k > 0 && lw == 1 && lh == 1) break;
+            t.bloom_mips.emplace_back(lw, lh, GL_RGBA16F, gl::Filter::linear);
+            lw = std::max(1, lw / 2);
+            lh = std::max(1, lh / 2);
+        }
+        for (const gl::Texture2D& level : t.bloom_mips) t.bloom_mip_fbos.emplace_back(std::vector{&level}, nullptr);
+    }
+    if (s.beam.phosphor != PhosphorDecay::off) {
+        for (int i = 0; i < 2; ++i) {
+            t.phosphor[i] = gl::Texture2D(width, height, GL_RGBA16F, gl::Filter::linear);
+            glClearTexImage(t.phosphor[i].id(), 0, GL_RGBA, GL_FLOAT, nullptr);  // starts black
+            t.phosphor_fbo[i] = gl::Framebuffer({&t.phosphor[i]}, nullptr);
+        }
+    }
     if (s.method == LineMethod::image_outline) {
         t.normals = gl::Texture2D(width, height, GL_RGBA8, gl::Filter::nearest);
         t.normals_fbo = gl::Framebuffer({&t.normals}, &t.depth);

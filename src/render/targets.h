@@ -1,5 +1,8 @@
 #pragma once
 // The offscreen images one frame renders into.
+#include <array>
+#include <vector>
+
 #include "gl/framebuffer.h"
 #include "render/settings.h"
 
@@ -12,6 +15,7 @@ struct Targets {
     gl::Texture2D lines;   // HDR lines + HUD, RGBA16F, GL_MAX blended
     gl::Texture2D bloom_a; // bloom ping-pong at the bloom resolution
     gl::Texture2D bloom_b;
+    gl::Texture2D bloom_out; // the finished bloom, RGBA8 sqrt-encoded (shaders/bloom_encoding.glsl)
     gl::Texture2D mask;    // R8 visible-spine mask
     gl::Texture2D output;  // RGBA8 composite, for PNGs and screenshots
     gl::Texture2D normals; // RGBA8 face normals, only for LineMethod::image_outline
@@ -25,8 +29,16 @@ struct Targets {
     gl::Framebuffer canvas_fbo;        // canvas alone (strokes read the depth as a texture)
     gl::Framebuffer canvas_shrunk_fbo; // canvas + shrunk depth (halo strokes depth-test it)
     gl::Framebuffer shrunk_fbo, halo_fbo;
-    gl::Framebuffer depth_fbo, lines_fbo, bloom_a_fbo, bloom_b_fbo, mask_fbo, output_fbo;
+    gl::Framebuffer depth_fbo, lines_fbo, bloom_a_fbo, bloom_b_fbo, bloom_out_fbo, mask_fbo, output_fbo;
     gl::Framebuffer normals_fbo;  // normals + depth
+    // BloomKind::mip_chain: level 0 at the bloom resolution, each next one half as large.
+    std::vector<gl::Texture2D> bloom_mips;
+    std::vector<gl::Framebuffer> bloom_mip_fbos;
+    // Phosphor persistence: the picture shown last frame and the one drawn now, swapped each
+    // frame (RGBA16F, alpha = age for the power law). Only when BeamSettings::phosphor is on.
+    std::array<gl::Texture2D, 2> phosphor;
+    std::array<gl::Framebuffer, 2> phosphor_fbo;
+    int phosphor_front = 0;  // which one holds the last picture
 };
 
 Targets make_targets(int width, int height, const RenderSettings& settings);

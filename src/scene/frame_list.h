@@ -49,6 +49,14 @@ struct FrameList {
     std::vector<DrawItem> items;
     std::vector<HudLine> hud;
     Style style = Style::vector;
+    // When this frame is shown, in seconds of game time (only differences matter: phosphor
+    // decay and frame holding follow it), and the seed of its beam flicker. Both come from the
+    // simulation, so replays and benchmarks draw the same pictures.
+    double time_s = 0.0;
+    std::uint32_t seed = 0;
+    // NDC y (= HUD units) above which the scene's lines are not drawn: the play HUD's band,
+    // as the 1980 cabinet's periscope view ends under its radar strip. 1: the whole screen.
+    float view_top = 1.0f;
 };
 
 }  // namespace bz::scene

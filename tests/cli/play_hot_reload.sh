@@ -3,7 +3,7 @@
 # while the last good level keeps running; fixing the file brings the new level into the
 # running game (not a new one: its tick count goes on), the level's [render] style follows the
 # edit, and the recording in progress ends at the edit and still verifies against the level it
-# was made on. SIGTERM then ends the game cleanly (SDL turns it into a quit event).
+# was made on. SIGTERM then ends the game cleanly (play quits as when its window is closed).
 set -euo pipefail
 bin=$1
 work=$(mktemp -d)

@@ -32,11 +32,11 @@ expect 1 "state hash mismatch at tick [0-9]+" replay "$work/tampered.bzr" --veri
 
 # Broken files: one line each, with the file and the line.
 printf 'hello\n' >"$work/junk.bzr"
-expect 1 "junk.bzr:1: error: not a beamzone replay" replay "$work/junk.bzr" --verify
+expect 1 "junk.bzr:1:1: error: not a beamzone replay" replay "$work/junk.bzr" --verify
 head -c 400 "$work/demo.bzr" >"$work/cut.bzr"
-expect 1 "cut.bzr:[0-9]+: error: " replay "$work/cut.bzr" --verify
+expect 1 "cut.bzr:[0-9]+:[0-9]+: error: " replay "$work/cut.bzr" --verify
 sed 's/^ticks .*/ticks 5/' "$work/demo.bzr" >"$work/count.bzr"
-expect 1 "count.bzr:[0-9]+: error: more commands than" replay "$work/count.bzr" --verify
+expect 1 "count.bzr:[0-9]+:[0-9]+: error: run length [0-9]+ makes more commands than" replay "$work/count.bzr" --verify
 expect 1 "file not found" replay "$work/missing.bzr" --verify
 expect 1 "not a regular file" replay /dev/zero --verify
 head -c 100000 /dev/urandom >"$work/random.bzr"

@@ -47,55 +47,54 @@ TEST(HighScores, InsertRanksAndDropsTheLowest) {
     EXPECT_EQ(*t.insert({"TIE", second}), 2u);
 }
 
+HighScoreBook book_of(const HighScoreTable& t) {
+    HighScoreBook b;
+    b.set(level_key("Classic", 0x1234), t);
+    return b;
+}
+
 TEST(HighScores, SerialiseParseRoundTrip) {
     HighScoreTable t = HighScoreTable::defaults();
     t.insert({"A B", 123456});
-    const HighScoreTable back = parse_highscores(serialise(t), "hs");
-    EXPECT_EQ(back, t);
+    HighScoreBook book = book_of(t);
+    book.set(level_key("Easy one", 0xfedcba9876543210), HighScoreTable::defaults());
+    book.set(kSharedTableKey, t);
+    const HighScoreParse back = parse_highscores(serialise(book), "hs");
+    EXPECT_TRUE(back.errors.empty()) << back.errors.front();
+    EXPECT_EQ(back.book, book);
 }
 
-TEST(HighScores, CorruptOrPartialFilesFallBackToDefaultsWithAMessage) {
-    TempDir dir("bz_hs_corrupt");
-    const fs::path f = dir.path / "highscores.txt";
+TEST(HighScores, CorruptOrPartialFilesAreReportedWithLineAndColumn) {
     HighScoreTable t = HighScoreTable::defaults();
     t.insert({"ZZZ", 500000});
-    const std::string good = serialise(t);
+    const std::string good = serialise(book_of(t));
 
     struct Case {
         std::string text;
         std::string expect;
     };
     const Case cases[] = {
-        {good.substr(0, good.size() / 2), "highscores.txt:"},  // cut mid-line
-        {good.substr(0, good.find("EDR")), "cut short"},       // cut at a line end
-        {"garbage\n", "highscores.txt:1: error: not a beamzone high-score file"},
-        {"beamzone-highscores 1\nABC 12x\nend\n", "highscores.txt:2: error: score '12x'"},
-        {"beamzone-highscores 1\nab 5\n", "highscores.txt:2: error: expected three initials"},
-        {"beamzone-highscores 1\nAAA 5\nBBB 9\n",
-         "highscores.txt:3: error: entries are not sorted"},
-        {std::string("beamzone-highscores 1\nA\0C 5\n", 27), "highscores.txt:2: error: initials"},
-        {"", "empty"},
+        {good.substr(0, good.size() / 2), "hs:"},           // cut mid-line
+        {good.substr(0, good.find("EDR")), "cut short"},    // cut at a line end
+        {"garbage\n", "hs:1:1: error: not a beamzone high-score file"},
+        {"beamzone-highscores 1\nABC 12x\nend\n", "hs:2:5: error: score '12x'"},
+        {"beamzone-highscores 1\nab 5\nend\n", "hs:2:1: error: expected three initials"},
+        {std::string("beamzone-highscores 1\nA") + '\0' + "C 5\nend\n",
+         "hs:2:2: error: initials"},
+        {"beamzone-highscores 2\nABC 5\nend\n", "hs:2:1: error: an entry before the first"},
+        {"", "hs:1:1: error: empty"},
     };
     for (const Case& c : cases) {
-        write_file_atomic(f, c.text);
-        const HighScoreLoad load = load_highscores(f);
-        EXPECT_EQ(load.table, HighScoreTable::defaults()) << c.text;
-        EXPECT_NE(load.warning.find(c.expect), std::string::npos) << load.warning;
-        EXPECT_NE(load.warning.find("using the default"), std::string::npos);
+        const HighScoreParse r = parse_highscores(c.text, "hs");
+        ASSERT_FALSE(r.errors.empty()) << c.text;
+        EXPECT_NE(r.errors.front().find(c.expect), std::string::npos) << r.errors.front();
     }
-
-    // Missing: defaults, no warning. A directory: defaults with a message.
-    const HighScoreLoad missing = load_highscores(dir.path / "nope.txt");
-    EXPECT_TRUE(missing.warning.empty());
-    EXPECT_EQ(missing.table, HighScoreTable::defaults());
-    const HighScoreLoad folder = load_highscores(dir.path);
-    EXPECT_FALSE(folder.warning.empty());
 }
 
 TEST(HighScores, FailedWriteLeavesTheOldFileIntact_InjectedWriter) {
     TempDir dir("bz_hs_inject");
     const fs::path f = dir.path / "highscores.txt";
-    save_highscores(f, HighScoreTable::defaults());
+    save_highscores(f, book_of(HighScoreTable::defaults()));
     const std::string before = read_file(f);
     HighScoreTable t = HighScoreTable::defaults();
     t.insert({"NEW", 999999});
@@ -104,19 +103,19 @@ TEST(HighScores, FailedWriteLeavesTheOldFileIntact_InjectedWriter) {
         write_file_atomic(p.string() + ".partial", bytes.substr(0, bytes.size() / 2));
         throw UserError(p.string() + ": write failed: injected");
     };
-    EXPECT_THROW(save_highscores(f, t, failing), UserError);
+    EXPECT_THROW(save_highscores(f, book_of(t), failing), UserError);
     EXPECT_EQ(read_file(f), before);
-    EXPECT_EQ(load_highscores(f).table, HighScoreTable::defaults());
+    EXPECT_EQ(load_highscores(f).book, book_of(HighScoreTable::defaults()));
 }
 
 TEST(HighScores, FailedWriteLeavesTheOldFileIntact_RealWriteFailsMidway) {
     TempDir dir("bz_hs_fsize");
     const fs::path f = dir.path / "highscores.txt";
-    save_highscores(f, HighScoreTable::defaults());
+    save_highscores(f, book_of(HighScoreTable::defaults()));
     const std::string before = read_file(f);
     HighScoreTable t = HighScoreTable::defaults();
     for (int i = 0; i < 10; ++i) t.insert({"BIG", 10'000'000 + i});
-    ASSERT_GT(serialise(t).size(), 64u);
+    ASSERT_GT(serialise(book_of(t)).size(), 64u);
 
     // Limit file size so the real write(2) of the temp file fails after 64 bytes (EFBIG), as a
     // full disk would; SIGXFSZ is ignored so the process sees the error instead of dying.
@@ -129,7 +128,7 @@ TEST(HighScores, FailedWriteLeavesTheOldFileIntact_RealWriteFailsMidway) {
     bool threw = false;
     std::string message;
     try {
-        save_highscores(f, t);
+        save_highscores(f, book_of(t));
     } catch (const UserError& e) {
         threw = true;
         message = e.what();

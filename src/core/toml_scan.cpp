@@ -1,6 +1,6 @@
-#include "level/toml_scan.h"
+#include "core/toml_scan.h"
 
-namespace bz::level {
+namespace bz {
 
 namespace {
 
@@ -167,4 +167,4 @@ std::optional<UnsafeChar> find_unsafe_char(std::string_view text) {
     return std::nullopt;
 }
 
-}  // namespace bz::level
+}  // namespace bz

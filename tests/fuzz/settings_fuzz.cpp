@@ -1,0 +1,33 @@
+// libFuzzer target: any bytes through the settings reader give settings within their ranges
+// and at most 100 positioned, printable messages; never a crash (deep keys once overflowed
+// toml++'s stack), a sanitizer report or a hang.
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <string_view>
+
+#include "fuzz_checks.h"
+#include "platform/settings.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    const std::string_view text(reinterpret_cast<const char*>(data), size);
+    static const std::string presets[] = {"fast", "balanced", "high"};
+    const bz::platform::SettingsLoad r =
+        bz::platform::parse_settings(text, "settings.toml", presets);
+    if (r.errors.size() > 100) __builtin_trap();
+    for (const std::string& e : r.errors) bz::fuzz::check_message(e, "settings.toml", false);
+    const auto& s = r.settings;
+    if (!(s.volume >= 0.0f && s.volume <= 1.0f)) __builtin_trap();
+    if (s.style != "occluded" && s.style != "arcade") __builtin_trap();
+    // A file that loaded cleanly is written back in a form that loads to the same settings.
+    if (r.errors.empty()) {
+        const auto again = bz::platform::parse_settings(bz::platform::format_settings(s),
+                                                        "again.toml", presets);
+        if (!again.errors.empty() || again.settings.keys != s.keys ||
+            again.settings.preset != s.preset) {
+            __builtin_trap();
+        }
+    }
+    return 0;
+}
