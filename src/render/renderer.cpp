@@ -8,6 +8,18 @@
 
 namespace bz::render {
 
+namespace {
+
+// The pixel rows below FrameList::view_top (NDC y) that the scene may light, rounded so the
+// HUD band's edge is never lit; 0 means all of them.
+int scene_view_rows(float view_top, int height) {
+    const float top = std::clamp(view_top, -1.0f, 1.0f);
+    if (top >= 1.0f) return 0;
+    return std::max(1, static_cast<int>((top + 1.0f) * 0.5f * static_cast<float>(height)));
+}
+
+}  // namespace
+
 struct Renderer::Impl {
     RenderSettings settings;
     int width;
@@ -49,10 +61,7 @@ struct Renderer::Impl {
     PassContext context(const scene::MeshLibrary& meshes, const FrameBatches& batches,
                         const CameraMatrices& cam, const StyleDef& style, GLsizei hud_count,
                         GLuint target, const scene::FrameList& frame, FramePicture* picture) {
-        // The rows below FrameList::view_top (NDC y), rounded so the band's edge is never lit.
-        const float top = std::clamp(frame.view_top, -1.0f, 1.0f);
-        const int view_rows =
-            top >= 1.0f ? 0 : std::max(1, static_cast<int>((top + 1.0f) * 0.5f * static_cast<float>(height)));
+        const int view_rows = scene_view_rows(frame.view_top, height);
         return PassContext{programs,  targets,  gpu_meshes, meshes,
                            batches,   cam,      settings,   style.hidden_lines_removed,
                            empty_vao, instances, edges,     style,
