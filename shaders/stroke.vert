@@ -125,7 +125,11 @@ void main() {
     lo = hi = 1.5 * j + u_width_px + 1.0;
 #else
     float bulge = 0.0;
-    if (u_smoothing && kind == EDGE_SILHOUETTE) {
+    // Only where the mesh stands for a smooth surface: at a box's corner the vertex normal is
+    // 55 degrees off every face, and bending its edges would round the box.
+    vec3 va = r.vertex_normal_a.xyz, vb = r.vertex_normal_b.xyz, fa = r.normal_a.xyz, fb = r.normal_b.xyz;
+    float agree = min(min(dot(va, fa), dot(vb, fa)), min(dot(va, fb), dot(vb, fb)));
+    if (u_smoothing && kind == EDGE_SILHOUETTE && agree > 0.75) {
         vec3 pa = ray_at(s0) / max(r.depth.x, 1e-30);
         vec3 pb = ray_at(s1) / max(r.depth.y, 1e-30);
         g_slopes = vec2(smoothing_slope(s0, pa, r.vertex_normal_a.xyz, dir, nrm),
