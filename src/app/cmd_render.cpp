@@ -25,7 +25,7 @@ namespace {
 constexpr const char* kUsage =
     "usage: beamzone render INPUT [--eye x,y,z] [--target x,y,z] [--up x,y,z] [--fov DEG]\n"
     "                       [--near N] [--far F] [--size WxH] [--preset fast|balanced|high]\n"
-    "                       [--style NAME] [--shading flat|smooth] [--no-smoothing]\n"
+    "                       [--style NAME] [--shading flat|smooth] [--no-smoothing] [--one-sided]\n"
     "                       [--color r,g,b] [--out frame.png]\n"
     "                       [--mask mask.png] [--repeat N] [--copies N] [--beam classic|mame]\n"
     "Renders a model file (or builtin:cube, builtin:sphere, builtin:grid) headless to PNG. Without --eye the camera frames the model's bounding\n"
@@ -33,6 +33,7 @@ constexpr const char* kUsage =
     "--style: vector (default), vector-xray, toon, sketch, pop-art or halo (occluded and arcade\n"
     "are the old names of vector and vector-xray). --shading: filled styles' normals.\n"
     "--no-smoothing: the halo style's silhouettes stay polygonal (no cubic smoothing).\n"
+    "--one-sided: toon / pop-art outlines extruded outward and depth-tested, not centred.\n"
     "--repeat N renders N timed frames and prints the mean milliseconds of each pass.\n"
     "--copies N draws N instances of the model on a square grid in the xz plane (a scene of a\n"
     "chosen size for timing; the camera frames them all).\n"
@@ -45,6 +46,7 @@ struct RenderOptions {
     scene::Style style = scene::Style::vector;
     bool smooth = true;  // filled styles: smooth vertex normals (--shading flat: faces)
     bool smoothing = true;  // halo: cubic silhouette smoothing (--no-smoothing: plain)
+    bool one_sided = false;  // toon / pop-art: one-sided outline quads
     glm::dvec3 color{0.25, 1.0, 0.35};
     std::string out = "frame.png";
     std::string mask;
@@ -70,6 +72,8 @@ RenderOptions parse(Args args) {
             o.style = parse_style(a, cur.value(a));
         } else if (a == "--no-smoothing") {
             o.smoothing = false;
+        } else if (a == "--one-sided") {
+            o.one_sided = true;
         } else if (a == "--shading") {
             const std::string_view s = cur.value(a);
             if (s != "flat" && s != "smooth") throw UsageError("--shading: expected flat or smooth");
@@ -158,6 +162,7 @@ int cmd_render(Args args) {
 
     settings.count_edges = o.repeat > 0;
     settings.cubic_smoothing = o.smoothing;
+    settings.one_sided_outlines = o.one_sided;
     render::Renderer renderer(settings, o.camera.size.x, o.camera.size.y,
                               o.repeat > 0 ? gl::TimingMethod::cpu_finish : gl::TimingMethod::off);
     std::vector<std::vector<gl::PassTime>> timings;

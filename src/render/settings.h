@@ -86,6 +86,9 @@ struct RenderSettings {
     // The halo style's cubic silhouette smoothing (seed 004); off to compare with the plain
     // polygonal outline (render --no-smoothing, the smoothing test).
     bool cubic_smoothing = true;
+    // Toon and pop-art outlines as one-sided quads (extruded outward from silhouettes and
+    // depth-tested) instead of the styles' centred, spine-tested ones (seed 002's two variants).
+    bool one_sided_outlines = false;
     BeamSettings beam;
 };
 

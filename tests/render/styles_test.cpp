@@ -106,6 +106,18 @@ TEST_F(StyleTest, ToonFillsCelBandsAndOutlinesTheLines) {
     EXPECT_GT(bz::test::share(lines, rgba, ink), 0.8);
 }
 
+TEST_F(StyleTest, ToonOneSidedOutlinesLieOutsideTheSilhouette) {
+    const auto centred = draw(Style::toon, "toon_centred");
+    settings.one_sided_outlines = true;
+    const auto one_sided = draw(Style::toon, "toon_one_sided");
+    expect_background_far_away(one_sided, Style::toon, 5);
+    // Just outside the silhouette: one-sided quads put more ink there than centred ones
+    // (which spend half their width inside).
+    const Region ring = bz::test::minus(bz::test::dilated(covered, 2), covered);
+    EXPECT_GT(bz::test::share(ring, one_sided, ink), bz::test::share(ring, centred, ink));
+    EXPECT_GT(bz::test::share(ring, one_sided, ink), 0.6);
+}
+
 TEST_F(StyleTest, PopArtFillsFlatColourWithDotsAndAFineOutline) {
     const auto rgba = draw(Style::pop_art, "pop_art");
     expect_background_far_away(rgba, Style::pop_art, 3);
