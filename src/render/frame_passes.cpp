@@ -28,6 +28,12 @@ void edges_complete(const PassContext& ctx) {
     }
 }
 
+// The edge extraction; with count_edges it also reads back how many records it appended.
+void edges_counted(const PassContext& ctx) {
+    pass_edges(ctx);
+    if (ctx.settings.count_edges && ctx.stats) ctx.stats->feature_edges = ctx.edges.appended();
+}
+
 void sketch_strokes(const PassContext& ctx) { pass_sketch(ctx, false); }
 void sketch_mask(const PassContext& ctx) { pass_sketch(ctx, true); }
 
@@ -78,7 +84,7 @@ std::vector<FramePass> frame_passes(const StyleDef& style, const RenderSettings&
     }
     list.push_back({"fill", pass_fill});
     // Strokes are drawn from the edge buffer: the edges pass appends every visible feature edge.
-    if (style_needs_edge_buffer(style)) list.push_back({"edges", pass_edges});
+    if (style_needs_edge_buffer(style)) list.push_back({"edges", edges_counted});
     switch (style.lines) {
         case LinePass::outline:
             list.push_back({"outline", pass_outline});
