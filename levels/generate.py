@@ -44,7 +44,7 @@ def camera_block(keys):
 
 
 # Footprint radii of the shipped models at scale 1 (their bounds on the ground plane).
-MODEL_RADIUS = {"pylon.obj": 6.1, "radar_dish.obj": 3.8, "ruined_tower.obj": 6.5, "tank_hulk.obj": 4.7}
+MODEL_RADIUS = {"pylon.obj": 6.1, "radar_dish.obj": 3.8, "ruined_tower.obj": 6.5, "tank_hulk.obj": 5.6}
 
 
 def maze():
@@ -115,7 +115,7 @@ obstacle_color = "#39ff88"
 
 [player]
 position = [{fmt(start[0])}, 0, {fmt(start[1])}]   # the centre of a cell near the middle
-heading = 0
+heading = 90                 # down the longest corridor from the start (48 units), not into a wall
 
 [enemies]
 types = ["slow_tank", "super_tank", "missile"]   # no saucer: it could not fly in here anyway

@@ -34,7 +34,7 @@ void main() {
         cover = clamp(out_d + 0.5, 0.0, 1.0) * clamp(u_width_px - out_d + 0.5, 0.0, 1.0);
         // Depth-tested where it lands: an object in front of the silhouette hides it.
         ivec2 px = ivec2(floor(p));
-        if (u_occlusion && !sample_visible(px, line_inv, vec3(0.0), vec3(0.0), vec3(0.0))) discard;
+        if (u_occlusion && !sample_visible(px, p, line_inv, EdgeFaces(vec3(0.0), vec3(0.0), vec3(0.0)))) discard;
     } else {
         cover = clamp(u_width_px * 0.5 - abs(across) + 0.5, 0.0, 1.0);
         if (!spine_visible(spine, line_inv, g_edge_plane, g_face_pos, g_face_neg, g_nudge)) discard;

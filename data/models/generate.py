@@ -216,31 +216,42 @@ def ruined_tower():
 
 
 def tank_hulk():
+    # A wreck must never read as a live enemy tank: the hull lies broken-backed and rolled
+    # onto one track, sunk into the ground, and the turret lies upside down beside it with a
+    # snapped stub of a barrel, so the tank outline (turret on hull, long gun) never appears.
     m = Mesh()
-    m.group("hull")
-    # Hull: a prism whose side profile slopes front and back, extruded across the tank.
-    prof = [(-3.4, 0.0), (3.4, 0.0), (4.2, 0.9), (3.0, 1.7), (-3.0, 1.7), (-3.8, 0.9)]
     hw = 2.0
-    v = [(x, y, -hw) for x, y in prof] + [(x, y, hw) for x, y in prof]
-    n = len(prof)
-    f = [tuple(reversed(range(n))), tuple(range(n, 2 * n))]
-    for i in range(n):
-        j = (i + 1) % n
-        f.append((i, j, n + j, n + i))
-    m.add(v, triangulate(f))
+
+    def hull_half(x0, x1, tilt, shift):
+        # One half of the broken hull: a slab of the side profile between x0 and x1, rolled
+        # over onto its side and tipped so the break points up out of the ground.
+        prof = [(x0, 0.0), (x1, 0.0), (x1 + (0.8 if x1 > 0 else 0.0), 0.9),
+                (x1 - (0.4 if x1 > 0 else 0.0), 1.5), (x0, 1.5)]
+        v = [(x, y, -hw) for x, y in prof] + [(x, y, hw) for x, y in prof]
+        n = len(prof)
+        f = [tuple(reversed(range(n))), tuple(range(n, 2 * n))]
+        for i in range(n):
+            j = (i + 1) % n
+            f.append((i, j, n + j, n + i))
+        v = moved(v, lambda p: rot_x(rot_z(p, tilt), 0.45))
+        # Sunk just below the ground: nothing hides a part that would poke out underneath.
+        drop = min(p[1] for p in v) + 0.2
+        v = moved(v, lambda p: (p[0] + shift, p[1] - drop, p[2]))
+        return v, triangulate(f)
+
+    m.group("hull_front")
+    m.add(*hull_half(0.2, 3.4, -0.28, 0.3))
+    m.group("hull_back")
+    m.add(*hull_half(-3.4, -0.2, 0.22, -0.3))
     m.group("turret")
-    # Knocked askew: turned and tipped on the hull.
-    v, f = lathe([(1.7, 0), (1.3, 1.1), (0, 1.1)], 8, math.pi / 8)
-    m.add(moved(v, lambda p: (lambda q: (q[0] - 0.3, q[1] + 1.65, q[2]))(rot_z(rot_y(p, 0.6), 0.08))),
+    # Upside down on the ground off the hull's flank: flat top down, wide base up.
+    v, f = lathe([(1.3, 0), (1.7, 1.1), (0, 1.1)], 8, math.pi / 8)
+    m.add(moved(v, lambda p: (p[0] - 1.0, p[1], p[2] + 3.7)), triangulate(f))
+    m.group("barrel_stub")
+    # A short snapped-off piece lying flat, pointing away from the turret.
+    v, f = box(0.6, 0.16, 0.16)
+    m.add(moved(v, lambda p: (lambda q: (q[0] + 1.2, q[1] + 0.16, q[2] + 4.3))(rot_y(p, 0.9))),
           triangulate(f))
-    m.group("barrel")
-    v, f = box(2.3, 0.16, 0.16)
-    m.add(moved(v, lambda p: (lambda q: (q[0] + 2.4, q[1] + 1.9, q[2] + 1.0))(rot_y(rot_z(p, -0.25), 0.6))),
-          triangulate(f))
-    for side in (-1, 1):
-        m.group(f"track_{side}")
-        v, f = box(3.7, 0.45, 0.35)
-        m.add(moved(v, lambda p, side=side: (p[0], p[1] + 0.45, p[2] + side * (hw + 0.35))), triangulate(f))
     return m
 
 
@@ -249,7 +260,7 @@ def main():
         "pylon.obj": (pylon(), "power pylon, 17.5 high, 12 across the upper arm"),
         "radar_dish.obj": (radar_dish(), "radar dish on a mast, tilted 35 degrees, about 9 high"),
         "ruined_tower.obj": (ruined_tower(), "round tower broken off at uneven heights, with rubble"),
-        "tank_hulk.obj": (tank_hulk(), "burnt-out tank hull with a displaced turret, 8.4 long"),
+        "tank_hulk.obj": (tank_hulk(), "broken tank hull on its side, turret upside down beside it"),
     }
     for name, (mesh, comment) in made.items():
         tris = mesh.write(name, comment)

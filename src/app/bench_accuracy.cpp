@@ -328,61 +328,65 @@ std::vector<Goal> judge_accuracy_goals(const AccuracyResult& r) {
 
 std::string accuracy_json(const BenchMeta& meta, const AccuracyOptions& o,
                           const AccuracyResult& r, const std::vector<Goal>& goals) {
-    JsonWriter j;
-    j.begin_object();
-    write_meta(j, meta);
-    j.field("models_dir", o.models_dir.string());
-    j.field("score_tolerance_px", o.tolerance_px);
-    j.field("score_tolerance_note",
-            "Chebyshev: a lit pixel matches a lit pixel among its 8 neighbours (1.5 px Euclidean "
-            "on the pixel grid)");
-    j.field("timed_frames_per_view", o.frames);
-    j.field("reference_cpu_ms", r.reference_ms);
-    j.key("skipped").begin_array();
-    for (const std::string& s : r.skipped) j.value(s);
-    j.end_array();
-    j.key("views").begin_array();
+    Json j = meta_json(meta);
+    j["models_dir"] = o.models_dir.string();
+    j["score_tolerance_px"] = o.tolerance_px;
+    j["score_tolerance_note"] =
+        "Chebyshev: a lit pixel matches a lit pixel among its 8 neighbours (1.5 px Euclidean "
+        "on the pixel grid)";
+    j["timed_frames_per_view"] = o.frames;
+    j["reference_cpu_ms"] = r.reference_ms;
+    j["skipped"] = r.skipped;
+    const auto vec = [](const glm::dvec3& x) { return Json::array({x.x, x.y, x.z}); };
+    Json views = Json::array();
     for (const AccuracyViewInfo& v : r.views) {
-        const auto vec = [&](const char* k, const glm::dvec3& x) {
-            j.key(k).begin_array().value(x.x).value(x.y).value(x.z).end_array();
-        };
-        j.begin_object().field("model", v.model).field("kind", v.kind).field("view", v.view);
-        j.field("triangles", v.triangles);
-        vec("eye", v.camera.eye);
-        vec("target", v.camera.target);
-        j.field("fov_y_deg", v.camera.fov_y_deg).field("near", v.camera.near);
-        j.field("far", v.camera.far);
-        j.field("reference_command", view_command("reference", v, o));
-        j.end_object();
+        Json view = Json::object();
+        view["model"] = v.model;
+        view["kind"] = v.kind;
+        view["view"] = v.view;
+        view["triangles"] = v.triangles;
+        view["eye"] = vec(v.camera.eye);
+        view["target"] = vec(v.camera.target);
+        view["fov_y_deg"] = v.camera.fov_y_deg;
+        view["near"] = v.camera.near;
+        view["far"] = v.camera.far;
+        view["reference_command"] = view_command("reference", v, o);
+        views.push_back(std::move(view));
     }
-    j.end_array();
-    j.key("configs").begin_array();
+    j["views"] = std::move(views);
+    Json configs = Json::array();
     for (const AccuracyRow& row : r.rows) {
-        j.begin_object().field("label", row.config.label).field("what", row.config.what);
-        j.field("mean_f1", row.mean_f1).field("min_f1", row.min_f1);
-        j.field("worst_view", row.worst_view);
-        j.field("precision_mean", row.mean_precision).field("recall_mean", row.mean_recall);
-        j.field("frame_ms_p50_mean", row.mean_p50_ms);
-        j.key("per_view").begin_array();
+        Json c = Json::object();
+        c["label"] = row.config.label;
+        c["what"] = row.config.what;
+        c["mean_f1"] = row.mean_f1;
+        c["min_f1"] = row.min_f1;
+        c["worst_view"] = row.worst_view;
+        c["precision_mean"] = row.mean_precision;
+        c["recall_mean"] = row.mean_recall;
+        c["frame_ms_p50_mean"] = row.mean_p50_ms;
+        Json per_view = Json::array();
         for (const AccuracyViewScore& v : row.views) {
-            j.begin_object().field("model", v.model).field("view", v.view);
-            j.field("precision", v.score.precision).field("recall", v.score.recall);
-            j.field("f1", v.score.f1).field("test_lit", v.score.test_lit);
-            j.field("ref_lit", v.score.ref_lit).field("frame_ms_p50", v.p50_ms);
-            j.end_object();
+            Json pv = Json::object();
+            pv["model"] = v.model;
+            pv["view"] = v.view;
+            pv["precision"] = v.score.precision;
+            pv["recall"] = v.score.recall;
+            pv["f1"] = v.score.f1;
+            pv["test_lit"] = v.score.test_lit;
+            pv["ref_lit"] = v.score.ref_lit;
+            pv["frame_ms_p50"] = v.p50_ms;
+            per_view.push_back(std::move(pv));
         }
-        j.end_array();
-        j.end_object();
+        c["per_view"] = std::move(per_view);
+        configs.push_back(std::move(c));
     }
-    j.end_array();
-    j.key("goals").begin_array();
-    for (const Goal& g : goals) {
-        j.begin_object().field("goal", g.name).field("met", g.met);
-        j.field("measured", g.detail).end_object();
-    }
-    j.end_array();
-    j.end_object();
-    return j.str();
+    j["configs"] = std::move(configs);
+    Json goal_list = Json::array();
+    for (const Goal& g : goals)
+        goal_list.push_back(Json{{"goal", g.name}, {"met", g.met}, {"measured", g.detail}});
+    j["goals"] = std::move(goal_list);
+    return json_text(j);
 }
 
 void print_accuracy_table(std::FILE* out, const AccuracyResult& r, const std::vector<Goal>& goals,

@@ -42,8 +42,8 @@ struct AccuracyOptions {
     int width = 640;
     int height = 480;
     int tolerance_px = 1;  // Chebyshev: the 8 neighbours, i.e. 1.5 px Euclidean on the grid
-    int frames = 10;       // timed frames per configuration and view
-    int warmup = 2;
+    int frames = 6;        // timed frames per configuration and view
+    int warmup = 1;
     std::filesystem::path out;  // masks/, diffs/ and the reference cache go here
     bool progress = true;
 };

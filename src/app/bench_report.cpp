@@ -107,84 +107,78 @@ std::string frames_csv(const std::vector<RunResult>& runs) {
     return out.str();
 }
 
-void write_meta(JsonWriter& j, const BenchMeta& m) {
-    j.field("beamzone_version", BEAMZONE_VERSION);
-    j.field("level", m.level);
-    j.field("camera", m.camera);
-    j.key("size").begin_array().value(m.width).value(m.height).end_array();
-    j.field("frames", m.frames);
-    j.field("warmup_frames", m.warmup);
-    j.field("simulated_step_s", 1.0 / 60.0);
-    j.field("gl_renderer", m.gl_renderer);
-    j.field("software_rasteriser", m.software);
-    j.field("timing_method", timing_name(m.timing));
-    j.field("timing_note", timing_note(m.timing));
-    j.field("load_average_before", m.load_before);
-    j.field("load_average_after", m.load_after);
+Json meta_json(const BenchMeta& m) {
+    Json j = Json::object();
+    j["beamzone_version"] = BEAMZONE_VERSION;
+    j["level"] = m.level;
+    j["camera"] = m.camera;
+    j["size"] = Json::array({m.width, m.height});
+    j["frames"] = m.frames;
+    j["warmup_frames"] = m.warmup;
+    j["simulated_step_s"] = 1.0 / 60.0;
+    j["gl_renderer"] = m.gl_renderer;
+    j["software_rasteriser"] = m.software;
+    j["timing_method"] = timing_name(m.timing);
+    j["timing_note"] = timing_note(m.timing);
+    j["load_average_before"] = m.load_before;
+    j["load_average_after"] = m.load_after;
+    return j;
 }
 
-void write_run(JsonWriter& j, const RunResult& r) {
+Json run_json(const RunResult& r) {
     const render::RenderSettings& s = r.settings;
-    j.field("label", r.label);
-    j.key("settings").begin_object();
-    j.field("preset", s.preset);
-    j.field("method", s.method == render::LineMethod::geometry ? "geometry" : "image_outline");
-    j.field("depth", depth_name(s.depth));
-    j.field("spine_samples", s.spine_samples);
-    j.field("depth_bias", static_cast<double>(s.depth_bias));
-    j.field("line_half_width_px", static_cast<double>(s.line_half_width_px));
-    j.field("crease_angle_deg", static_cast<double>(s.crease_angle_deg));
-    j.field("bloom_resolution_divisor", static_cast<int>(s.bloom_resolution));
-    j.field("bloom_taps", s.bloom_taps);
-    j.field("frustum_culling", s.frustum_culling);
-    j.field("lod", s.lod);
-    j.field("instancing", s.instancing);
-    j.end_object();
+    Json j = Json::object();
+    j["label"] = r.label;
+    Json settings = Json::object();
+    settings["preset"] = s.preset;
+    settings["method"] =
+        s.method == render::LineMethod::geometry ? "geometry" : "image_outline";
+    settings["depth"] = depth_name(s.depth);
+    settings["spine_samples"] = s.spine_samples;
+    settings["plane_tolerance_rel"] = static_cast<double>(s.plane_tolerance_rel);
+    settings["plane_tolerance_px"] = static_cast<double>(s.plane_tolerance_px);
+    settings["depth_bias"] = static_cast<double>(s.depth_bias);
+    settings["line_half_width_px"] = static_cast<double>(s.line_half_width_px);
+    settings["crease_angle_deg"] = static_cast<double>(s.crease_angle_deg);
+    settings["bloom_resolution_divisor"] = static_cast<int>(s.bloom_resolution);
+    settings["bloom_taps"] = s.bloom_taps;
+    settings["frustum_culling"] = s.frustum_culling;
+    settings["lod"] = s.lod;
+    settings["instancing"] = s.instancing;
+    j["settings"] = std::move(settings);
     const FrameTimeStats& t = r.stats;
-    j.key("frame_time_ms").begin_object();
-    j.field("mean", t.mean_ms).field("p50", t.p50_ms).field("p95", t.p95_ms).field("p99", t.p99_ms);
-    j.field("max", t.max_ms).field("min", t.min_ms);
-    j.end_object();
-    j.key("fps")
-        .begin_object()
-        .field("mean", t.mean_fps)
-        .field("low_1pct", t.low_1pct_fps)
-        .end_object();
-    j.field("cpu_busy_mean_ms",
-            mean_of(r.frames, [](const FrameRecord& f) { return f.ms_cpu_busy; }));
-    j.key("passes_mean_ms").begin_object();
+    j["frame_time_ms"] = Json{{"mean", t.mean_ms}, {"p50", t.p50_ms}, {"p95", t.p95_ms},
+                              {"p99", t.p99_ms},   {"max", t.max_ms},  {"min", t.min_ms}};
+    j["fps"] = Json{{"mean", t.mean_fps}, {"low_1pct", t.low_1pct_fps}};
+    j["cpu_busy_mean_ms"] =
+        mean_of(r.frames, [](const FrameRecord& f) { return f.ms_cpu_busy; });
+    Json passes = Json::object();
     for (std::size_t p = 0; p < r.pass_names.size(); ++p)
-        j.field(r.pass_names[p], mean_pass_ms(r, p));
-    j.end_object();
-    j.key("scene_per_frame").begin_object();
-    j.field("objects_drawn_mean",
-            mean_of(r.frames, [](const FrameRecord& f) { return f.stats.objects_drawn; }));
-    j.field("objects_culled_mean",
-            mean_of(r.frames, [](const FrameRecord& f) { return f.stats.objects_culled; }));
-    j.field("triangles_submitted_mean",
-            mean_of(r.frames, [](const FrameRecord& f) { return f.stats.triangles_submitted; }));
-    j.field("triangles_submitted_max",
-            max_of(r.frames, [](const FrameRecord& f) { return f.stats.triangles_submitted; }));
-    j.field("feature_edges_mean",
-            mean_of(r.frames, [](const FrameRecord& f) { return f.stats.feature_edges; }));
-    j.field("feature_edges_max",
-            max_of(r.frames, [](const FrameRecord& f) { return f.stats.feature_edges; }));
-    j.end_object();
+        passes[r.pass_names[p]] = mean_pass_ms(r, p);
+    j["passes_mean_ms"] = std::move(passes);
+    Json scene = Json::object();
+    scene["objects_drawn_mean"] =
+        mean_of(r.frames, [](const FrameRecord& f) { return f.stats.objects_drawn; });
+    scene["objects_culled_mean"] =
+        mean_of(r.frames, [](const FrameRecord& f) { return f.stats.objects_culled; });
+    scene["triangles_submitted_mean"] =
+        mean_of(r.frames, [](const FrameRecord& f) { return f.stats.triangles_submitted; });
+    scene["triangles_submitted_max"] =
+        max_of(r.frames, [](const FrameRecord& f) { return f.stats.triangles_submitted; });
+    scene["feature_edges_mean"] =
+        mean_of(r.frames, [](const FrameRecord& f) { return f.stats.feature_edges; });
+    scene["feature_edges_max"] =
+        max_of(r.frames, [](const FrameRecord& f) { return f.stats.feature_edges; });
+    j["scene_per_frame"] = std::move(scene);
+    return j;
 }
 
 std::string summary_json(const BenchMeta& meta, const std::vector<RunResult>& runs) {
-    JsonWriter j;
-    j.begin_object();
-    write_meta(j, meta);
-    j.key("runs").begin_array();
-    for (const RunResult& r : runs) {
-        j.begin_object();
-        write_run(j, r);
-        j.end_object();
-    }
-    j.end_array();
-    j.end_object();
-    return j.str();
+    Json j = meta_json(meta);
+    Json list = Json::array();
+    for (const RunResult& r : runs) list.push_back(run_json(r));
+    j["runs"] = std::move(list);
+    return json_text(j);
 }
 
 void print_summary_table(std::FILE* out, const BenchMeta& m, const std::vector<RunResult>& runs) {

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "app/bench_run.h"
-#include "app/json_writer.h"
+#include "app/json_text.h"
 
 namespace bz::app {
 
@@ -35,8 +35,9 @@ double load_average();
 // ObjectsDrawn, ObjectsCulled, TrianglesSubmitted, FeatureEdges.
 std::string frames_csv(const std::vector<RunResult>& runs);
 
-void write_meta(JsonWriter& j, const BenchMeta& meta);
-void write_run(JsonWriter& j, const RunResult& run);
+// The fields every report starts with, and one run's settings and statistics.
+Json meta_json(const BenchMeta& meta);
+Json run_json(const RunResult& run);
 std::string summary_json(const BenchMeta& meta, const std::vector<RunResult>& runs);
 
 void print_summary_table(std::FILE* out, const BenchMeta& meta, const std::vector<RunResult>& runs);

@@ -66,30 +66,22 @@ ScalingResult run_scaling(const BenchFrames& bf, const scene::MeshLibrary& meshe
 }
 
 std::string scaling_json(const BenchMeta& meta, const ScalingResult& r) {
-    JsonWriter j;
-    j.begin_object();
-    write_meta(j, meta);
-    j.field("method",
-            "every mesh flat-subdivided 1 -> 4 per level: same surfaces and feature lines");
-    j.key("points").begin_array();
+    Json j = meta_json(meta);
+    j["method"] = "every mesh flat-subdivided 1 -> 4 per level: same surfaces and feature lines";
+    Json points = Json::array();
     for (std::size_t i = 0; i < r.points.size(); ++i) {
-        j.begin_object();
-        j.field("factor", r.points[i].label);
-        j.field("triangles_submitted_mean", r.points[i].triangles);
-        write_run(j, r.runs[i]);
-        j.end_object();
+        Json p = Json::object();
+        p["factor"] = r.points[i].label;
+        p["triangles_submitted_mean"] = r.points[i].triangles;
+        p.update(run_json(r.runs[i]));
+        points.push_back(std::move(p));
     }
-    j.end_array();
-    j.key("fit").begin_object();
-    j.field("ms_per_100k_triangles", r.fit.slope * 1e5);
-    j.field("intercept_ms", r.fit.intercept);
-    j.field("r2", r.fit.r2);
-    j.end_object();
-    j.key("skipped").begin_array();
-    for (const std::string& s : r.skipped) j.value(s);
-    j.end_array();
-    j.end_object();
-    return j.str();
+    j["points"] = std::move(points);
+    j["fit"] = Json{{"ms_per_100k_triangles", r.fit.slope * 1e5},
+                    {"intercept_ms", r.fit.intercept},
+                    {"r2", r.fit.r2}};
+    j["skipped"] = r.skipped;
+    return json_text(j);
 }
 
 }  // namespace bz::app

@@ -6,6 +6,7 @@
 #include "core/error.h"
 #include "game/autopilot.h"
 #include "game/backdrop.h"
+#include "game/difficulty.h"
 #include "game/hud.h"
 
 namespace bz::app {
@@ -49,10 +50,11 @@ std::optional<scene::Camera> camera_on_path(const level::Level& level, double se
 BenchScene::BenchScene(level::Level level, std::optional<game::replay::Replay> replay,
                        double fov_y_deg)
     : level_(std::move(level)),
-      assets_(std::make_unique<game::Assets>(level_.backdrop)),
+      assets_(std::make_unique<game::Assets>(level_)),
       fov_(fov_y_deg) {
     std::uint64_t seed = 1;
-    int lives = 3;
+    int lives = level_.player_lives;
+    level::Difficulty difficulty = level_.enemies.difficulty;
     if (replay) {
         const std::uint64_t want = game::replay::level_hash(level_);
         if (replay->header.level_hash != want) {
@@ -61,10 +63,11 @@ BenchScene::BenchScene(level::Level level, std::optional<game::replay::Replay> r
         }
         seed = replay->header.seed;
         lives = replay->header.lives;
+        difficulty = replay->header.difficulty;
         player_.emplace(std::move(*replay));
     }
-    world_ =
-        std::make_unique<game::World>(level_, seed, assets_->factories(), assets_->models(), lives);
+    world_ = std::make_unique<game::World>(game::level_for(level_, difficulty), seed,
+                                           assets_->factories(), assets_->models(), lives);
     try {
         font_ = std::make_unique<scene::VectorFont>(scene::VectorFont::load_default());
     } catch (const UserError&) {

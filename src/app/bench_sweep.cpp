@@ -197,51 +197,38 @@ std::vector<Goal> judge_goals(const std::vector<SweepRow>& rows) {
 
 std::string sweep_json(const BenchMeta& meta, const SweepResult& r,
                        const std::vector<Goal>& goals) {
-    JsonWriter j;
-    j.begin_object();
-    write_meta(j, meta);
-    j.key("scored_frames").begin_array();
-    for (int f : r.sampled) j.value(f);
-    j.end_array();
-    j.key("scored_frame_times_s").begin_array();
-    for (double t : r.sampled_seconds) j.value(t);
-    j.end_array();
-    j.field("score_tolerance_px", 1);
-    j.field("reference_cpu_ms", r.reference_ms);
-    j.field("reference_rays", r.reference_rays);
-    j.key("configs").begin_array();
+    Json j = meta_json(meta);
+    j["scored_frames"] = r.sampled;
+    j["scored_frame_times_s"] = r.sampled_seconds;
+    j["score_tolerance_px"] = 1;
+    j["reference_cpu_ms"] = r.reference_ms;
+    j["reference_rays"] = r.reference_rays;
+    Json configs = Json::array();
     for (const SweepRow& row : r.rows) {
-        j.begin_object();
-        j.field("what", row.config.what);
-        write_run(j, row.run);
-        j.key("f1").begin_object();
-        j.field("mean", row.score.mean_f1).field("min", row.score.min_f1);
-        j.field("precision_mean", row.score.mean_precision)
-            .field("recall_mean", row.score.mean_recall);
-        j.key("per_frame").begin_array();
-        for (const geo::MaskScore& s : row.score.per_sample) j.value(s.f1);
-        j.end_array();
-        j.end_object();
-        j.key("f1_2px").begin_object();
-        j.field("mean", row.score_2px.mean_f1).field("precision_mean", row.score_2px.mean_precision);
-        j.field("recall_mean", row.score_2px.mean_recall).end_object();
-        j.key("f1_4px").begin_object();
-        j.field("mean", row.score_4px.mean_f1).field("precision_mean", row.score_4px.mean_precision);
-        j.field("recall_mean", row.score_4px.mean_recall).end_object();
-        j.end_object();
+        Json c = Json::object();
+        c["what"] = row.config.what;
+        c.update(run_json(row.run));
+        Json per_frame = Json::array();
+        for (const geo::MaskScore& s : row.score.per_sample) per_frame.push_back(s.f1);
+        c["f1"] = Json{{"mean", row.score.mean_f1},
+                       {"min", row.score.min_f1},
+                       {"precision_mean", row.score.mean_precision},
+                       {"recall_mean", row.score.mean_recall},
+                       {"per_frame", std::move(per_frame)}};
+        c["f1_2px"] = Json{{"mean", row.score_2px.mean_f1},
+                           {"precision_mean", row.score_2px.mean_precision},
+                           {"recall_mean", row.score_2px.mean_recall}};
+        c["f1_4px"] = Json{{"mean", row.score_4px.mean_f1},
+                           {"precision_mean", row.score_4px.mean_precision},
+                           {"recall_mean", row.score_4px.mean_recall}};
+        configs.push_back(std::move(c));
     }
-    j.end_array();
-    j.key("goals").begin_array();
-    for (const Goal& g : goals) {
-        j.begin_object()
-            .field("goal", g.name)
-            .field("met", g.met)
-            .field("measured", g.detail)
-            .end_object();
-    }
-    j.end_array();
-    j.end_object();
-    return j.str();
+    j["configs"] = std::move(configs);
+    Json goal_list = Json::array();
+    for (const Goal& g : goals)
+        goal_list.push_back(Json{{"goal", g.name}, {"met", g.met}, {"measured", g.detail}});
+    j["goals"] = std::move(goal_list);
+    return json_text(j);
 }
 
 void print_sweep_table(std::FILE* out, const SweepResult& r, const std::vector<Goal>& goals) {

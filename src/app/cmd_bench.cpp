@@ -59,7 +59,7 @@ constexpr const char* kUsage =
     "(default: 16 files under /usr/share/assimp/models; --model FILE, repeatable, relative to\n"
     "--models-dir, replaces the list) from 4 views each (framed, behind, close, above) at\n"
     "640x480 against the exact CPU reference (F1 at 1 px Chebyshev), times each view\n"
-    "(--frames, default 10) and writes accuracy.json, accuracy_tradeoff.png, masks/, diffs/\n"
+    "(--frames, default 6) and writes accuracy.json, accuracy_tradeoff.png, masks/, diffs/\n"
     "(red: drawn but hidden in the reference, cyan: missing) and reference-cache/ (exact\n"
     "masks reused by later runs into the same --out).\n";
 
@@ -139,7 +139,7 @@ Options parse(Args args) {
         if (!o.level.empty()) throw UsageError("--accuracy takes no LEVEL (it draws models)");
         if (preset_given) throw UsageError("--preset and --accuracy exclude each other");
         if (!o.replay.empty()) throw UsageError("--replay and --accuracy exclude each other");
-        if (!o.frames_given) o.frames = 10;
+        if (!o.frames_given) o.frames = 6;
         if (!o.size_given) o.size = {640, 480};
         if (o.out.empty()) throw UsageError("--out needs a directory");
         return o;
@@ -209,7 +209,7 @@ int run_accuracy_mode(const Options& o) {
     ao.width = o.size.x;
     ao.height = o.size.y;
     ao.frames = o.frames;
-    ao.warmup = std::min(o.warmup, 2);
+    ao.warmup = std::min(o.warmup, 1);
     ao.out = o.out;
     BenchMeta meta;
     meta.level = "real models (" + o.models_dir + ")";

@@ -1,9 +1,12 @@
 #include <cstdio>
+#include <set>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "app/commands.h"
+#include "core/error.h"
+#include "game/level_models.h"
 #include "level/loader.h"
 
 namespace bz::app {
@@ -12,9 +15,27 @@ namespace {
 
 constexpr const char* kUsage =
     "usage: beamzone check [--quiet] FILE...\n"
-    "Validates level files without opening a window. Every problem is printed to stderr as\n"
+    "Validates level files without opening a window, and imports every model a level names\n"
+    "with the same importer and limits as play. Every problem is printed to stderr as\n"
     "'file:line:col: error: message'; a clean file prints one 'ok' line to stdout unless\n"
     "--quiet. Exit status: 0 all clean, 1 some file has errors, 2 usage error.\n";
+
+// Imports each model the level names once, as play would; prints what fails. Returns the
+// number of models that failed.
+int check_models(const level::Level& level) {
+    int failed = 0;
+    std::set<std::string> seen;
+    for (const level::ObjectDesc& o : level.obstacles) {
+        if (o.model.empty() || !seen.insert(o.model.string()).second) continue;
+        try {
+            game::import_level_model(level, o);
+        } catch (const UserError& e) {
+            std::fprintf(stderr, "%s\n", e.what());
+            ++failed;
+        }
+    }
+    return failed;
+}
 
 }  // namespace
 
@@ -46,7 +67,7 @@ int cmd_check(Args args) {
     for (const std::string_view file : files) {
         const level::LoadResult result = level::load_level_file(std::string(file));
         for (const auto& e : result.errors) std::fprintf(stderr, "%s\n", level::format(e).c_str());
-        if (!result.ok()) {
+        if (!result.ok() || check_models(*result.level) > 0) {
             ++failed;
         } else if (!quiet) {
             const auto& l = *result.level;

@@ -108,6 +108,7 @@ struct Play {
         }
 
         // The level before the window, so a broken level file fails fast and plainly.
+        log.info("data: " + project_root().string() + " (" + project_root_origin() + ")");
         std::unique_ptr<level::LevelWatcher> watcher;
         const std::filesystem::path level_path = level_arg.empty()
                                                      ? level::default_level_path()
@@ -172,6 +173,9 @@ struct Play {
         SessionOptions so;
         so.level = lvl;
         so.seed = options.seed;
+        // --difficulty, else the settings file's unless it says "level", else the level's.
+        so.difficulty = options.difficulty.value_or(
+            settings.difficulty == "level" ? std::string() : settings.difficulty);
         so.record = options.record;
         so.replay = options.replay;
         so.high_scores = paths.high_scores;
@@ -188,7 +192,9 @@ struct Play {
         config.screenshot_at = options.screenshot_at;
         config.edit = options.edit;
         config.screenshots = paths.screenshots;
-        for (const auto& [frame, key] : options.presses) config.presses.push_back({frame, key});
+        for (const ScriptedPress& p : options.presses) {
+            config.presses.push_back({p.frame, p.release_frame, p.key});
+        }
         LoopParts parts{context, choose,  make_renderer, audio,    input, gamepads, watcher.get(),
                         overlay, log,     settings,      font,     {},    {},       nullptr,
                         {},      {}};

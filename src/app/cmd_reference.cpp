@@ -13,7 +13,6 @@
 #include "app/commands.h"
 #include "app/parse_command.h"
 #include "app/model_source.h"
-#include "app/resource_limits.h"
 #include "core/error.h"
 #include "core/image_io.h"
 #include "geometry/line_mesh.h"
@@ -113,7 +112,6 @@ int run(const Options& o) {
         const scene::FrameList frame = level_frame(scene, *o.time, aspect);
         mask = render::reference_frame_mask(frame, scene.meshes(), size.x, size.y, ro, &stats);
     } else {
-        limit_memory_for_untrusted_input();
         geo::AdjacencyMesh mesh = geo::build_line_mesh(load_model_source(o.input));
         if (mesh.triangle_count() == 0) throw UserError(o.input + ": no usable triangles");
         const geo::Bounds bounds = geo::compute_bounds(mesh.positions);

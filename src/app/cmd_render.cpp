@@ -9,7 +9,6 @@
 #include "app/commands.h"
 #include "app/parse_command.h"
 #include "app/headless_gl.h"
-#include "app/resource_limits.h"
 #include "core/error.h"
 #include "core/image_io.h"
 #include "app/model_source.h"
@@ -146,7 +145,6 @@ int cmd_render(Args args) {
     const std::filesystem::path inputs[] = {o.input};
     check_output_file("--out", o.out, kPngOutput, inputs);
     if (!o.mask.empty()) check_output_file("--mask", o.mask, kPngOutput, inputs);
-    limit_memory_for_untrusted_input();
     geo::MeshReport report;
     geo::AdjacencyMesh mesh = geo::build_line_mesh(load_model_source(o.input), &report);
     if (mesh.triangle_count() == 0) throw UserError(o.input + ": no usable triangles");

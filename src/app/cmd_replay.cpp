@@ -4,6 +4,7 @@
 #include <cinttypes>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <string>
 
 #include "core/output_path.h"
@@ -17,6 +18,7 @@
 #include "game/assets.h"
 #include "game/autopilot.h"
 #include "game/default_level.h"
+#include "game/difficulty.h"
 #include "game/replay.h"
 #include "level/loader.h"
 
@@ -29,11 +31,13 @@ namespace fs = std::filesystem;
 constexpr const char* kUsage =
     "usage: beamzone replay FILE [--verify] [--level LEVEL.toml]\n"
     "       beamzone replay FILE --record-demo SECONDS [--seed N] [--level LEVEL.toml]\n"
+    "                                             [--difficulty easy|normal|arcade]\n"
     "Prints what a replay file holds. --verify re-simulates it headless (no window) from its\n"
     "seed and commands and checks every recorded state hash: exit 0 when all match, 1 with\n"
     "the first mismatching tick. --level overrides the level file the replay names.\n"
     "--record-demo writes FILE: the attract-mode autopilot playing for SECONDS, headless\n"
-    "(the built-in level unless --level is given).\n";
+    "(the built-in level unless --level is given), at the level's difficulty unless\n"
+    "--difficulty is given.\n";
 
 struct Options {
     std::string file;
@@ -41,6 +45,7 @@ struct Options {
     bool verify = false;
     int record_seconds = 0;
     std::uint64_t seed = 1;
+    std::optional<level::Difficulty> difficulty;
 };
 
 Options parse(Args args) {
@@ -56,6 +61,14 @@ Options parse(Args args) {
             o.record_seconds = parse_int(a, cur.value(a), 1, 10 * 3600);
         } else if (a == "--seed") {
             o.seed = static_cast<std::uint64_t>(parse_int(a, cur.value(a), 0, 2147483647));
+        } else if (a == "--difficulty") {
+            const std::string_view v = cur.value(a);
+            o.difficulty = game::parse_difficulty(v);
+            if (!o.difficulty) {
+                throw UsageError("--difficulty must be one of " +
+                                 std::string(game::kDifficultyNames) + ", not '" + std::string(v) +
+                                 "'");
+            }
         } else if (!a.empty() && a[0] == '-') {
             throw UsageError("unknown option " + printable(a));
         } else if (o.file.empty()) {
@@ -98,11 +111,14 @@ int record_demo(const Options& o) {
         if (!ok) return 1;
         name = o.level;
     }
-    const game::Assets assets(lv.backdrop);
+    const game::Assets assets(lv);
     // Nine tanks so the demo keeps playing for long recordings.
     constexpr int kLives = 9;
-    game::World world(lv, o.seed, assets.factories(), assets.models(), kLives);
+    const level::Difficulty difficulty = o.difficulty.value_or(lv.enemies.difficulty);
+    game::World world(game::level_for(lv, difficulty), o.seed, assets.factories(), assets.models(),
+                      kLives);
     game::replay::Header h;
+    h.difficulty = difficulty;
     h.seed = o.seed;
     h.level = name;
     h.level_hash = game::replay::level_hash(lv);
@@ -148,6 +164,7 @@ int run(const Options& o) {
         std::printf("  level       %s (hash %s)\n", h.level.c_str(), hex(h.level_hash).c_str());
         std::printf("  seed        %" PRIu64 "\n", h.seed);
         std::printf("  lives       %d\n", h.lives);
+        std::printf("  difficulty  %s\n", std::string(game::difficulty_name(h.difficulty)).c_str());
         std::printf("  ticks       %zu (%.1f s of play)\n", r.commands.size(), seconds);
         std::printf("  hashes      %zu (every %d ticks)\n", r.checks.size(), h.hash_interval);
         return 0;
@@ -169,7 +186,7 @@ int run(const Options& o) {
     }
 
     const auto t0 = std::chrono::steady_clock::now();
-    const game::Assets assets(lv.backdrop);
+    const game::Assets assets(lv);
     const game::replay::VerifyResult v = game::replay::verify(r, lv, assets);
     const double ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();

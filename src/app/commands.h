@@ -25,5 +25,6 @@ int cmd_play(Args args);
 int cmd_bench(Args args);
 int cmd_reference(Args args);
 int cmd_compare(Args args);
+int cmd_difficulty(Args args);
 
 }  // namespace bz::app

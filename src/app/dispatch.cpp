@@ -19,6 +19,7 @@ constexpr Command kCommands[] = {
     {"bench", "frame-time benchmark of a level offscreen; --sweep: speed vs accuracy", cmd_bench},
     {"reference", "exact CPU line mask of a model or a level frame (same format as render --mask)", cmd_reference},
     {"compare", "precision, recall and F1 of a line mask against a reference mask", cmd_compare},
+    {"difficulty", "the difficulty table: time to first death per level and difficulty, headless", cmd_difficulty},
 };
 
 void print_usage(std::FILE* out) {

@@ -1,6 +1,7 @@
 #include "app/model_source.h"
 
 #include "core/error.h"
+#include "game/models.h"
 #include "geometry/import.h"
 #include "geometry/primitives.h"
 
@@ -17,7 +18,9 @@ geo::TriMesh load_model_source(const std::string& input) {
     // 708 x 708 cells x 2 = 1,002,528 triangles, seams every 16 cells.
     if (name == "grid") return geo::grid(708, 708, 0.01f, 16);
     if (name == "grid-100k") return geo::grid(224, 224, 0.03f, 16);
-    throw UserError(input + ": unknown built-in model (cube, sphere, coarse-sphere, grid, grid-100k)");
+    // The game's enemy tank: the desktop icon is rendered from it (dist/README.md).
+    if (name == "tank") return game::models::slow_tank();
+    throw UserError(input + ": unknown built-in model (cube, sphere, coarse-sphere, grid, grid-100k, tank)");
 }
 
 }  // namespace bz::app

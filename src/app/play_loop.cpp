@@ -119,17 +119,21 @@ class Loop {
         env.levels = p_.levels;
         if (watcher_) env.current_level = watcher_->file();
         env.high_scores = session_.high_scores();
+        env.high_scores_level = session_.high_scores_level();
         return env;
     }
 
     void push_scripted_keys() {
+        const int frame = result_.frames + 1;
         for (const ScriptedKey& k : config_.presses) {
-            if (k.frame != result_.frames + 1) continue;
+            if (k.frame != frame && k.release_frame != frame) continue;
             unsigned mod = KMOD_NONE;
             if (k.key.mods & platform::kModAlt) mod |= KMOD_LALT;
             if (k.key.mods & platform::kModCtrl) mod |= KMOD_LCTRL;
             if (k.key.mods & platform::kModShift) mod |= KMOD_LSHIFT;
             for (const Uint32 type : {SDL_KEYDOWN, SDL_KEYUP}) {
+                if (type == SDL_KEYDOWN && k.frame != frame) continue;
+                if (type == SDL_KEYUP && k.release_frame != frame) continue;
                 SDL_Event e{};
                 e.type = type;
                 e.key.state = type == SDL_KEYDOWN ? SDL_PRESSED : SDL_RELEASED;
@@ -144,6 +148,7 @@ class Loop {
     // Returns whether a menu had the keys this frame.
     bool update_menus() {
         menus_.env().high_scores = session_.high_scores();
+        menus_.env().high_scores_level = session_.high_scores_level();
         menus_.set_context(session_.menu_context());
         const bool open = menus_.open();
         std::vector<menu::Request> requests;
@@ -424,6 +429,8 @@ class Loop {
             static_cast<double>(renderer_->width()) / std::max(1, renderer_->height());
         scene::FrameList frame = session_.frame(alpha_, aspect);
         frame.style = look_.style;
+        if (!menus_.keeps_game_hud()) frame.hud.clear();
+        for (scene::DrawItem& item : frame.items) item.intensity *= menus_.scene_intensity();
         menus_.draw(frame.hud, p_.font, aspect, static_cast<std::uint64_t>(result_.frames));
         p_.overlay.set_footer(p_.settings.show_fps ? frame_stats_.readout() : std::string());
         p_.overlay.draw(frame.hud, aspect);

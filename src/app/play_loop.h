@@ -21,10 +21,12 @@
 
 namespace bz::app {
 
-// A key tapped by a script (--press): pressed and released before frame `frame` (1-based),
-// through SDL's own event queue, so it takes the path a real key takes.
+// A key pressed by a script (--press) before frame `frame` (1-based) and released before
+// `release_frame` (the same frame: a tap), through SDL's own event queue, so it takes the path
+// a real key takes.
 struct ScriptedKey {
     int frame = 1;
+    int release_frame = 1;
     platform::KeyBinding key;
 };
 

@@ -23,10 +23,10 @@ std::uint64_t parse_seed(std::string_view option, std::string_view text) {
     return v;
 }
 
-// "30:Down,31:Return,90:Alt+Return": frame numbers from 1, keys as the settings file names them.
-std::vector<std::pair<int, platform::KeyBinding>> parse_presses(std::string_view option,
-                                                                std::string_view text) {
-    std::vector<std::pair<int, platform::KeyBinding>> out;
+// "30:Down,31:Return,90:Alt+Return,5-9:Up": frame numbers from 1 (a range holds the key from
+// the first frame to the last), keys as the settings file names them.
+std::vector<ScriptedPress> parse_presses(std::string_view option, std::string_view text) {
+    std::vector<ScriptedPress> out;
     while (!text.empty()) {
         const std::size_t comma = text.find(',');
         const std::string_view item = text.substr(0, comma);
@@ -36,11 +36,18 @@ std::vector<std::pair<int, platform::KeyBinding>> parse_presses(std::string_view
             throw UsageError(std::string(option) + ": '" + std::string(item) +
                              "' is not FRAME:KEY (e.g. 30:Return)");
         }
-        const int frame = parse_int(option, item.substr(0, colon), 1, 100000000);
+        const std::string_view frames = item.substr(0, colon);
+        const std::size_t dash = frames.find('-');
+        ScriptedPress p;
+        p.frame = parse_int(option, frames.substr(0, dash), 1, 100000000);
+        p.release_frame = dash == std::string_view::npos
+                              ? p.frame
+                              : parse_int(option, frames.substr(dash + 1), p.frame, 100000000);
         std::string why;
         const auto key = platform::parse_key(item.substr(colon + 1), &why);
         if (!key) throw UsageError(std::string(option) + ": " + why);
-        out.emplace_back(frame, *key);
+        p.key = *key;
+        out.push_back(p);
     }
     return out;
 }
@@ -71,6 +78,13 @@ PlayOptions parse_play_options(int argc, char* const* argv) {
                 throw UsageError("--style: expected " + scene::style_name_list() + ", not '" + printable(s) + "'");
             }
             o.style = s;
+        } else if (a == "--difficulty") {
+            const std::string d(cur.value(a));
+            if (d != "easy" && d != "normal" && d != "arcade") {
+                throw UsageError("--difficulty: expected easy, normal or arcade, not '" +
+                                 printable(d) + "'");
+            }
+            o.difficulty = d;
         } else if (a == "--windowed") {
             o.fullscreen = false;
         } else if (a == "--fullscreen") {
@@ -122,20 +136,23 @@ std::string play_usage(const std::string& settings_path, const std::string& high
            "                     [--style NAME] [--windowed|--fullscreen]\n"
            "                     [--vsync off|on|adaptive] [--record FILE] [--replay FILE]\n"
            "                     [--seed N] [--size WxH] [--frames N] [--screenshot-at N]\n"
-           "                     [--press FRAME:KEY,...] [--headless-test]\n"
+           "                     [--press FRAME:KEY,...] [--difficulty easy|normal|arcade]\n"
+           "                     [--headless-test]\n"
            "Plays LEVEL (default levels/classic.toml) in a window. Edits to the level file are\n"
            "picked up while playing; errors show on screen and the last good level stays.\n"
            "  --edit           fly around the level without gameplay (WASD, R/F up/down,\n"
            "                   arrows or right mouse button to look, Shift faster)\n"
            "  --style S        line style for this run (else the level's, else the settings')\n"
            "  --preset P       render preset for this run (else the settings', else the level's)\n"
+           "  --difficulty D   for this run (else the settings' `difficulty`, else the level's)\n"
            "  --record FILE    save this game's inputs so --replay FILE plays it back exactly\n"
            "                   (until the level file changes: a replay belongs to one level)\n"
            "  --seed N         random seed of the game (default: from the clock)\n"
            "  --size WxH       window size (default 1280x720; 640x360 for --headless-test)\n"
            "  --frames N       run N frames, one 60 Hz tick each, then exit (for tests)\n"
            "  --screenshot-at N  save a screenshot after frame N, as F12 does\n"
-           "  --press F:KEY,... tap KEY before frame F (e.g. 2:Down,3:Return opens Level)\n"
+           "  --press F:KEY,... tap KEY before frame F (e.g. 2:Down,3:Return opens Level);\n"
+           "                   F-G:KEY holds it from frame F to frame G\n"
            "  --headless-test  run in a hidden window, e.g. with SDL_VIDEODRIVER=offscreen\n"
            "                   (BEAMZONE_ALLOW_OFFSCREEN=1 does the same)\n"
            "Keys (change them in Options > Keys, or in the settings file): treads Q/A and\n"

@@ -1,10 +1,11 @@
 #pragma once
 // What the play loop drives: the game itself, or the --edit viewer. The loop owns the window,
 // input, timing, audio, hot reload and overlays; a session owns what is simulated and drawn.
+#include <string>
 #include <vector>
 
-#include "core/interrupt.h"
 #include "app/menu/play_menus.h"
+#include "core/interrupt.h"
 #include "game/highscores.h"
 #include "level/level.h"
 #include "platform/free_fly.h"
@@ -53,6 +54,8 @@ class PlaySession {
     virtual void keys_changed(const platform::Bindings&) {}
     // The table the High scores page shows; null when the session keeps none.
     virtual const game::HighScoreTable* high_scores() const { return nullptr; }
+    // The level that table belongs to (tables are kept per level), as the screen shows it.
+    virtual std::string high_scores_level() const { return {}; }
     // The window lost focus (the game pauses itself if the settings say so).
     virtual void on_focus_lost() {}
     // True when the session has nothing more to show (a replay reached its end), or the

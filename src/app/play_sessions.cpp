@@ -10,6 +10,7 @@
 #include "game/assets.h"
 #include "game/backdrop.h"
 #include "game/default_level.h"
+#include "game/difficulty.h"
 #include "game/fixed_step.h"
 #include "game/game.h"
 #include "game/highscores.h"
@@ -37,6 +38,7 @@ class GameSession final : public PlaySession {
           pause_on_focus_loss_(o.pause_on_focus_loss),
           log_(log) {
         options_.seed = o.seed.value_or(clock_seed());
+        options_.difficulty = game::parse_difficulty(o.difficulty);
         game::HighScoreLoad scores = game::load_highscores(high_scores_path_);
         for (const std::string& e : scores.errors) log_.warn(e);
         if (!scores.message.empty()) {
@@ -57,7 +59,8 @@ class GameSession final : public PlaySession {
             game_->start_replay(game::replay::load(o.replay));
             log_.info("replaying " + o.replay);
         } else {
-            log_.info("game seed " + std::to_string(options_.seed) + " (--seed repeats it)");
+            log_.info("game seed " + std::to_string(options_.seed) + " (--seed repeats it), " +
+                      std::string(game::difficulty_name(game_->difficulty())) + " difficulty");
         }
     }
 
@@ -129,6 +132,7 @@ class GameSession final : public PlaySession {
     }
 
     const game::HighScoreTable* high_scores() const override { return &game_->highscores(); }
+    std::string high_scores_level() const override { return game_->highscores_title(); }
     void keys_changed(const platform::Bindings& keys) override {
         game_->set_hints(screen_hints(keys));
     }
@@ -217,8 +221,11 @@ class GameSession final : public PlaySession {
         }
     }
 
-    static game::LevelKey key_of(const level::Level& lvl) {
-        return game::level_key(lvl.name, game::level_rules_hash(lvl));
+    // Scores compare only within one level played at one difficulty: the key hashes the rules
+    // as played.
+    game::LevelKey key_of(const level::Level& lvl) const {
+        const level::Difficulty d = options_.difficulty.value_or(lvl.enemies.difficulty);
+        return game::level_key(lvl.name, game::level_rules_hash(game::level_for(lvl, d)));
     }
 
     void save_scores() {
@@ -274,7 +281,7 @@ class EditSession final : public PlaySession {
     EditSession(level::Level lvl, const scene::VectorFont* font)
         : font_(font),
           level_(std::move(lvl)),
-          assets_(std::make_unique<game::Assets>(level_.backdrop)),
+          assets_(std::make_unique<game::Assets>(level_)),
           camera_(level_.player_start + glm::dvec3(0.0, 6.0, 0.0), level_.player_heading_deg,
                   -10.0),
           obstacles_(build(level_)) {}

@@ -21,6 +21,7 @@ namespace bz::app {
 struct SessionOptions {
     const level::Level* level = nullptr;  // nullptr: the game's built-in level
     std::optional<std::uint64_t> seed;    // none: from the clock
+    std::string difficulty;               // "easy", "normal", "arcade"; else the level's
     std::string record;                   // replay file to write at exit, or empty
     std::string replay;                   // replay file to play back, or empty
     std::filesystem::path high_scores;

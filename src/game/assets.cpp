@@ -7,7 +7,7 @@
 #include "core/error.h"
 #include "game/models.h"
 #include "game/obstacle_factories.h"
-#include "geometry/import.h"
+#include "game/level_models.h"
 #include "geometry/line_mesh.h"
 
 namespace bz::game {
@@ -47,6 +47,8 @@ Assets::Assets(const level::Backdrop& b) : library_(std::make_unique<scene::Mesh
     factories_ = make_obstacle_factories(lib);
 }
 
+Assets::Assets(const level::Level& level) : Assets(level.backdrop) { reload(level); }
+
 void Assets::reload(const level::Level& level) {
     // Everything is checked and imported before the library changes.
     std::vector<std::pair<std::string, geo::AdjacencyMesh>> changed;
@@ -56,12 +58,7 @@ void Assets::reload(const level::Level& level) {
             throw UserError(where(o.pos) + "error: no object kind '" + o.kind + "'");
         }
         if (o.model.empty() || !imported.insert(o.model.string()).second) continue;
-        geo::AdjacencyMesh mesh;
-        try {
-            mesh = geo::build_line_mesh(geo::import_model(o.model));
-        } catch (const UserError& e) {
-            throw UserError(where(o.pos) + "error: " + e.what());
-        }
+        geo::AdjacencyMesh mesh = import_level_model(level, o);
         const std::optional<scene::MeshId> id = library_->find(o.model.string());
         if (id && same_geometry(library_->mesh(*id), mesh)) continue;
         changed.emplace_back(o.model.string(), std::move(mesh));

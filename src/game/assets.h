@@ -14,6 +14,10 @@ namespace bz::game {
 class Assets {
   public:
     explicit Assets(const level::Backdrop& backdrop);
+    // With the level's models imported up front, confined to the level's folders (the model
+    // factory alone would import a model on first use, confined to the model's own folder).
+    // Throws UserError (file:line:col) when a kind is unknown or a model does not import.
+    explicit Assets(const level::Level& level);
     Assets(const Assets&) = delete;
     Assets& operator=(const Assets&) = delete;
 

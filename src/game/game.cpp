@@ -7,6 +7,7 @@
 #include "game/autopilot.h"
 #include "game/backdrop.h"
 #include "game/default_level.h"
+#include "game/difficulty.h"
 #include "game/hud.h"
 #include "game/hud_layout.h"
 #include "game/screens.h"
@@ -43,19 +44,38 @@ Game::Game(level::Level level, GameOptions options, const scene::VectorFont* fon
     : level_(std::move(level)),
       options_(std::move(options)),
       font_(font),
-      assets_(std::make_unique<Assets>(level_.backdrop)),
+      assets_(std::make_unique<Assets>(level_)),
       highscores_(options_.highscores) {
     // Build the level once up front so a bad object kind or model fails here, not mid-game.
-    demo_ = std::make_unique<World>(level_, kDemoSeed, assets_->factories(), assets_->models(), 3);
+    demo_ = std::make_unique<World>(playing_level(level_), kDemoSeed, assets_->factories(),
+                                    assets_->models(), 3);
     if (!options_.attract) start_game();
 }
 
 Game::~Game() = default;
 
+std::string Game::highscores_title() const {
+    std::string title = level_key(level_.name, 0).name;
+    for (char& c : title) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    return title;
+}
+
 std::string Game::level_name() const {
     if (!options_.level_name.empty()) return options_.level_name;
     if (level_.file.empty() || level_.file == kBuiltinLevelName) return kBuiltinLevelName;
     return level_.file.string();
+}
+
+level::Difficulty Game::difficulty() const {
+    return options_.difficulty.value_or(level_.enemies.difficulty);
+}
+
+level::Level Game::playing_level(const level::Level& level) const {
+    return level_for(level, options_.difficulty.value_or(level.enemies.difficulty));
+}
+
+int Game::start_lives() const {
+    return options_.lives > 0 ? options_.lives : level_.player_lives;
 }
 
 std::uint64_t Game::level_hash_value() const {
@@ -65,8 +85,8 @@ std::uint64_t Game::level_hash_value() const {
 
 void Game::start_game() {
     const std::uint64_t seed = options_.seed + games_started_++;
-    world_ = std::make_unique<World>(level_, seed, assets_->factories(), assets_->models(),
-                                     options_.lives);
+    world_ = std::make_unique<World>(playing_level(level_), seed, assets_->factories(),
+                                     assets_->models(), start_lives());
     playback_.reset();
     mismatch_.reset();
     recorder_.reset();
@@ -75,7 +95,8 @@ void Game::start_game() {
         h.seed = seed;
         h.level = level_name();
         h.level_hash = level_hash_value();
-        h.lives = options_.lives;
+        h.lives = start_lives();
+        h.difficulty = difficulty();
         h.hash_interval = std::max(1, options_.hash_interval);
         recorder_.emplace(std::move(h));
     }
@@ -102,8 +123,8 @@ void Game::start_replay(replay::Replay r) {
                         ") than the one loaded (" + level_name() + ", hash " +
                         std::to_string(level_hash_value()) + ")");
     }
-    world_ = std::make_unique<World>(level_, r.header.seed, assets_->factories(), assets_->models(),
-                                     r.header.lives);
+    world_ = std::make_unique<World>(level_for(level_, r.header.difficulty), r.header.seed,
+                                     assets_->factories(), assets_->models(), r.header.lives);
     recorder_.reset();
     mismatch_.reset();
     playback_.emplace(std::move(r));
@@ -124,7 +145,7 @@ ReloadReport Game::reload_level(const level::Level& level) {
     // the models here, and then both worlds build the same obstacles from the same factories.
     World::check_field(level);
     assets_->reload(level);
-    demo_->reload_level(level, assets_->factories());
+    demo_->reload_level(playing_level(level), assets_->factories());
     ReloadReport report;
     if (recorder_ && world_) {
         report.ended_recording = recorder_->finish(*world_);
@@ -132,7 +153,7 @@ ReloadReport Game::reload_level(const level::Level& level) {
         recorder_.reset();
         options_.record = false;
     }
-    if (world_) report.world = world_->reload_level(level, assets_->factories());
+    if (world_) report.world = world_->reload_level(playing_level(level), assets_->factories());
     level_ = level;
     level_hash_.reset();
     return report;
@@ -171,8 +192,8 @@ void Game::step_world(const TickCommand& command) {
 
 void Game::step_demo() {
     if (!demo_ || demo_->game_over()) {
-        demo_ = std::make_unique<World>(level_, kDemoSeed + ++demo_games_, assets_->factories(),
-                                        assets_->models(), 3);
+        demo_ = std::make_unique<World>(playing_level(level_), kDemoSeed + ++demo_games_,
+                                        assets_->factories(), assets_->models(), 3);
     }
     demo_->step(autopilot(*demo_));
 }
@@ -322,10 +343,9 @@ scene::FrameList Game::frame(double alpha, double aspect) const {
     }
     // Tables are kept per level: say whose this is.
     if (screen_ == Screen::high_scores ||
-        (screen_ == Screen::attract && (ticks_ / kAttractCycleTicks) % 2 == 1)) {
-        std::string title = level_key(level_.name, 0).name;
-        for (char& c : title) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-        hud::text(f.hud, font_, title, {0.0f, 0.54f}, 0.045f, hud::kGreen,
+        (screen_ == Screen::attract && !options_.app_menus &&
+         (ticks_ / kAttractCycleTicks) % 2 == 1)) {
+        hud::text(f.hud, font_, highscores_title(), {0.0f, 0.54f}, 0.045f, hud::kGreen,
                   scene::TextAlign::center);
     }
     if (playback_ && live) {

@@ -37,7 +37,9 @@ enum class Screen : std::uint8_t {
 
 struct GameOptions {
     std::uint64_t seed = 1;  // the first game's seed; each later game adds one
-    int lives = 3;
+    int lives = 0;           // 0: the level's [player] lives
+    // Empty: the level's [enemies] difficulty (--difficulty and the settings file set it).
+    std::optional<level::Difficulty> difficulty;
     HighScoreTable highscores = HighScoreTable::defaults();
     // What replays name as the level: empty = the level's file path, or "builtin:default".
     std::string level_name;
@@ -89,10 +91,14 @@ class Game {
     // The game in play or just ended; null before the first game.
     const World* world() const { return world_.get(); }
     const level::Level& level() const { return level_; }
+    // The difficulty games are played at: the options', else the level's default.
+    level::Difficulty difficulty() const;
 
     const HighScoreTable& highscores() const { return highscores_; }
     // Shows another level's table from now on (high scores are kept per level).
     void set_highscores(HighScoreTable table) { highscores_ = std::move(table); }
+    // The level's name as the table screens show it (upper case, printable, bounded).
+    std::string highscores_title() const;
     // True once after the table changed: the caller saves it then.
     bool take_highscores_changed();
 
@@ -120,6 +126,9 @@ class Game {
     void step_demo();
     void step_initials(const Buttons& b);
     std::string level_name() const;
+    // The level as it plays at the chosen difficulty.
+    level::Level playing_level(const level::Level& level) const;
+    int start_lives() const;
     std::uint64_t level_hash_value() const;
 
     level::Level level_;

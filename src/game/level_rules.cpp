@@ -31,6 +31,19 @@ std::uint64_t level_rules_hash(const level::Level& lv) {
     h.value(e.spawn_min_distance);
     h.value(e.spawn_max_distance);
     h.value(e.aggression);
+    h.value(e.saucer_score);
+    h.value(e.spawn_rear_chance);
+    h.value(e.fire_interval);
+    h.value(e.aim_error_deg);
+    h.value(e.hold_fire);
+    h.value(e.slow_tank_points);
+    h.value(e.super_tank_points);
+    h.value(e.missile_points);
+    h.value(e.saucer_points);
+    h.value(static_cast<std::uint8_t>(e.difficulty));
+    h.value(lv.player_lives);
+    h.value(lv.bonus_scores.size());
+    for (const int b : lv.bonus_scores) h.value(b);
     return h.digest();
 }
 

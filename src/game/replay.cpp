@@ -5,6 +5,7 @@
 #include "core/file_io.h"
 #include "core/hash.h"
 #include "game/assets.h"
+#include "game/difficulty.h"
 #include "game/level_rules.h"
 
 namespace bz::game::replay {
@@ -63,8 +64,8 @@ std::optional<Mismatch> Player::check(const World& world) {
 }
 
 VerifyResult verify(const Replay& replay, const level::Level& level, const Assets& assets) {
-    World world(level, replay.header.seed, assets.factories(), assets.models(),
-                replay.header.lives);
+    World world(level_for(level, replay.header.difficulty), replay.header.seed, assets.factories(),
+                assets.models(), replay.header.lives);
     Player player(replay);
     VerifyResult result;
     while (!player.done()) {

@@ -9,6 +9,7 @@
 //   level levels/classic.toml   (or builtin:default)
 //   level-hash 0123456789abcdef
 //   lives 3
+//   difficulty normal      optional (older files: normal)
 //   hash-interval 60
 //   ticks 3600
 //   c COUNT LEFT RIGHT BUTTONS   a run of COUNT identical commands (treads -127..127, buttons hex)
@@ -41,6 +42,7 @@ struct Header {
     std::string level;  // path as given to the game, or kBuiltinLevelName
     std::uint64_t level_hash = 0;
     int lives = 3;
+    level::Difficulty difficulty = level::Difficulty::normal;
     int hash_interval = 60;
 };
 

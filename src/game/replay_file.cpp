@@ -10,6 +10,7 @@
 #include "core/file_io.h"
 #include "core/line_reader.h"
 #include "core/printable.h"
+#include "game/difficulty.h"
 #include "game/replay.h"
 
 namespace bz::game::replay {
@@ -110,6 +111,7 @@ std::string serialise(const Replay& r) {
     out += "level " + r.header.level + "\n";
     out += "level-hash " + hex(r.header.level_hash) + "\n";
     out += "lives " + std::to_string(r.header.lives) + "\n";
+    out += "difficulty " + std::string(difficulty_name(r.header.difficulty)) + "\n";
     out += "hash-interval " + std::to_string(r.header.hash_interval) + "\n";
     out += "ticks " + std::to_string(r.commands.size()) + "\n";
     for (std::size_t i = 0; i < r.commands.size();) {
@@ -183,6 +185,14 @@ Replay parse(std::string_view text, const std::string& name) {
             want(2);
             r.header.lives = err.number<int>(f[1], "lives");
             if (r.header.lives < 1 || r.header.lives > 9) err.fail_at(f[1], "lives must be 1..9");
+        } else if (key == "difficulty") {
+            want(2);
+            const auto d = parse_difficulty(f[1]);
+            if (!d) {
+                err.fail_at(f[1], "unknown difficulty '" + printable(f[1]) + "' (one of " +
+                                      std::string(kDifficultyNames) + ")");
+            }
+            r.header.difficulty = *d;
         } else if (key == "hash-interval") {
             want(2);
             r.header.hash_interval = err.number<int>(f[1], "hash interval");

@@ -11,9 +11,10 @@ inline constexpr double kPlayerSpeed = 7.0;     // units/s, both treads full for
 inline constexpr double kPlayerTurnDeg = 50.0;  // deg/s, treads fully opposed
 inline constexpr double kPlayerRadius = 1.6;
 inline constexpr double kEyeHeight = 1.4;
-inline constexpr int kStartLives = 3;
 inline constexpr int kMaxLives = 9;
-inline constexpr int kBonusScores[] = {15000, 100000};
+// Lives, bonus tanks, points, score thresholds, aggression, fire rate and where enemies
+// appear are the level's (level::EnemyRules, with the 1980 operator defaults), scaled by the
+// difficulty (game/difficulty.h).
 
 // Shells. One player shell may be in flight at a time.
 inline constexpr double kShellSpeed = 45.0;
@@ -52,12 +53,6 @@ inline constexpr double kSaucerAltitude = 0.6;
 inline constexpr int kSaucerLifeTicks = 20 * kTicksPerSecond;
 inline constexpr int kSaucerMinDelayTicks = 25 * kTicksPerSecond;
 inline constexpr int kSaucerMaxDelayTicks = 50 * kTicksPerSecond;
-
-// Scores.
-inline constexpr int kSlowTankPoints = 1000;
-inline constexpr int kSuperTankPoints = 3000;
-inline constexpr int kMissilePoints = 2000;
-inline constexpr int kSaucerPoints = 5000;
 
 // Pacing.
 inline constexpr int kFirstSpawnTicks = 90;

@@ -86,6 +86,7 @@ World::World(const level::Level& level, std::uint64_t seed, const scene::Factory
              ModelIds models, int lives)
     : field_(level.field_size, level.wrap),
       rules_(level.enemies),
+      bonus_scores_(level.bonus_scores),
       models_(std::move(models)),
       obstacles_(build_obstacles(level, factories, field_)),
       grid_(obstacles_, field_),
@@ -149,9 +150,8 @@ void World::add_score(int points) {
 }
 
 void World::award_bonuses() {
-    constexpr int kBonusCount = static_cast<int>(std::size(tuning::kBonusScores));
-    while (cur_.bonuses_awarded < kBonusCount &&
-           cur_.score >= tuning::kBonusScores[cur_.bonuses_awarded]) {
+    const int count = static_cast<int>(bonus_scores_.size());
+    while (cur_.bonuses_awarded < count && cur_.score >= bonus_scores_[cur_.bonuses_awarded]) {
         ++cur_.bonuses_awarded;
         cur_.lives = std::min(cur_.lives + 1, tuning::kMaxLives);
         events_.push_back(SoundEvent::bonus_life);
@@ -219,6 +219,7 @@ std::uint64_t World::state_hash() const {
         h.value(e.fire_cooldown);
         h.value(e.weave_phase);
         h.value(e.vertical_speed);
+        h.value(e.provoked);
     }
     h.value(s.saucer.has_value());
     if (s.saucer) {

@@ -75,6 +75,7 @@ class World {
     const std::vector<scene::Entity>& obstacles() const { return obstacles_; }
     const Field& field() const { return field_; }
     const level::EnemyRules& rules() const { return rules_; }
+    const std::vector<int>& bonus_scores() const { return bonus_scores_; }
     std::uint64_t seed() const { return seed_; }
     const std::vector<SoundEvent>& events() const { return events_; }
     float engine_level() const;
@@ -119,7 +120,9 @@ class World {
     // A legal place for a new hostile of `kind` around the player, or none after a few tries.
     std::optional<glm::dvec2> spawn_spot(HostileKind kind);
     void place_hostile(HostileKind kind, glm::dvec2 position, double yaw);
-    void fire_shell(const scene::Entity& from, bool from_player, double speed, double range);
+    // `yaw_offset` turns the shell off the gun's line (enemy aim error), radians.
+    void fire_shell(const scene::Entity& from, bool from_player, double speed, double range,
+                    double yaw_offset = 0.0);
     void destroy_hostile();
     void destroy_saucer();
     void kill_player();
@@ -146,6 +149,7 @@ class World {
 
     Field field_;
     level::EnemyRules rules_;
+    std::vector<int> bonus_scores_;  // the level's, increasing
     ModelIds models_;
     std::vector<scene::Entity> obstacles_;
     ObstacleGrid grid_;

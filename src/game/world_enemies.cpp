@@ -31,6 +31,10 @@ double turn_towards(double& yaw, double target, double max_step) {
     return wrap_angle(target - yaw);
 }
 
+int seconds_to_ticks(double seconds) {
+    return static_cast<int>(std::lround(std::max(0.0, seconds) * tuning::kTicksPerSecond));
+}
+
 int ticks_between(Rng& rng, int lo, int hi) {
     return lo + static_cast<int>(rng.below(static_cast<std::uint32_t>(std::max(1, hi - lo))));
 }
@@ -74,11 +78,20 @@ std::optional<glm::dvec2> World::spawn_spot(HostileKind kind) {
         kind == HostileKind::missile ? tuning::kMissileRadius : tuning::kTankRadius;
     const double lo = std::max(10.0, rules_.spawn_min_distance);
     const double hi = std::max(lo, rules_.spawn_max_distance);
+    // Bearings relative to the player's heading, clockwise: the rear quarter (135..225
+    // degrees) gets only its share `spawn_rear_chance` of the spawns, so an enemy rarely
+    // appears where the player cannot see it coming. The sector is drawn once, so places
+    // blocked by obstacles in front do not push spawns round to the back.
+    const double heading = cur_.player.body.transform.yaw;
+    const bool rear = cur_.rng.uniform() < std::clamp(rules_.spawn_rear_chance, 0.0, 1.0);
     for (int attempt = 0; attempt < 40; ++attempt) {
-        const double bearing = cur_.rng.uniform(0.0, 2.0 * kPi);
+        const double relative = rear ? cur_.rng.uniform(deg(135.0), deg(225.0))
+                                     : cur_.rng.uniform(deg(-135.0), deg(135.0));
+        // Clockwise from ahead is a turn to the right, which is negative yaw.
+        const double yaw = heading - relative;
         const double dist = kind == HostileKind::missile ? hi : cur_.rng.uniform(lo, hi);
         const glm::dvec2 p =
-            field_.wrap(player_ground() + glm::dvec2(std::sin(bearing), -std::cos(bearing)) * dist);
+            field_.wrap(player_ground() + glm::dvec2(-std::sin(yaw), -std::cos(yaw)) * dist);
         // Never inside (or touching) an obstacle, and on the field when it does not wrap.
         if (!field_.contains(p, radius + 1.0)) continue;
         if (obstacle_at(p, radius + 2.0) != nullptr) continue;
@@ -114,8 +127,11 @@ void World::place_hostile(HostileKind kind, glm::dvec2 position, double yaw) {
                        is_missile ? tuning::kMissileRadius : tuning::kTankRadius,
                        {},
                        is_missile ? 1.0 : tuning::kTankHeight};
+    // A new enemy waits two to three reloads, longer when calm, before its
+    // first shot: time for the player to find it on the radar and turn.
     const double calm = 1.0 - std::clamp(rules_.aggression, 0.0, 1.0);
-    h.fire_cooldown = 60 + static_cast<int>(120.0 * calm) + ticks_between(cur_.rng, 0, 60);
+    h.fire_cooldown = seconds_to_ticks(rules_.fire_interval * (2.0 + calm)) +
+                      ticks_between(cur_.rng, 0, tuning::kTicksPerSecond);
     h.mode = TankMode::approach;
     h.mode_ticks = ticks_between(cur_.rng, 120, 300);
     h.mode_yaw = deg(cur_.rng.uniform(-40.0, 40.0));
@@ -168,7 +184,8 @@ void World::step_tank(Hostile& h) {
             break;
         case TankMode::attack: {
             target = face_player;
-            throttle = dist > 30.0 ? 0.5 : (dist < 14.0 ? -0.4 : 0.0);
+            // Hold off at shooting range rather than close in: a shell from afar can miss.
+            throttle = dist > 40.0 ? 0.5 : (dist < 20.0 ? -0.4 : 0.0);
             if (dist > tuning::kEngageDistance * 1.4) {
                 h.mode = TankMode::approach;
                 h.mode_ticks = ticks_between(cur_.rng, 120, 300);
@@ -231,12 +248,16 @@ void World::step_tank(Hostile& h) {
     const bool aimed = std::abs(wrap_angle(face_player - t.yaw)) < deg(tuning::kAimToleranceDeg);
     const bool own_shell = std::any_of(cur_.shells.begin(), cur_.shells.end(),
                                        [](const Shell& s) { return !s.from_player; });
-    if (h.mode == TankMode::attack && aimed && h.fire_cooldown == 0 && !own_shell &&
+    const bool may_fire = !rules_.hold_fire || h.provoked;
+    if (may_fire && h.mode == TankMode::attack && aimed && h.fire_cooldown == 0 && !own_shell &&
         dist < tuning::kEnemyShellRange) {
-        fire_shell(h.body, false, tuning::kEnemyShellSpeed, tuning::kEnemyShellRange);
+        const double error = deg(std::max(0.0, rules_.aim_error_deg));
+        fire_shell(h.body, false, tuning::kEnemyShellSpeed, tuning::kEnemyShellRange,
+                   cur_.rng.uniform(-error, error));
         events_.push_back(SoundEvent::enemy_shot);
         const double calm = 1.0 - aggression;
-        h.fire_cooldown = 70 + static_cast<int>(150.0 * calm) + ticks_between(cur_.rng, 0, 60);
+        h.fire_cooldown = seconds_to_ticks(rules_.fire_interval * (0.75 + 0.5 * calm)) +
+                          ticks_between(cur_.rng, 0, tuning::kTicksPerSecond);
     }
 }
 
@@ -288,9 +309,9 @@ void World::step_missile(Hostile& h) {
 void World::destroy_hostile() {
     if (!cur_.hostile) return;
     const Hostile& h = *cur_.hostile;
-    int points = tuning::kSlowTankPoints;
-    if (h.kind == HostileKind::super_tank) points = tuning::kSuperTankPoints;
-    if (h.kind == HostileKind::missile) points = tuning::kMissilePoints;
+    int points = rules_.slow_tank_points;
+    if (h.kind == HostileKind::super_tank) points = rules_.super_tank_points;
+    if (h.kind == HostileKind::missile) points = rules_.missile_points;
     spawn_debris(h.body.transform.position, h.body.color, h.kind == HostileKind::missile ? 4 : 7,
                  1.0);
     cur_.hostile.reset();
@@ -317,7 +338,10 @@ void World::spawn_saucer(glm::dvec2 view_offset) {
 void World::step_saucer() {
     if (!cur_.saucer) {
         if (!rules_.saucer) return;
-        if (--cur_.saucer_spawn_ticks > 0) return;
+        // The delay runs from the start; below the saucer's score it waits at zero, so the
+        // saucer comes as soon as the player reaches that score.
+        if (cur_.saucer_spawn_ticks > 0) --cur_.saucer_spawn_ticks;
+        if (cur_.saucer_spawn_ticks > 0 || cur_.score < rules_.saucer_score) return;
         const double bearing = cur_.rng.uniform(0.0, 2.0 * kPi);
         const double dist = cur_.rng.uniform(35.0, 70.0);
         spawn_saucer(glm::dvec2(std::sin(bearing), std::cos(bearing)) * dist);
@@ -361,7 +385,7 @@ void World::destroy_saucer() {
     cur_.saucer_spawn_ticks =
         ticks_between(cur_.rng, tuning::kSaucerMinDelayTicks, tuning::kSaucerMaxDelayTicks);
     events_.push_back(SoundEvent::explosion);
-    add_score(tuning::kSaucerPoints);
+    add_score(rules_.saucer_points);
 }
 
 }  // namespace bz::game

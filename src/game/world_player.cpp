@@ -64,15 +64,21 @@ void World::step_player(const PackedCommand& cmd) {
                                            [](const Shell& s) { return s.from_player; });
         if (!in_flight) {
             fire_shell(p.body, true, tuning::kShellSpeed, tuning::kShellRange);
+            if (cur_.hostile) cur_.hostile->provoked = true;
             events_.push_back(SoundEvent::shot);
         }
     }
     p.fire_held = fire;
 }
 
-void World::fire_shell(const scene::Entity& from, bool from_player, double speed, double range) {
+void World::fire_shell(const scene::Entity& from, bool from_player, double speed, double range,
+                       double yaw_offset) {
     const scene::Transform& t = from.transform;
     const glm::dvec3 fwd = t.forward();
+    // Straight along the gun unless told otherwise (bit for bit the gun's own direction).
+    const double yaw = yaw_offset == 0.0 ? t.yaw : wrap_angle(t.yaw + yaw_offset);
+    const glm::dvec2 dir = yaw_offset == 0.0 ? glm::dvec2(fwd.x, fwd.z)
+                                             : glm::dvec2(-std::sin(yaw), -std::cos(yaw));
     Shell s;
     s.id = cur_.next_id++;
     s.from_player = from_player;
@@ -88,8 +94,8 @@ void World::fire_shell(const scene::Entity& from, bool from_player, double speed
         start = ground(t.position);
     }
     s.body.transform.position = {start.x, tuning::kShellHeight, start.y};
-    s.body.transform.yaw = t.yaw;
-    s.velocity = glm::dvec2(fwd.x, fwd.z) * speed;
+    s.body.transform.yaw = yaw;
+    s.velocity = dir * speed;
     s.ticks_left = static_cast<int>(std::ceil(range / speed * tuning::kTicksPerSecond));
     cur_.shells.push_back(s);
 }

@@ -36,6 +36,7 @@ WorldReload World::reload_level(const level::Level& level, const scene::FactoryT
 
     field_ = field;
     rules_ = level.enemies;
+    bonus_scores_ = level.bonus_scores;
     obstacles_ = std::move(obstacles);
     grid_ = ObstacleGrid(obstacles_, field_);
     style_ = scene::style_from_name(level.render.style).value_or(scene::Style::vector);

@@ -45,6 +45,7 @@ struct Hostile {
     int fire_cooldown = 0;        // ticks until it may fire again
     double weave_phase = 0.0;     // missile zig-zag
     double vertical_speed = 0.0;  // missile hops
+    bool provoked = false;        // the player fired while it was on the field (hold_fire)
 };
 
 struct Saucer {

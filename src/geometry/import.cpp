@@ -1,11 +1,14 @@
 #include "geometry/import.h"
 
 #include "geometry/import_scene.h"
+#include "geometry/import_worker.h"
 
 namespace bz::geo {
 
 TriMesh import_model(const std::filesystem::path& path, const ImportOptions& options) {
-    return detail::import_in_this_process(path, options);
+    return detail::run_isolated(path, options.limits, [&path, &options] {
+        return detail::import_in_this_process(path, options);
+    });
 }
 
 }  // namespace bz::geo

@@ -16,6 +16,7 @@
 #include "core/error.h"
 #include "core/regular_file.h"
 #include "core/stderr_capture.h"
+#include "geometry/confined_io.h"
 #include "geometry/import_gltf.h"
 #include "geometry/import_guard.h"
 #include "geometry/import_zip.h"
@@ -43,6 +44,22 @@ std::string lowercase_extension(const fs::path& path) {
         if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
     }
     return ext;
+}
+
+bool inside_any(const fs::path& path, const std::vector<fs::path>& folders) {
+    for (const fs::path& folder : folders) {
+        auto p = path.begin();
+        bool ok = true;
+        for (auto f = folder.begin(); f != folder.end(); ++f, ++p) {
+            if (f->empty() && std::next(f) == folder.end()) break;
+            if (p == path.end() || *p != *f) {
+                ok = false;
+                break;
+            }
+        }
+        if (ok) return true;
+    }
+    return false;
 }
 
 // Everything that can be checked before Assimp allocates anything for the file.
@@ -144,6 +161,15 @@ struct Walk {
     }
 };
 
+// The folders an import may read from: `options.allowed_folders`, or the model's own folder.
+std::vector<fs::path> allowed_folders_for(const fs::path& path, const ImportOptions& options) {
+    if (!options.allowed_folders.empty()) return options.allowed_folders;
+    std::error_code ec;
+    const fs::path resolved = fs::weakly_canonical(fs::absolute(path, ec), ec);
+    if (ec) return {};
+    return {resolved.parent_path()};
+}
+
 }  // namespace
 
 TriMesh import_in_this_process(const fs::path& path, const ImportOptions& options) {
@@ -154,9 +180,20 @@ TriMesh import_in_this_process(const fs::path& path, const ImportOptions& option
         fail(path, "file is " + std::to_string(file.size()) + " bytes, over the limit of " +
                        std::to_string(options.limits.max_file_bytes));
     }
+    std::error_code ec;
+    const fs::path resolved = fs::weakly_canonical(fs::absolute(path, ec), ec);
+    if (ec) fail(path, "cannot be resolved: " + ec.message());
+    const std::vector<fs::path> folders = allowed_folders_for(path, options);
+    if (!inside_any(resolved, folders)) {
+        fail(path, "lies outside the folders models may be read from");
+    }
     check_before_import(path, file, options);
 
     Assimp::Importer importer;
+    auto io = std::make_unique<ConfinedIOSystem>(folders, resolved.parent_path(),
+                                                 options.limits.max_file_bytes);
+    const ConfinedIOSystem& confined = *io;
+    importer.SetIOHandler(io.release());  // the importer owns and deletes it
     // No Assimp::DefaultLogger is ever created, so Assimp logs to its null logger: silent.
     const unsigned flags = aiProcess_Triangulate | aiProcess_ValidateDataStructure;
     const aiScene* scene = nullptr;
@@ -164,14 +201,20 @@ TriMesh import_in_this_process(const fs::path& path, const ImportOptions& option
         // A few loaders print to stderr directly; keep that out of our one-line messages.
         StderrCapture loader_output;
         try {
-            scene = importer.ReadFile(path.string(), flags);
+            scene = importer.ReadFile(resolved.string(), flags);
+        } catch (const std::bad_alloc&) {
+            throw;  // the caller says which memory cap was hit
         } catch (const std::exception& e) {
             // Assimp catches its own import errors; this is for the unexpected.
             fail(path, std::string("import failed: ") + e.what());
         }
         const std::string printed = loader_output.text();
+        // A refused reference fails the import even when the loader carried on without it:
+        // the level would otherwise look different from what its author sees.
+        if (!confined.refusal().empty()) fail(path, confined.refusal());
         if (!scene) {
             std::string why = importer.GetErrorString();
+            if (why.find("bad_alloc") != std::string::npos) throw std::bad_alloc();
             if (!printed.empty()) why += " (loader printed: " + printed.substr(0, 200) + ")";
             fail(path, why);
         }

@@ -31,16 +31,33 @@ struct ObjectDesc {
     double footprint_radius = 0.0;
 };
 
+// How hard the game plays. The level names its default; the player's setting or --difficulty
+// wins. game/difficulty.h turns a level's rules into the rules of one difficulty.
+enum class Difficulty : std::uint8_t { easy, normal, arcade };
+
+// The enemy rules and the scoring, after the 1980 operator defaults where those are known
+// (missiles from 10,000; tanks 1,000, missiles 2,000, super tanks 3,000, the saucer 5,000).
+// These are the values of the "normal" difficulty.
 struct EnemyRules {
     bool slow_tank = true;
     bool super_tank = true;
     bool missile = true;
     bool saucer = true;
     int super_tank_score = 10000;   // super tanks may appear from this score
-    int missile_score = 5000;       // missiles may appear from this score
+    int missile_score = 10000;      // missiles may appear from this score
+    int saucer_score = 2000;        // the saucer may appear from this score
     double spawn_min_distance = 40.0;
     double spawn_max_distance = 90.0;
+    double spawn_rear_chance = 0.1;  // share of spawns placed in the 90 degrees behind the player
     double aggression = 0.5;        // 0 = passive, 1 = relentless
+    double fire_interval = 6.0;     // seconds an enemy tank reloads between shots
+    double aim_error_deg = 6.0;     // an enemy shell leaves up to this far off the gun's line
+    bool hold_fire = false;         // tanks shoot only once the player has fired at them
+    int slow_tank_points = 1000;
+    int super_tank_points = 3000;
+    int missile_points = 2000;
+    int saucer_points = 5000;
+    Difficulty difficulty = Difficulty::normal;  // the level's default difficulty
 };
 
 struct Backdrop {
@@ -78,10 +95,15 @@ struct Level {
     std::string author;
     std::string description;     // one or two sentences for a level menu; may be empty
     std::filesystem::path file;  // the file it was loaded from
+    // The canonical folders its models, and every file a model refers to, may be read from:
+    // the level's own folder and the project's data/ folder (empty for a built-in level).
+    std::vector<std::filesystem::path> model_folders;
     double field_size = 400.0;   // square field, centred on the origin, side in world units
     bool wrap = true;            // leaving one edge enters the opposite one
     glm::dvec3 player_start{0.0};
     double player_heading_deg = 0.0;
+    int player_lives = 3;                        // tanks at the start of a game
+    std::vector<int> bonus_scores{15000, 100000};  // a bonus tank at each, increasing
     std::vector<ObjectDesc> obstacles;
     EnemyRules enemies;
     Backdrop backdrop;

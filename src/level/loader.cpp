@@ -95,6 +95,9 @@ LoadResult load_level_string(std::string_view text, const fs::path& file_for_mes
         detail::ReadContext ctx{diag, options,
                                 model_roots(file_for_messages.parent_path(), options.data_root),
                                 result.dependencies};
+        for (const auto& folder : {ctx.model_roots.level_folder, ctx.model_roots.data_folder}) {
+            if (!folder.empty()) level.model_folders.push_back(folder);
+        }
         detail::read_field(root, level, obstacle_color, ctx);
         detail::read_player(root, level, ctx);
         detail::read_enemies(root, level, ctx);

@@ -14,10 +14,15 @@ constexpr std::array<std::string_view, 11> kRootKeys = {
     "version",  "name",    "author",   "description", "field",     "player",
     "obstacle", "enemies", "backdrop", "render",      "camera_key"};
 constexpr std::array<std::string_view, 3> kFieldKeys = {"size", "wrap", "obstacle_color"};
-constexpr std::array<std::string_view, 2> kPlayerKeys = {"position", "heading"};
-constexpr std::array<std::string_view, 6> kEnemyKeys = {
-    "types",     "super_tank_score", "missile_score", "spawn_min_distance", "spawn_max_distance",
-    "aggression"};
+constexpr std::array<std::string_view, 4> kPlayerKeys = {"position", "heading", "lives",
+                                                         "bonus_scores"};
+constexpr std::array<std::string_view, 16> kEnemyKeys = {
+    "types",           "difficulty",         "super_tank_score",   "missile_score",
+    "saucer_score",    "spawn_min_distance", "spawn_max_distance", "spawn_rear_chance",
+    "aggression",      "fire_interval",      "aim_error",          "hold_fire",
+    "slow_tank_points", "super_tank_points", "missile_points",     "saucer_points"};
+constexpr std::array<std::string_view, 3> kDifficulties = {"easy", "normal", "arcade"};
+constexpr std::size_t kMaxBonusScores = 16;
 constexpr std::array<std::string_view, 4> kEnemyTypes = {"slow_tank", "super_tank", "missile",
                                                          "saucer"};
 constexpr std::array<std::string_view, 5> kRenderKeys = {"style", "preset", "line_width",
@@ -78,6 +83,41 @@ void read_field(const toml::table& root, Level& level, glm::vec3& obstacle_color
     if (auto v = r.color("obstacle_color")) obstacle_color = *v;
 }
 
+namespace {
+
+// A list of increasing scores, each giving one bonus tank; [] for none.
+void read_bonus_scores(const toml::node& node, Level& level, Diagnostics& diag) {
+    const auto* list = node.as_array();
+    if (!list) {
+        diag.error(node.source(), "'bonus_scores' must be an array of scores, not " +
+                                      std::string(type_name(node)));
+        return;
+    }
+    if (list->size() > kMaxBonusScores) {
+        diag.error(node.source(), "at most " + std::to_string(kMaxBonusScores) +
+                                      " bonus scores, not " + std::to_string(list->size()));
+        return;
+    }
+    std::vector<int> scores;
+    for (const auto& item : *list) {
+        const auto* v = item.as_integer();
+        if (!v || v->get() < 1 || v->get() > kMaxScore) {
+            diag.error(item.source(), "a bonus score is a whole number from 1 to " +
+                                          std::to_string(kMaxScore));
+            return;
+        }
+        if (!scores.empty() && v->get() <= scores.back()) {
+            diag.error(item.source(), "bonus scores must increase: " + std::to_string(v->get()) +
+                                          " comes after " + std::to_string(scores.back()));
+            return;
+        }
+        scores.push_back(static_cast<int>(v->get()));
+    }
+    level.bonus_scores = std::move(scores);
+}
+
+}  // namespace
+
 void read_player(const toml::table& root, Level& level, ReadContext& ctx) {
     const toml::table* t = section(root, "player", ctx.diag);
     if (!t) return;
@@ -89,6 +129,8 @@ void read_player(const toml::table& root, Level& level, ReadContext& ctx) {
         ctx.start_known = v.has_value();
     }
     if (auto v = r.number("heading", kHeadingRange)) level.player_heading_deg = *v;
+    if (auto v = r.integer("lives", 1, 9)) level.player_lives = static_cast<int>(*v);
+    if (const toml::node* node = r.get("bonus_scores")) read_bonus_scores(*node, level, ctx.diag);
 }
 
 void read_enemies(const toml::table& root, Level& level, ReadContext& ctx) {
@@ -156,6 +198,22 @@ void read_enemies(const toml::table& root, Level& level, ReadContext& ctx) {
                        number_text(e.spawn_max_distance) + ")");
     }
     if (auto v = r.number("aggression", {0.0, 1.0})) e.aggression = *v;
+    if (auto v = r.choice("difficulty", kDifficulties)) {
+        e.difficulty = *v == "easy"     ? Difficulty::easy
+                       : *v == "arcade" ? Difficulty::arcade
+                                        : Difficulty::normal;
+    }
+    if (auto v = r.integer("saucer_score", 0, kMaxScore)) e.saucer_score = static_cast<int>(*v);
+    if (auto v = r.number("spawn_rear_chance", {0.0, 1.0})) e.spawn_rear_chance = *v;
+    if (auto v = r.number("fire_interval", {0.5, 60.0})) e.fire_interval = *v;
+    if (auto v = r.number("aim_error", {0.0, 30.0})) e.aim_error_deg = *v;
+    if (auto v = r.boolean("hold_fire")) e.hold_fire = *v;
+    if (auto v = r.integer("slow_tank_points", 0, kMaxScore))
+        e.slow_tank_points = static_cast<int>(*v);
+    if (auto v = r.integer("super_tank_points", 0, kMaxScore))
+        e.super_tank_points = static_cast<int>(*v);
+    if (auto v = r.integer("missile_points", 0, kMaxScore)) e.missile_points = static_cast<int>(*v);
+    if (auto v = r.integer("saucer_points", 0, kMaxScore)) e.saucer_points = static_cast<int>(*v);
 }
 
 void read_render(const toml::table& root, Level& level, Diagnostics& diag) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <optional>
 
 #include "level/toml_scan.h"
 
@@ -140,6 +141,60 @@ int skip_error(std::string& text, int line) {
     return b.last_line;
 }
 
+// The end of the last line before `line` that holds more than blanks and a comment.
+struct LineEnd {
+    int line = 0;    // 0: there is none
+    int column = 0;  // just past its last character
+    char last = 0;   // that character
+};
+LineEnd end_of_previous_line(std::string_view text, int line) {
+    for (int l = line - 1; l >= 1; --l) {
+        const std::size_t begin = line_start(text, l);
+        if (begin == std::string_view::npos) continue;
+        std::size_t end = text.find('\n', begin);
+        if (end == std::string_view::npos) end = text.size();
+        std::string_view content = text.substr(begin, end - begin);
+        // A comment ends the line's content (a '#' inside a string is rare on such a line, and
+        // a wrong guess only moves the column).
+        ScanState state;
+        std::size_t code_end = 0;
+        for (std::size_t i = 0; i < content.size(); ++i) {
+            scan(content, i, i + 1, state);
+            if (state.in == ScanState::In::comment) break;
+            if (content[i] != ' ' && content[i] != '\t' && content[i] != '\r') code_end = i + 1;
+        }
+        if (code_end == 0) continue;
+        int column = 1;
+        for (std::size_t i = 0; i < code_end; ++i) {
+            if ((static_cast<unsigned char>(content[i]) & 0xc0) != 0x80) ++column;
+        }
+        return {l, column, content[code_end - 1]};
+    }
+    return {};
+}
+
+// toml++ notices a missing ']' only where the next line's key stands where a ',' or ']' should
+// be, and reports that line. When the error is of that kind, stands at the start of its line,
+// and the line before ends like a finished value (not with ',' or '['), the bracket is
+// missing at the end of that line: report it there.
+std::optional<Diagnostic> missing_bracket(std::string_view text, int line, int column,
+                                          std::string_view description, const std::string& file) {
+    if (description.find("']'") == std::string_view::npos) return std::nullopt;
+    const std::size_t begin = line_start(text, line);
+    if (begin == std::string_view::npos) return std::nullopt;
+    std::size_t first = begin;
+    while (first < text.size() && (text[first] == ' ' || text[first] == '\t')) ++first;
+    if (static_cast<int>(first - begin) + 1 != column) return std::nullopt;
+    if (statement_start(text, begin) == begin) return std::nullopt;  // no value open here
+    const LineEnd prev = end_of_previous_line(text, line);
+    if (prev.line == 0 || prev.last == ',' || prev.last == '[' || prev.last == '{')
+        return std::nullopt;
+    return Diagnostic{SourcePos{file, prev.line, prev.column},
+                      "syntax error: missing ']' at the end of this line (the array is not "
+                      "closed before line " +
+                          std::to_string(line) + ")"};
+}
+
 }  // namespace
 
 SyntaxResult parse_toml(std::string_view text, const std::string& file, std::size_t max_errors) {
@@ -172,8 +227,12 @@ SyntaxResult parse_toml(std::string_view text, const std::string& file, std::siz
             // toml++ counts from 1; the clamp keeps "file:line:col" well-formed regardless.
             const int line = std::max(1, static_cast<int>(e.source().begin.line));
             const int column = std::max(1, static_cast<int>(e.source().begin.column));
-            result.errors.push_back(
-                {SourcePos{file, line, column}, plain_message(e.description())});
+            if (auto moved = missing_bracket(work, line, column, e.description(), file)) {
+                result.errors.push_back(std::move(*moved));
+            } else {
+                result.errors.push_back(
+                    {SourcePos{file, line, column}, plain_message(e.description())});
+            }
             if (result.errors.size() >= max_errors || line <= blanked_through) return result;
             const int last = skip_error(work, line);
             if (last == 0) return result;

@@ -178,7 +178,7 @@ class Reader {
         static constexpr std::string_view kKnown[] = {"keys",   "volume",     "mute",
                                                       "vsync",  "fullscreen", "pause_on_focus_loss",
                                                       "preset", "style",      "gamepad",
-                                                      "show_fps"};
+                                                      "show_fps", "difficulty"};
         for (const auto& [name, value] : t) {
             if (std::find(std::begin(kKnown), std::end(kKnown), name.str()) == std::end(kKnown)) {
                 error_at(name.source().begin, "unknown setting '" + printable(name.str()) + "'");
@@ -276,6 +276,10 @@ SettingsLoad parse_settings(std::string_view text, const std::string& source,
     if (const int i = r.choice(t, "gamepad", modes, modes[static_cast<int>(s.gamepad)]); i >= 0) {
         s.gamepad = static_cast<GamepadMode>(i);
     }
+    const std::string difficulties[] = {"level", "easy", "normal", "arcade"};
+    if (const int i = r.choice(t, "difficulty", difficulties, s.difficulty); i >= 0) {
+        s.difficulty = difficulties[i];
+    }
     r.keys(t, s.keys);
     r.unknown_keys(t);
     r.flush();
@@ -317,6 +321,8 @@ std::string format_settings(const Settings& s) {
       << "          # \"tank\" (two sticks, one per tread) or \"drive\" (left stick)\n"
       << "show_fps = " << (s.show_fps ? "true" : "false")
       << "         # frame rate and frame-time readout\n"
+      << "difficulty = " << quoted(s.difficulty)
+      << "      # \"easy\", \"normal\", \"arcade\", or \"level\" (each level's own)\n"
       << "\n# Keys per action, as SDL scancode names (\"Q\", \"Space\", \"Left Ctrl\", "
          "\"Alt+Return\").\n"
       << "[keys]\n";

@@ -25,6 +25,8 @@ struct Settings {
     std::string style = "vector";  // a style name (scene/style.h)
     GamepadMode gamepad = GamepadMode::tank;
     bool show_fps = false;  // the frame-rate readout (toggled by its key too)
+    // "easy", "normal" or "arcade"; "level" lets each level choose (its [enemies] difficulty).
+    std::string difficulty = "level";
 };
 
 struct SettingsLoad {

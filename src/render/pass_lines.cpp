@@ -1,7 +1,31 @@
+#include <cmath>
+
 #include "render/beam_uniforms.h"
 #include "render/passes.h"
 
 namespace bz::render {
+
+namespace {
+
+// The spine test's tolerances (shaders/spine_test.glsl): how far the prepass may sit from the
+// exact plane of the edge's face, in inverse view depth.
+void set_spine_tolerances(const gl::Program& p, const PassContext& ctx) {
+    const auto& s = ctx.settings;
+    const double inv_b = 1.0 / static_cast<double>(ctx.cam.proj_b);
+    // Stored depth -> inverse depth is (ndc + a) * inv_b. A 24-bit buffer rounds ndc to steps
+    // of 2^-23; allow four (rounding plus the float interpolation before it). Float depth's
+    // step is relative and covered by plane_tolerance_rel, except for the rounding of the
+    // constant a, which is an absolute error.
+    const double step = s.depth == DepthFormat::conventional_d24 ? std::ldexp(1.0, -21) : 0.0;
+    const double tol_abs = (step + 1e-6 * std::abs(static_cast<double>(ctx.cam.proj_a))) *
+                           std::abs(inv_b);
+    p.set("u_tol_rel", s.plane_tolerance_rel);
+    p.set("u_tol_abs", static_cast<float>(tol_abs));
+    p.set("u_tol_px", s.plane_tolerance_px);
+    p.set("u_fallback_rel", s.depth_bias);
+}
+
+}  // namespace
 
 void set_line_uniforms(const gl::Program& p, const PassContext& ctx, float half_width) {
     const auto& s = ctx.settings;
@@ -10,7 +34,7 @@ void set_line_uniforms(const gl::Program& p, const PassContext& ctx, float half_
     p.set("u_half_width", half_width);  // the mask's quads; lines take theirs from the beam
     p.set("u_near", ctx.cam.near);
     p.set("u_far", ctx.cam.far);
-    p.set("u_bias_scale", 1.0f / (1.0f - s.depth_bias));
+    set_spine_tolerances(p, ctx);
     p.set("u_depth", 0);
     p.set("u_edges_to_test", 3);  // a uniform loop bound: keeps one copy of the emit code
     p.set("u_occlusion", ctx.occlusion ? 1 : 0);

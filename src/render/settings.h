@@ -64,8 +64,14 @@ struct BeamSettings {
 struct RenderSettings {
     std::string preset = "balanced";
     DepthFormat depth = DepthFormat::reversed_f32;
-    int spine_samples = 1;          // 1 (centre pixel) or 9 (3x3 neighbourhood)
-    float depth_bias = 2e-3f;       // relative view-space bias of the spine test
+    int spine_samples = 1;          // 1 (the texel under the spine) or 4 (bilinear 2x2 around it)
+    // The spine test compares the prepass with the exact plane of the edge's face; these say
+    // how far the rasterised depth may sit from it (shaders/spine_test.glsl):
+    float plane_tolerance_rel = 1e-5f;   // relative to the depth: float rounding
+    float plane_tolerance_px = 0.0625f;  // pixels of the face's own depth slope: rasterisation
+    // Relative bias where no plane is usable (a face seen edge-on), and the most the slope
+    // allowance may add: a steep face must not see through a thin surface in front of it.
+    float depth_bias = 5e-4f;
     float line_half_width_px = 2.0f;
     float crease_angle_deg = 60.0f;
     BloomResolution bloom_resolution = BloomResolution::half;

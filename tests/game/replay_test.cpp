@@ -122,7 +122,7 @@ TEST(Replay, BadFilesGiveFileLineMessages) {
     const auto c = garbled.find("\nc ");
     garbled.replace(c + 1, 3, "c x");
     const auto msg = error_of(garbled);
-    EXPECT_NE(msg.find("r.bzr:9:3: error: run length"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("r.bzr:10:3: error: run length"), std::string::npos) << msg;
     // Out-of-range values and counts.
     std::string big = good;
     big.replace(big.find("ticks 120"), 9, "ticks 99999999999");

@@ -96,6 +96,7 @@ TEST(WorldMotion, DebrisFliesInParabolasAndSettles) {
 TEST(WorldMotion, SaucerComesAndGoesOnItsOwn) {
     level::Level lv = test::empty_level();
     lv.enemies.saucer = true;
+    lv.enemies.saucer_score = 0;
     World w = test::make_world(lv, 4);
     const int arrive = test::run_until(
         w, [](const World&) { return TickCommand{}; },
@@ -111,6 +112,27 @@ TEST(WorldMotion, SaucerComesAndGoesOnItsOwn) {
         tuning::kSaucerLifeTicks + 10);
     EXPECT_EQ(stay, tuning::kSaucerLifeTicks);
     EXPECT_EQ(w.phase(), Phase::playing) << "harmless";
+}
+
+TEST(WorldMotion, SaucerWaitsForItsScore) {
+    level::Level lv = test::empty_level();
+    lv.enemies.saucer = true;
+    lv.enemies.saucer_score = 1000;
+    World w = test::make_world(lv, 4);
+    const int wait = tuning::kSaucerMaxDelayTicks + 120;
+    EXPECT_EQ(test::run_until(
+                  w, [](const World&) { return TickCommand{}; },
+                  [](const World& x) { return x.state().saucer.has_value(); }, wait),
+              wait)
+        << "no saucer below its score";
+    // Score a tank: the saucer, long overdue, comes at once.
+    w.spawn_hostile(HostileKind::slow_tank, {0.0, 20.0});
+    test::fire_and_wait(w, 60);
+    ASSERT_GE(w.score(), 1000);
+    const int arrive = test::run_until(
+        w, [](const World&) { return TickCommand{}; },
+        [](const World& x) { return x.state().saucer.has_value(); }, 10);
+    EXPECT_LT(arrive, 10);
 }
 
 TEST(WorldMotion, SuperTankIsTwiceAsFast) {

@@ -1,9 +1,10 @@
 // Only regular files are ever opened: a FIFO (which would block the reader forever), a device
-// or a folder as the model is refused at once.
+// or a folder, as the model itself or as a file the model refers to, is refused at once.
 #include <gtest/gtest.h>
 
 #include <chrono>
 
+#include "gltf_test_files.h"
 #include "import_test_util.h"
 
 namespace bz::geo {
@@ -24,6 +25,28 @@ TEST(SpecialFiles, FifoAsTheModelIsRefusedWithoutBlocking) {
     const auto p = dir.fifo("model.obj");
     const auto start = Clock::now();
     expect_refusal(import_error(p, quick()), p, "not a regular file (a FIFO)");
+    EXPECT_LT(seconds_since(start), 3.0);
+}
+
+TEST(SpecialFiles, FifoAsMtllibIsRefused) {
+    ScratchDir dir;
+    dir.fifo("materials.mtl");
+    const auto p = dir.write("model.obj", "mtllib materials.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    const auto start = Clock::now();
+    const std::string m = import_error(p, quick());
+    expect_refusal(m, p, "reference '");
+    EXPECT_NE(m.find("materials.mtl': not a regular file (a FIFO)"), std::string::npos) << m;
+    EXPECT_LT(seconds_since(start), 3.0);
+}
+
+TEST(SpecialFiles, FifoAsGltfBufferUriIsRefused) {
+    ScratchDir dir;
+    dir.fifo("tri.bin");
+    const auto p = dir.write(
+        "model.gltf", test::gltf_json(R"({"uri": "tri.bin", "byteLength": 42})", R"([{"mesh": 0}])", "[0]"));
+    const auto start = Clock::now();
+    const std::string m = import_error(p, quick());
+    expect_refusal(m, p, "tri.bin': not a regular file (a FIFO)");
     EXPECT_LT(seconds_since(start), 3.0);
 }
 

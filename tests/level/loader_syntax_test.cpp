@@ -78,7 +78,23 @@ TEST(LoaderSyntax, UnclosedArrayDoesNotCascade) {
         load(level_text("[backdrop]\nmountains = [[0, 1], [10, 2]\nmoon = true\n"
                         "[render]\nstyle = \"arcade\"\npreset = \"high\"\n"));
     ASSERT_EQ(r.errors.size(), 1u) << format(r.errors[0]);
-    EXPECT_EQ(r.errors[0].pos.line, 5);
+    // Reported on the line that lacks the ']', after its last character, not on the next line.
+    EXPECT_EQ(r.errors[0].pos.line, 4);
+    EXPECT_EQ(r.errors[0].pos.column, 29);
+    EXPECT_NE(r.errors[0].message.find("missing ']'"), std::string::npos) << r.errors[0].message;
+}
+
+TEST(LoaderSyntax, MissingBracketBeforeACommentOrBlankLines) {
+    const auto r = load(level_text("[enemies]\ntypes = [\"slow_tank\", \"missile\"   # two\n\n"
+                                   "aggression = 0.5\n"));
+    ASSERT_EQ(r.errors.size(), 1u) << format(r.errors[0]);
+    EXPECT_EQ(r.errors[0].pos.line, 4);
+    EXPECT_EQ(r.errors[0].pos.column, 32);
+    EXPECT_NE(r.errors[0].message.find("missing ']'"), std::string::npos) << r.errors[0].message;
+    // A line that ends in ',' is a list going on: the error stays where toml++ found it.
+    const auto list = load(level_text("[enemies]\ntypes = [\"slow_tank\",\naggression = 0.5\n"));
+    ASSERT_EQ(list.errors.size(), 1u);
+    EXPECT_EQ(list.errors[0].pos.line, 5);
 }
 
 TEST(LoaderSyntax, RecoveryKeepsTheTableContext) {

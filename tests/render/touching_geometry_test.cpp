@@ -157,8 +157,8 @@ INSTANTIATE_TEST_SUITE_P(Presets, TouchingGeometryTest,
                                            Case{"high", DepthFormat::reversed_f32},
                                            Case{"balanced", DepthFormat::conventional_d24},
                                            Case{"high", DepthFormat::conventional_d24}),
-                         [](const ::testing::TestParamInfo<Case>& info) {
-                             return case_name(info.param);
+                         [](const ::testing::TestParamInfo<Case>& p) {
+                             return case_name(p.param);
                          });
 
 }  // namespace

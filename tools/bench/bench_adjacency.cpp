@@ -7,7 +7,9 @@
 
 #include <cstdio>
 #include <map>
+#include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "geometry/adjacency.h"
@@ -73,12 +75,22 @@ void bench_adjacency_only(benchmark::State& state, const TriMesh& mesh) {
     set_rate(state, mesh);
 }
 
-// Console output plus, at the end, one line per mesh comparing the two full builders by wall
-// time and by CPU time (the latter is steadier on a shared, loaded machine).
-class RatioReporter : public benchmark::ConsoleReporter {
+// Whatever display Google Benchmark was asked for (--benchmark_format=console|json|csv; and
+// --benchmark_out writes its own file as usual), plus, as an extra at the end, one line per
+// mesh comparing the two full builders by wall time and by CPU time (the latter is steadier
+// on a shared, loaded machine). The extra table goes to stdout after the console display, and
+// to stderr after JSON or CSV, so that stdout stays a valid document.
+class RatioReporter : public benchmark::BenchmarkReporter {
   public:
+    RatioReporter(std::unique_ptr<benchmark::BenchmarkReporter> display, std::FILE* table_out)
+        : display_(std::move(display)), table_out_(table_out) {}
+
+    bool ReportContext(const Context& context) override {
+        return display_->ReportContext(context);
+    }
+
     void ReportRuns(const std::vector<Run>& runs) override {
-        ConsoleReporter::ReportRuns(runs);
+        display_->ReportRuns(runs);
         for (const Run& r : runs) {
             if (r.error_occurred || r.run_type != Run::RT_Iteration) continue;
             const std::string name = r.benchmark_name();
@@ -89,16 +101,18 @@ class RatioReporter : public benchmark::ConsoleReporter {
     }
 
     void Finalize() override {
-        ConsoleReporter::Finalize();
-        std::printf("\n%-16s %12s %12s %8s %12s %12s %8s\n", "mesh", "bz wall", "meshopt wall",
-                    "speedup", "bz cpu", "meshopt cpu", "speedup");
+        display_->Finalize();
+        std::fflush(stdout);
+        std::fprintf(table_out_, "\n%-16s %12s %12s %8s %12s %12s %8s\n", "mesh", "bz wall",
+                     "meshopt wall", "speedup", "bz cpu", "meshopt cpu", "speedup");
         for (const auto& [mesh, t] : times_) {
             const auto ours = t.find("bz_line_mesh"), theirs = t.find("meshopt");
             if (ours == t.end() || theirs == t.end()) continue;
             const Times& o = ours->second;
             const Times& m = theirs->second;
-            std::printf("%-16s %9.3f ms %9.3f ms %7.2fx %9.3f ms %9.3f ms %7.2fx\n", mesh.c_str(),
-                        o.real, m.real, m.real / o.real, o.cpu, m.cpu, m.cpu / o.cpu);
+            std::fprintf(table_out_, "%-16s %9.3f ms %9.3f ms %7.2fx %9.3f ms %9.3f ms %7.2fx\n",
+                         mesh.c_str(), o.real, m.real, m.real / o.real, o.cpu, m.cpu,
+                         m.cpu / o.cpu);
         }
     }
 
@@ -107,8 +121,22 @@ class RatioReporter : public benchmark::ConsoleReporter {
         double real = 0.0;
         double cpu = 0.0;
     };
+    std::unique_ptr<benchmark::BenchmarkReporter> display_;
+    std::FILE* table_out_;
     std::map<std::string, std::map<std::string, Times>> times_;
 };
+
+// The value of --benchmark_format=..., as Google Benchmark reads it (the last one wins);
+// "console" when absent.
+std::string display_format(int argc, char** argv) {
+    constexpr std::string_view kFlag = "--benchmark_format=";
+    std::string format = "console";
+    for (int i = 1; i < argc; ++i) {
+        const std::string_view a = argv[i];
+        if (a.substr(0, kFlag.size()) == kFlag) format = std::string(a.substr(kFlag.size()));
+    }
+    return format;
+}
 
 }  // namespace
 
@@ -128,9 +156,22 @@ int main(int argc, char** argv) {
             [&mesh](benchmark::State& s) { bench_adjacency_only(s, mesh); })
             ->Unit(benchmark::kMillisecond);
     }
-    benchmark::Initialize(&argc, argv);
+    const std::string format = display_format(argc, argv);
+    benchmark::Initialize(&argc, argv);  // rejects a format other than these three
     if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-    RatioReporter reporter;
+    std::unique_ptr<benchmark::BenchmarkReporter> display;
+    if (format == "json") {
+        display = std::make_unique<benchmark::JSONReporter>();
+    } else if (format == "csv") {
+        // Deprecated upstream but still what --benchmark_format=csv gives; kept for parity.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wdeprecated-declarations"
+        display = std::make_unique<benchmark::CSVReporter>();
+#pragma GCC diagnostic pop
+    } else {
+        display = std::make_unique<benchmark::ConsoleReporter>();
+    }
+    RatioReporter reporter(std::move(display), format == "console" ? stdout : stderr);
     benchmark::RunSpecifiedBenchmarks(&reporter);
     benchmark::Shutdown();
     return 0;

@@ -22,7 +22,14 @@ constexpr float kLineHeight = 0.04f;
 
 Layout layout_for(const Page& page) {
     Layout l;
-    if (page.big_title) l.rows_top = 0.22f;
+    // The title's rows sit under the horizon, on the dark ground, where they read best.
+    if (page.big_title) l.rows_top = -0.06f;
+    if (page.under_band) {  // under the reticle too, on the ground
+        l.title_y = -0.32f;
+        l.rows_top = -0.46f;
+        l.row_step = 0.09f;
+        l.rows_bottom = -0.8f;
+    }
     if (page.columns) {
         l.row_height = 0.042f;
         l.row_step = 0.072f;
@@ -50,7 +57,7 @@ void draw(std::vector<scene::HudLine>& out, const scene::VectorFont& font, const
     const Layout l = layout_for(page);
     if (page.big_title) {
         font.draw(out, page.title, {0.0f, 0.5f}, 0.2f, kTitleColor, TextAlign::center, 1.4f);
-        font.draw(out, "A VECTOR TANK BATTLE", {0.0f, 0.36f}, 0.05f, kRowColor,
+        font.draw(out, "A VECTOR TANK BATTLE", {0.0f, 0.34f}, 0.05f, kRowColor,
                   TextAlign::center);
     } else {
         font.draw(out, page.title, {0.0f, l.title_y}, 0.09f, kTitleColor, TextAlign::center,
@@ -60,10 +67,27 @@ void draw(std::vector<scene::HudLine>& out, const scene::VectorFont& font, const
     const auto visible =
         static_cast<std::size_t>((l.rows_top - l.rows_bottom) / l.row_step) + 1;
     const Window w = scroll_window(page.rows.size(), selected, visible);
-    // Columns: labels from the left, values and notes after them, inside the screen.
-    const float label_x = -std::min(a - 0.1f, 1.25f);
-    const float value_x = label_x + 0.95f;
-    const float note_x = value_x + 0.85f;
+    // Columns as wide as their widest entry, the table centred; a table wider than the
+    // screen gets smaller text.
+    float h = l.row_height;
+    float label_w = 0.0f, value_w = 0.0f, note_w = 0.0f;
+    for (const Row& r : page.rows) {
+        label_w = std::max(label_w, font.width(r.label, h));
+        value_w = std::max(value_w, font.width(r.choice ? "< " + r.value + " >" : r.value, h));
+        note_w = std::max(note_w, font.width(r.note, h * 0.85f));
+    }
+    const float gap = 0.12f;
+    float table_w = label_w + gap + value_w + (note_w > 0.0f ? gap + note_w : 0.0f);
+    const float room = 2.0f * a - 0.3f;
+    float shrink = 1.0f;
+    if (page.columns && table_w > room) {
+        shrink = room / table_w;
+        h *= shrink;
+        table_w = room;
+    }
+    const float label_x = -0.5f * table_w;
+    const float value_x = label_x + (label_w + gap) * shrink;
+    const float note_x = value_x + (value_w + gap) * shrink;
     float y = l.rows_top;
     const bool blink_on = (tick / 20) % 3 != 0;
     for (std::size_t i = w.first; i < w.first + w.count; ++i, y -= l.row_step) {
@@ -71,7 +95,6 @@ void draw(std::vector<scene::HudLine>& out, const scene::VectorFont& font, const
         const bool sel = i == selected && r.selectable;
         const glm::vec3 color = sel ? kSelectedColor : kRowColor;
         const float glow = sel ? 1.5f : 0.9f;
-        const float h = l.row_height;
         if (!page.columns) {
             std::string text = r.label;
             if (!r.value.empty()) text += "   " + (sel && r.choice ? "< " + r.value + " >" : r.value);
@@ -112,10 +135,11 @@ void draw(std::vector<scene::HudLine>& out, const scene::VectorFont& font, const
     if (!page.hint.empty()) {
         const hud::Box f = hud::footer_box(a);
         // Long hints shrink to the footer's width rather than run off the screen.
-        float h = kHintHeight;
-        const float wdt = font.width(page.hint, h);
-        if (wdt > f.width()) h *= f.width() / wdt;
-        font.draw(out, page.hint, {0.0f, f.min.y + 0.4f * h}, h, kHintColor, TextAlign::center);
+        float hint_h = kHintHeight;
+        const float wdt = font.width(page.hint, hint_h);
+        if (wdt > f.width()) hint_h *= f.width() / wdt;
+        font.draw(out, page.hint, {0.0f, f.min.y + 0.4f * hint_h}, hint_h, kHintColor,
+                  TextAlign::center);
     }
 }
 

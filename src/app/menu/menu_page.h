@@ -45,6 +45,7 @@ struct Page {
     std::string hint;                // the key hint line at the bottom
     bool big_title = false;          // the game's name on the title menu
     bool columns = false;            // label left, value and note in columns (else centred)
+    bool under_band = false;         // over the play HUD: kept below its radar band
 };
 
 struct Layout {

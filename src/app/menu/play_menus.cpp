@@ -193,6 +193,7 @@ Page PlayMenus::build(Screen s) const {
             break;
         case Screen::paused:
             p.title = "PAUSED";
+            p.under_band = true;
             p.rows = {item("RESUME"), item("OPTIONS"), item("CONTROLS"), item("QUIT TO TITLE")};
             break;
         case Screen::levels:
@@ -261,8 +262,9 @@ Page PlayMenus::build(Screen s) const {
             break;
         }
         case Screen::high_scores: {
-            p.title = "HIGH SCORES";
+            p.title = "HIGH SCORES  " + level_label(env_);  // each level keeps its own
             p.columns = true;
+            if (!env_.high_scores_level.empty()) p.rows.push_back(info(env_.high_scores_level, ""));
             if (env_.high_scores) {
                 int rank = 1;
                 for (const game::HighScore& e : env_.high_scores->entries()) {
@@ -476,6 +478,22 @@ std::vector<Request> PlayMenus::captured(const platform::KeyBinding& key) {
     }
     out.push_back({Request::Kind::settings_changed});
     return out;
+}
+
+float PlayMenus::scene_intensity() const {
+    if (!open()) return 1.0f;
+    switch (screen()) {
+        case Screen::title:
+            return 0.45f;  // on top of the game's own dimming of the demo
+        case Screen::paused:
+            return 0.6f;
+        default:
+            return 0.15f;  // lists of text: the scene only as a faint backdrop
+    }
+}
+
+bool PlayMenus::keeps_game_hud() const {
+    return !open() || screen() == Screen::paused || screen() == Screen::title;
 }
 
 void PlayMenus::draw(std::vector<scene::HudLine>& out, const scene::VectorFont& font,

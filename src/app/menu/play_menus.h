@@ -48,6 +48,7 @@ struct Env {
     std::vector<LevelChoice> levels;
     std::filesystem::path current_level;     // empty: the built-in level
     const game::HighScoreTable* high_scores = nullptr;
+    std::string high_scores_level;           // whose table that is (kept per level)
     std::string save_status;                 // shown on the options page ("SAVED", why not)
 };
 
@@ -72,6 +73,11 @@ class PlayMenus {
               std::uint64_t tick) const;
 
     Env& env() { return env_; }
+
+    // How the game shows under the menu: its scene dimmed by `scene_intensity`, and its HUD
+    // kept only under the first page of the pause menu (the score stays in view there).
+    float scene_intensity() const;
+    bool keeps_game_hud() const;
 
     enum class Screen : std::uint8_t { title, levels, options, keys, controls, high_scores, paused };
     Screen screen() const { return stack_.empty() ? Screen::title : stack_.back().screen; }
