@@ -20,7 +20,8 @@ struct SweepConfig {
     render::RenderSettings settings;
 };
 
-// fast, balanced, high, image-outline, and balanced with culling / LOD / instancing off.
+// fast, balanced, high, image-outline, balanced with culling / LOD / instancing off, and
+// every style (scene::all_styles) with the balanced preset.
 std::vector<SweepConfig> sweep_configs();
 
 struct SweepScore {
@@ -34,7 +35,9 @@ struct SweepScore {
 struct SweepRow {
     SweepConfig config;
     RunResult run;
-    SweepScore score;
+    SweepScore score;      // at 1 px
+    SweepScore score_2px;  // the same masks at 2 and 4 px (for the sketch style's jitter)
+    SweepScore score_4px;
 };
 
 struct Goal {

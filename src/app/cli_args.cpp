@@ -47,6 +47,12 @@ int parse_int(std::string_view option, std::string_view text, int min_value, int
     return v;
 }
 
+scene::Style parse_style(std::string_view option, std::string_view text) {
+    if (const auto s = scene::style_from_name(text)) return *s;
+    throw UsageError(std::string(option) + ": expected " + scene::style_name_list() + ", not '" +
+                     std::string(text) + "'");
+}
+
 glm::dvec3 parse_vec3(std::string_view option, std::string_view text) {
     glm::dvec3 v(0.0);
     std::size_t start = 0;

@@ -6,6 +6,8 @@
 #include <string>
 #include <string_view>
 
+#include "scene/style.h"
+
 namespace bz::app {
 
 class UsageError : public std::runtime_error {
@@ -17,6 +19,7 @@ double parse_number(std::string_view option, std::string_view text);
 int parse_int(std::string_view option, std::string_view text, int min_value, int max_value);
 glm::dvec3 parse_vec3(std::string_view option, std::string_view text);  // "x,y,z"
 glm::ivec2 parse_size(std::string_view option, std::string_view text);  // "WxH"
+scene::Style parse_style(std::string_view option, std::string_view text);  // a style name
 
 // Whether a command-line word is an option name ("--out", "-h") rather than a value; a
 // negative number ("-2", "-0.5,1,0") is a value.

@@ -30,7 +30,7 @@ namespace fs = std::filesystem;
 
 constexpr const char* kUsage =
     "usage: beamzone bench LEVEL [--frames N] [--warmup N] [--size WxH]\n"
-    "                      [--preset fast|balanced|high | --sweep | --scaling]\n"
+    "                      [--preset fast|balanced|high] [--style NAME] [--sweep | --scaling]\n"
     "                      [--out DIR] [--replay FILE] [--samples N] [--rounds N]\n"
     "                      [--timing auto|cpu|gpu] [--beam classic|mame]\n"
     "       beamzone bench --accuracy [--models-dir DIR] [--model FILE]... [--size WxH]\n"
@@ -47,7 +47,10 @@ constexpr const char* kUsage =
     "--sweep runs every preset, the image-space outline baseline and balanced with culling,\n"
     "LOD and instancing off on the same frames, scores --samples frames (default 6) against\n"
     "the exact CPU reference (F1 at 1 px) and adds sweep.json, tradeoff.png and masks/\n"
-    "(default 240 frames per configuration).\n"
+    "(default 240 frames per configuration); it then times every style (balanced preset) and\n"
+    "scores the sketch style's strokes at 1, 2 and 4 px as well.\n"
+    "--style draws every frame in that style (vector, vector-xray, toon, sketch, pop-art, halo)\n"
+    "instead of the level's.\n"
     "Its timed frames run in --rounds stretches (default 4), round-robin over the\n"
     "configurations, so a machine whose load drifts treats them alike.\n"
     "--scaling draws the frames from meshes subdivided to 1x, 4x, 16x and 64x the triangles\n"
@@ -71,6 +74,7 @@ struct Options {
     int warmup = 30;
     glm::ivec2 size{1280, 720};
     std::string preset;
+    std::optional<scene::Style> style;  // none: each frame's own (the level's)
     Mode mode = Mode::single;
     std::string out = "bench-out";
     std::string replay;
@@ -100,6 +104,8 @@ Options parse(Args args) {
         } else if (a == "--preset") {
             o.preset = cur.value(a);
             preset_given = true;
+        } else if (a == "--style") {
+            o.style = parse_style(a, cur.value(a));
         } else if (a == "--sweep" || a == "--scaling" || a == "--accuracy") {
             const Mode m = a == "--sweep"     ? Mode::sweep
                            : a == "--scaling" ? Mode::scaling
@@ -147,6 +153,8 @@ Options parse(Args args) {
     if (o.level.empty()) throw UsageError("no LEVEL given");
     if (preset_given && o.mode == Mode::sweep)
         throw UsageError("--preset and --sweep exclude each other (the sweep runs every preset)");
+    if (o.style && o.mode == Mode::sweep)
+        throw UsageError("--style and --sweep exclude each other (the sweep runs every style)");
     if (o.mode == Mode::scaling && !o.frames_given) o.frames = 40;
     // Seven configurations: fewer frames each keep a sweep on llvmpipe within minutes.
     if (o.mode == Mode::sweep && !o.frames_given) o.frames = 240;
@@ -258,6 +266,7 @@ int run(const Options& o) {
     settings.count_edges = true;
     const std::string beam_name = !o.beam.empty() ? o.beam : loaded.level->render.beam.value_or("classic");
     settings.beam = render::beam_look(beam_name);
+    settings.style = o.style;
     std::optional<game::replay::Replay> replay;
     if (!o.replay.empty()) replay = game::replay::load(o.replay);
 

@@ -25,7 +25,7 @@ namespace {
 
 constexpr const char* kUsage =
     "usage: beamzone reference INPUT [--eye x,y,z] [--target x,y,z] [--up x,y,z] [--fov DEG]\n"
-    "                          [--near N] [--far F] [--size WxH] [--style occluded|arcade]\n"
+    "                          [--near N] [--far F] [--size WxH] [--style NAME]\n"
     "                          [--crease DEG] [--mask ref.png]\n"
     "       beamzone reference --level LEVEL.toml --time SECONDS [--size WxH] [--mask ref.png]\n"
     "Computes the exact line mask on the CPU in double precision: the geometry shader's\n"
@@ -41,7 +41,7 @@ struct Options {
     CameraArgs camera;
     std::string level;
     std::optional<double> time;
-    scene::LineStyle style = scene::LineStyle::occluded;
+    scene::Style style = scene::Style::vector;
     double crease = 60.0;
     std::string mask = "reference.png";
 };
@@ -61,14 +61,7 @@ Options parse(Args args) {
         } else if (a == "--mask" || a == "--out") {
             o.mask = cur.value(a);
         } else if (a == "--style") {
-            const std::string_view s = cur.value(a);
-            if (s == "occluded") {
-                o.style = scene::LineStyle::occluded;
-            } else if (s == "arcade") {
-                o.style = scene::LineStyle::arcade;
-            } else {
-                throw UsageError("--style: expected occluded or arcade");
-            }
+            o.style = parse_style(a, cur.value(a));
         } else if (!a.empty() && a[0] == '-') {
             throw UsageError("unknown option " + printable(a));
         } else if (o.input.empty()) {

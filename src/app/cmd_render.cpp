@@ -24,10 +24,15 @@ namespace {
 constexpr const char* kUsage =
     "usage: beamzone render INPUT [--eye x,y,z] [--target x,y,z] [--up x,y,z] [--fov DEG]\n"
     "                       [--near N] [--far F] [--size WxH] [--preset fast|balanced|high]\n"
-    "                       [--style occluded|arcade] [--color r,g,b] [--out frame.png]\n"
+    "                       [--style NAME] [--shading flat|smooth] [--no-smoothing] [--one-sided]\n"
+    "                       [--color r,g,b] [--out frame.png]\n"
     "                       [--mask mask.png] [--repeat N] [--copies N] [--beam classic|mame]\n"
     "Renders a model file (or builtin:cube, builtin:sphere, builtin:grid) headless to PNG. Without --eye the camera frames the model's bounding\n"
     "box from a 3/4 view. --mask writes the 1-pixel visible-spine mask (255 = line).\n"
+    "--style: vector (default), vector-xray, toon, sketch, pop-art or halo (occluded and arcade\n"
+    "are the old names of vector and vector-xray). --shading: filled styles' normals.\n"
+    "--no-smoothing: the halo style's silhouettes stay polygonal (no cubic smoothing).\n"
+    "--one-sided: toon / pop-art outlines extruded outward and depth-tested, not centred.\n"
     "--repeat N renders N timed frames and prints the mean milliseconds of each pass.\n"
     "--copies N draws N instances of the model on a square grid in the xz plane (a scene of a\n"
     "chosen size for timing; the camera frames them all).\n"
@@ -37,7 +42,10 @@ struct RenderOptions {
     std::string input;
     CameraArgs camera;  // shared with `reference`, so both place the camera alike
     std::string preset = "balanced";
-    scene::LineStyle style = scene::LineStyle::occluded;
+    scene::Style style = scene::Style::vector;
+    bool smooth = true;  // filled styles: smooth vertex normals (--shading flat: faces)
+    bool smoothing = true;  // halo: cubic silhouette smoothing (--no-smoothing: plain)
+    bool one_sided = false;  // toon / pop-art: one-sided outline quads
     glm::dvec3 color{0.25, 1.0, 0.35};
     std::string out = "frame.png";
     std::string mask;
@@ -60,10 +68,15 @@ RenderOptions parse(Args args) {
         else if (a == "--copies") o.copies = parse_int(a, cur.value(a), 1, 100000);
         else if (a == "--beam") o.beam = cur.value(a);
         else if (a == "--style") {
+            o.style = parse_style(a, cur.value(a));
+        } else if (a == "--no-smoothing") {
+            o.smoothing = false;
+        } else if (a == "--one-sided") {
+            o.one_sided = true;
+        } else if (a == "--shading") {
             const std::string_view s = cur.value(a);
-            if (s == "occluded") o.style = scene::LineStyle::occluded;
-            else if (s == "arcade") o.style = scene::LineStyle::arcade;
-            else throw UsageError("--style: expected occluded or arcade");
+            if (s != "flat" && s != "smooth") throw UsageError("--shading: expected flat or smooth");
+            o.smooth = s == "smooth";
         } else if (!a.empty() && a[0] == '-') {
             throw UsageError("unknown option " + printable(a));
         } else if (o.input.empty()) {
@@ -98,13 +111,13 @@ void print_timings(const render::Renderer& r, const std::vector<std::vector<gl::
 
 // Lays out `copies` instances on a square grid in the xz plane; returns their joint bounds.
 geo::Bounds place_copies(scene::FrameList& frame, scene::MeshId id, const geo::Bounds& one, int copies,
-                         glm::vec3 color) {
+                         glm::vec3 color, bool smooth) {
     const int side = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(copies))));
     const glm::dvec3 step = glm::dvec3(one.max - one.min) * 1.2;
     geo::Bounds all = one;
     for (int i = 0; i < copies; ++i) {
         const glm::dvec3 offset(step.x * (i % side), 0.0, -step.z * (i / side));
-        frame.items.push_back({id, glm::translate(glm::dmat4(1.0), offset), color, 1.0f, true});
+        frame.items.push_back({id, glm::translate(glm::dmat4(1.0), offset), color, 1.0f, true, smooth});
         all.min = glm::min(all.min, one.min + glm::vec3(offset));
         all.max = glm::max(all.max, one.max + glm::vec3(offset));
     }
@@ -141,11 +154,13 @@ int cmd_render(Args args) {
     scene::FrameList frame;
     const geo::Bounds one = geo::compute_bounds(mesh.positions);
     const scene::MeshId id = meshes.add(o.input, std::move(mesh));
-    const geo::Bounds bounds = place_copies(frame, id, one, o.copies, glm::vec3(o.color));
+    const geo::Bounds bounds = place_copies(frame, id, one, o.copies, glm::vec3(o.color), o.smooth);
     frame.camera = camera_for(o.camera, bounds);
     frame.style = o.style;
 
     settings.count_edges = o.repeat > 0;
+    settings.cubic_smoothing = o.smoothing;
+    settings.one_sided_outlines = o.one_sided;
     render::Renderer renderer(settings, o.camera.size.x, o.camera.size.y,
                               o.repeat > 0 ? gl::TimingMethod::cpu_finish : gl::TimingMethod::off);
     std::vector<std::vector<gl::PassTime>> timings;

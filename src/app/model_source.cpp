@@ -13,12 +13,14 @@ geo::TriMesh load_model_source(const std::string& input) {
     const std::string name = input.substr(prefix.size());
     if (name == "cube") return geo::box(glm::vec3(0.5f));
     if (name == "sphere") return geo::uv_sphere(1.0f, 32, 64);
+    // 6 bands x 8 segments: visibly polygonal, for the halo style's cubic smoothing.
+    if (name == "coarse-sphere") return geo::uv_sphere(1.0f, 6, 8);
     // 708 x 708 cells x 2 = 1,002,528 triangles, seams every 16 cells.
     if (name == "grid") return geo::grid(708, 708, 0.01f, 16);
     if (name == "grid-100k") return geo::grid(224, 224, 0.03f, 16);
     // The game's enemy tank: the desktop icon is rendered from it (dist/README.md).
     if (name == "tank") return game::models::slow_tank();
-    throw UserError(input + ": unknown built-in model (cube, sphere, grid, grid-100k, tank)");
+    throw UserError(input + ": unknown built-in model (cube, sphere, coarse-sphere, grid, grid-100k, tank)");
 }
 
 }  // namespace bz::app

@@ -54,7 +54,7 @@ PlayLook choose_look(const LookSources& s, const level::Level* level) {
     }
 
     PlayLook look;
-    look.style = style == "arcade" ? scene::LineStyle::arcade : scene::LineStyle::occluded;
+    look.style = scene::style_from_name(style).value_or(scene::Style::vector);
     look.render = render::preset(preset);
     look.render.beam = render::beam_look(beam);
     look.render.beam.overlay = s.settings_overlay || (lv && lv->overlay.value_or(false));

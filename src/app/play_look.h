@@ -19,7 +19,7 @@ namespace bz::app {
 struct LookSources {
     std::optional<std::string> cli_style;
     std::optional<std::string> cli_preset;
-    std::string settings_style = "occluded";     // the settings file's, or its default
+    std::string settings_style = "vector";       // the settings file's, or its default
     bool settings_style_given = false;           // false: the file does not name one
     std::optional<std::string> settings_preset;  // none: the settings file does not name one
     std::optional<std::string> cli_beam;

@@ -4,11 +4,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <utility>
 
 #include "app/frame_stats.h"
 #include "game/fixed_step.h"
 #include "platform/screenshot.h"
+#include "scene/style.h"
 
 namespace bz::app {
 
@@ -303,6 +305,15 @@ class Loop {
             case Action::quit:
                 running_ = false;
                 break;
+            case Action::cycle_style: {
+                // For this run only, like --style; a level reload keeps the chosen look.
+                cycled_style_ = scene::next_style(look_.style);
+                look_.style = *cycled_style_;
+                const std::string name(scene::style_name(look_.style));
+                p_.log.info("look: style " + name + " (play key)");
+                p_.overlay.notify("style " + name);
+                break;
+            }
             default:
                 break;
         }
@@ -318,6 +329,7 @@ class Loop {
         renderer_->set_settings(next.render);
         if (next.summary != look_.summary) p_.log.info("look: " + next.summary);
         look_ = std::move(next);
+        if (cycled_style_) look_.style = *cycled_style_;
     }
 
     void reload_shaders() {
@@ -467,6 +479,7 @@ class Loop {
     game::FixedStep step_;
     std::unique_ptr<render::Renderer> renderer_;
     PlayLook look_;
+    std::optional<scene::Style> cycled_style_;  // chosen with the cycle_style key
     LoopResult result_;
     bool running_ = true;
     bool minimized_ = false;

@@ -74,8 +74,8 @@ PlayOptions parse_play_options(int argc, char* const* argv) {
             o.preset = p;
         } else if (a == "--style") {
             const std::string s(cur.value(a));
-            if (s != "occluded" && s != "arcade") {
-                throw UsageError("--style: expected occluded or arcade, not '" + printable(s) + "'");
+            if (!scene::style_from_name(s)) {
+                throw UsageError("--style: expected " + scene::style_name_list() + ", not '" + printable(s) + "'");
             }
             o.style = s;
         } else if (a == "--beam") {
@@ -139,7 +139,7 @@ PlayOptions parse_play_options(int argc, char* const* argv) {
 
 std::string play_usage(const std::string& settings_path, const std::string& high_scores_path) {
     return "usage: beamzone play [LEVEL] [--edit] [--preset fast|balanced|high]\n"
-           "                     [--style occluded|arcade] [--beam mame|classic]\n"
+           "                     [--style NAME] [--beam mame|classic]\n"
            "                     [--windowed|--fullscreen]\n"
            "                     [--vsync off|on|adaptive] [--record FILE] [--replay FILE]\n"
            "                     [--seed N] [--size WxH] [--frames N] [--screenshot-at N]\n"

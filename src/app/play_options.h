@@ -25,7 +25,7 @@ struct PlayOptions {
     std::string level;  // empty: levels/classic.toml, or the game's built-in level
     bool edit = false;
     std::optional<std::string> preset;
-    std::optional<std::string> style;  // "occluded" or "arcade"
+    std::optional<std::string> style;  // a style name (scene/style.h)
     std::optional<std::string> beam;   // "mame" or "classic"
     std::optional<bool> fullscreen;    // --fullscreen / --windowed
     std::optional<platform::Vsync> vsync;

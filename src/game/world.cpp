@@ -91,7 +91,7 @@ World::World(const level::Level& level, std::uint64_t seed, const scene::Factory
       obstacles_(build_obstacles(level, factories, field_)),
       grid_(obstacles_, field_),
       seed_(seed) {
-    style_ = level.render.style == "arcade" ? scene::LineStyle::arcade : scene::LineStyle::occluded;
+    style_ = scene::style_from_name(level.render.style).value_or(scene::Style::vector);
 
     cur_.rng = Rng(seed);
     cur_.lives = std::clamp(lives, 1, tuning::kMaxLives);

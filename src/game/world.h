@@ -155,7 +155,7 @@ class World {
     ObstacleGrid grid_;
     mutable std::vector<std::uint32_t> nearby_;  // scratch for obstacle_at
     glm::vec3 enemy_color_{0.2f, 1.0f, 0.3f};
-    scene::LineStyle style_ = scene::LineStyle::occluded;
+    scene::Style style_ = scene::Style::vector;
     std::uint64_t seed_ = 0;
     WorldState prev_;
     WorldState cur_;

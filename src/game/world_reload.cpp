@@ -39,7 +39,7 @@ WorldReload World::reload_level(const level::Level& level, const scene::FactoryT
     bonus_scores_ = level.bonus_scores;
     obstacles_ = std::move(obstacles);
     grid_ = ObstacleGrid(obstacles_, field_);
-    style_ = level.render.style == "arcade" ? scene::LineStyle::arcade : scene::LineStyle::occluded;
+    style_ = scene::style_from_name(level.render.style).value_or(scene::Style::vector);
 
     WorldReload out;
     out.player_moved = settle_player();

@@ -27,6 +27,15 @@ void apply(const PipelineState& s) {
             glBlendEquation(GL_FUNC_ADD);
             glBlendFunc(GL_ONE, GL_ONE);
             break;
+        case Blend::min:
+            glEnable(GL_BLEND);
+            glBlendEquation(GL_MIN);
+            break;
+        case Blend::alpha:
+            glEnable(GL_BLEND);
+            glBlendEquation(GL_FUNC_ADD);
+            glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+            break;
     }
     if (s.cull_back) {
         glEnable(GL_CULL_FACE);

@@ -5,7 +5,8 @@
 
 namespace bz::gl {
 
-enum class Blend { none, max, add };
+// alpha: src * a + dst * (1 - a); min: the darker of the two, per channel (order-independent ink)
+enum class Blend { none, max, add, alpha, min };
 enum class DepthTest { off, less, greater, always };
 
 struct PipelineState {

@@ -78,7 +78,7 @@ struct CameraKey {
 };
 
 struct RenderSettings {
-    std::string style = "occluded";  // "occluded" or "arcade" (no hidden-line removal)
+    std::string style = "vector";  // a scene::Style name (scene/style.h); old names too
     std::string preset = "balanced";  // "fast", "balanced", "high"
     std::optional<double> line_width_px;
     std::optional<double> crease_angle_deg;

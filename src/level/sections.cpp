@@ -4,6 +4,7 @@
 #include <array>
 
 #include "level/suggest.h"
+#include "scene/style.h"
 
 namespace bz::level::detail {
 
@@ -29,7 +30,6 @@ constexpr std::array<std::string_view, 8> kRenderKeys = {"style",          "pres
                                                          "overlay",        "hold_41hz"};
 // Must match bz::render::beam_look_names().
 constexpr std::array<std::string_view, 2> kBeamLooks = {"classic", "mame"};
-constexpr std::array<std::string_view, 2> kStyles = {"occluded", "arcade"};
 // Must match bz::render::preset_names(); the level module may not link the renderer.
 constexpr std::array<std::string_view, 3> kPresets = {"fast", "balanced", "high"};
 
@@ -224,7 +224,7 @@ void read_render(const toml::table& root, Level& level, Diagnostics& diag) {
     if (!t) return;
     TableReader r(*t, "[render]", kRenderKeys, diag, kRootKeys);
     RenderSettings& s = level.render;
-    if (auto v = r.choice("style", kStyles)) {
+    if (auto v = r.choice("style", scene::accepted_style_names())) {
         s.style = *v;
         s.style_given = true;
     }

@@ -32,6 +32,7 @@ constexpr std::array<std::string_view, kActionCount> kNames = {
     "show_fps",
     "start",
     "back",
+    "cycle_style",
 };
 
 struct ModifierName {
@@ -137,6 +138,7 @@ Bindings default_bindings() {
     set(Action::show_fps, {key("F3")});
     set(Action::start, {key("Return"), key("Keypad Enter"), key("1")});
     set(Action::back, {key("Backspace")});
+    set(Action::cycle_style, {key("F6")});
     return b;
 }
 

@@ -34,6 +34,7 @@ enum class Action : std::uint8_t {
     show_fps,  // the frame-rate and frame-time readout
     start,  // begin a game, confirm (menus, initials)
     back,   // menus and initials: go back, delete
+    cycle_style,  // the next look (scene::next_style), for this run only
     count
 };
 constexpr std::size_t kActionCount = static_cast<std::size_t>(Action::count);

@@ -266,7 +266,9 @@ SettingsLoad parse_settings(std::string_view text, const std::string& source,
         s.preset = presets[static_cast<std::size_t>(i)];
         out.preset_given = true;
     }
-    const std::string styles[] = {"occluded", "arcade"};
+    // scene::accepted_style_names(); platform may not link scene (tests/app checks they match).
+    const std::string styles[] = {"vector", "vector-xray", "toon",     "sketch",
+                                  "pop-art", "halo",       "occluded", "arcade"};
     if (const int i = r.choice(t, "style", styles, s.style); i >= 0) {
         s.style = styles[i];
         out.style_given = true;
@@ -322,7 +324,7 @@ std::string format_settings(const Settings& s) {
       << "preset = " << quoted(s.preset)
       << "     # render preset: \"fast\", \"balanced\" or \"high\"\n"
       << "style = " << quoted(s.style)
-      << "      # \"occluded\" or \"arcade\" (no hidden-line removal)\n"
+      << "      # vector, vector-xray (no hidden-line removal), toon, sketch, pop-art or halo\n"
       << "beam = " << quoted(s.beam)
       << "         # vector beam: \"mame\" (MAME's look, phosphor) or \"classic\"\n"
       << "overlay = " << (s.overlay ? "true" : "false")

@@ -22,7 +22,7 @@ struct Settings {
     bool fullscreen = false;
     bool pause_on_focus_loss = true;
     std::string preset = "balanced";
-    std::string style = "occluded";  // "occluded" or "arcade"
+    std::string style = "vector";  // a style name (scene/style.h)
     std::string beam = "mame";       // the vector beam's look: "mame" or "classic"
     bool overlay = false;            // Battlezone's red/green cabinet overlay
     bool hold_41hz = false;          // the original's ~41 Hz refresh, frames held

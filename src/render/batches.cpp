@@ -83,7 +83,8 @@ FrameBatches build_batches(const scene::FrameList& frame, const scene::MeshLibra
         InstanceData d;
         d.model_view = glm::mat4(mv);
         d.color = glm::vec4(item.color * item.intensity, 1.0f);
-        d.params = glm::vec4(lod_cos_crease(settings, radius_px), 0.0f, item.intensity, 0.0f);
+        d.params = glm::vec4(lod_cos_crease(settings, radius_px), 0.0f, item.intensity,
+                             item.smooth ? 1.0f : 0.0f);
         visible.push_back({i, lod_level(settings, radius_px), eye_outside_bounds(mv, b), d});
     }
     // Group by (mesh, lod, occluder) so each group is one instanced draw; stable keeps the

@@ -6,6 +6,7 @@
 #include "geometry/dihedral.h"
 
 #include "geometry/simplify.h"
+#include "geometry/edge_list.h"
 
 namespace bz::render {
 
@@ -47,14 +48,26 @@ const GpuMesh& MeshCache::get(const scene::MeshLibrary& library, scene::MeshId i
     return slot.simplified ? *slot.simplified : *slot.full;
 }
 
+void MeshCache::set_edge_lists(bool on) {
+    if (on && !edge_lists_) meshes_.clear();
+    edge_lists_ = on;
+}
+
 void MeshCache::upload(GpuMesh& gpu, const geo::AdjacencyMesh& mesh) {
     ++uploads_;
     gpu.positions.set(std::span<const glm::vec3>(mesh.positions), GL_STATIC_DRAW);
+    const std::vector<glm::vec3> normals = geo::vertex_normals(mesh);
+    gpu.vertex_normals.set(std::span<const glm::vec3>(normals), GL_STATIC_DRAW);
     gpu.adjacency.set(std::span<const std::uint32_t>(mesh.adjacency), GL_STATIC_DRAW);
     gpu.triangles.set(std::span<const std::uint32_t>(mesh.triangles), GL_STATIC_DRAW);
     gpu.outward_closed = geo::is_outward_closed(mesh);
     const std::vector<float> cosines = geo::edge_dihedral_cosines(mesh);
     gpu.edge_cosines.set(std::span<const float>(cosines), GL_STATIC_DRAW);
+    if (edge_lists_) {
+        const std::vector<geo::MeshEdge> edges = geo::build_edge_list(mesh);
+        gpu.edge_list.set(std::span<const geo::MeshEdge>(edges), GL_STATIC_DRAW);
+        gpu.edge_count = static_cast<GLuint>(edges.size());
+    }
     gpu.adjacency_count = static_cast<GLsizei>(mesh.adjacency.size());
     gpu.triangle_index_count = static_cast<GLsizei>(mesh.triangles.size());
 
@@ -67,6 +80,13 @@ void MeshCache::upload(GpuMesh& gpu, const geo::AdjacencyMesh& mesh) {
     gpu.prepass_vao.float_attribute(0, 0, 3, 0);
     instance_attributes(gpu.prepass_vao, *instances_, false);
     gpu.prepass_vao.element_buffer(gpu.triangles);
+
+    gpu.fill_vao.bind_buffer(0, gpu.positions, sizeof(glm::vec3));
+    gpu.fill_vao.float_attribute(0, 0, 3, 0);
+    instance_attributes(gpu.fill_vao, *instances_, true);
+    gpu.fill_vao.bind_buffer(2, gpu.vertex_normals, sizeof(glm::vec3));
+    gpu.fill_vao.float_attribute(7, 2, 3, 0);
+    gpu.fill_vao.element_buffer(gpu.triangles);
 }
 
 }  // namespace bz::render

@@ -1,6 +1,7 @@
 #pragma once
-// One GPU mesh per scene::MeshId, shared by all its instances: welded positions, the
-// adjacency index buffer for the line pass and a plain triangle index buffer for the prepass.
+// One GPU mesh per scene::MeshId, shared by all its instances: welded positions and smooth
+// vertex normals, the adjacency index buffer for the line pass and a plain triangle index
+// buffer for the prepass and the fills.
 // Both vertex arrays read per-instance data from one shared instance buffer (binding 1).
 // Distance LOD: a mesh may also have a simplified GPU mesh (geo::simplify_line_mesh), built
 // the first time a far instance asks for it.
@@ -13,21 +14,29 @@
 
 namespace bz::render {
 
-// Per-instance data, 96 bytes: locations 1-4 model-view, 5 colour, 6 parameters.
+// Per-instance data, 96 bytes: locations 1-4 model-view, 5 colour, 6 parameters. Vertex
+// normals are location 7 (binding 2).
 struct InstanceData {
     glm::mat4 model_view;
     glm::vec4 color;
     glm::vec4 params;  // x: cos(crease angle), y: this instance's index in the buffer,
-                       // z: intensity (the beam's width follows it: shaders/beam_width.glsl)
+                       // z: intensity (the beam's width follows it: shaders/beam_width.glsl),
+                       // w: 1 = smooth shading (filled styles)
 };
 
 struct GpuMesh {
     gl::Buffer positions;
+    gl::Buffer vertex_normals;  // smooth vertex normals (geo::vertex_normals)
+    // Styles with strokes and LineMethod::compute (MeshCache::set_edge_lists): the unique edge
+    // list (geo::MeshEdge, binding kEdgeListBinding) the edge extraction reads.
+    gl::Buffer edge_list;
+    GLuint edge_count = 0;
     gl::Buffer adjacency;
     gl::Buffer triangles;
     gl::Buffer edge_cosines;  // 3 per triangle, read by the geometry shader (binding 0)
     gl::VertexArray lines_vao;
     gl::VertexArray prepass_vao;
+    gl::VertexArray fill_vao;  // triangles with normals, colour and parameters
     std::uint32_t version = 0;
     bool outward_closed = false;  // geo::is_outward_closed: back faces hidden from outside
     GLsizei adjacency_count = 0;
@@ -43,6 +52,9 @@ public:
     const GpuMesh& get(const scene::MeshLibrary& library, scene::MeshId id, int lod = 0);
     // GPU meshes uploaded so far (each model once, plus its simplified version if used).
     std::size_t uploads() const { return uploads_; }
+    // Build each mesh's edge list too. Turning it on drops the meshes uploaded without one, so
+    // they are uploaded again on their next use.
+    void set_edge_lists(bool on);
 
 private:
     struct Slot {
@@ -54,6 +66,7 @@ private:
     const gl::Buffer* instances_;
     std::vector<Slot> meshes_;
     std::size_t uploads_ = 0;
+    bool edge_lists_ = false;
 };
 
 }  // namespace bz::render

@@ -25,6 +25,8 @@ void set_spine_tolerances(const gl::Program& p, const PassContext& ctx) {
     p.set("u_fallback_rel", s.depth_bias);
 }
 
+}  // namespace
+
 void set_line_uniforms(const gl::Program& p, const PassContext& ctx, float half_width) {
     p.set("u_proj", ctx.cam.proj);
     p.set("u_viewport", glm::vec2(static_cast<float>(ctx.targets.width), static_cast<float>(ctx.targets.height)));
@@ -44,8 +46,6 @@ void set_line_uniforms(const gl::Program& p, const PassContext& ctx, float half_
     p.set("u_ray", glm::vec4(2.0f / (w * px), 2.0f / (h * py), -1.0f / px, -1.0f / py));
     p.set("u_depth_max", glm::ivec2(ctx.targets.width - 1, ctx.targets.height - 1));
 }
-
-}  // namespace
 
 // The feature-line pass: the geometry shader finds and extrudes edges, the fragment shader
 // runs the spine test against the prepass depth and shades the beam. GL_MAX blending keeps

@@ -1,16 +1,28 @@
 #pragma once
-// The passes of one frame, one file each: prepass -> lines -> hud -> bloom -> composite.
-// Each states the whole GL state it needs (gl::apply), so order is the only coupling.
+// The passes of one frame, one file each. Which passes a frame runs, in which order, is the
+// style's list (frame_passes.h). Each states the whole GL state it needs (gl::apply), so
+// order is the only coupling.
 #include <span>
 #include <vector>
 
 #include "gl/state.h"
 #include "gl/vertex_array.h"
 #include "render/batches.h"
+#include "render/edge_storage.h"
 #include "render/programs.h"
+#include "render/styles/style_def.h"
+#include "render/styles/style_textures.h"
 #include "render/targets.h"
 
 namespace bz::render {
+
+// What the beam passes hand on within one frame: the picture bloom and composite read (the
+// lines target, or a phosphor texture after pass_phosphor), and whether bloom ran.
+struct FramePicture {
+    const gl::Texture2D* texture = nullptr;
+    double dt_seconds = 0.0;  // game time since the last picture (phosphor decay)
+    bool bloom = false;
+};
 
 struct PassContext {
     const Programs& programs;
@@ -23,6 +35,15 @@ struct PassContext {
     bool occlusion;                       // false in the arcade style
     const gl::VertexArray& empty_vao;     // for full-screen triangles
     const gl::Buffer& instances;          // the frame's InstanceData, also read as an SSBO
+    EdgeStorage& edges;                   // the edge buffer (LineMethod::compute)
+    const StyleDef& style;                // what the frame looks like (render/styles/)
+    const StyleTextures& style_textures;  // noise and stroke profiles
+    const gl::VertexArray& hud_vao;
+    GLsizei hud_vertex_count = 0;
+    GLuint target_fbo = 0;                // where composite writes
+    FrameStats* stats = nullptr;          // passes that count something add it here
+    GLuint edge_query = 0;                // GL_PRIMITIVES_GENERATED query for count_edges
+    FramePicture* picture = nullptr;      // the picture phosphor, bloom and composite pass on
     std::uint32_t seed = 0;               // the frame's beam flicker seed (FrameList::seed)
     // Pixel rows from the bottom that the scene's lines may light (FrameList::view_top); the
     // rows above belong to the HUD band. 0: all of them.
@@ -39,7 +60,9 @@ double depth_clear_value(const PassContext& ctx);
 void draw_batch_triangles(const PassContext& ctx, gl::PipelineState state, bool occluders_only);
 // mask_mode: draw the 1-pixel visible-spine mask into targets.mask instead of shaded lines.
 void pass_lines(const PassContext& ctx, bool mask_mode);
-void pass_hud(const PassContext& ctx, const gl::VertexArray& hud_vao, GLsizei vertex_count);
+void set_line_uniforms(const gl::Program& program, const PassContext& ctx, float half_width);
+void pass_edges(const PassContext& ctx);
+void pass_hud(const PassContext& ctx);
 // Beam passes (the vector-monitor look, BeamSettings); each reads the image it is given, so a
 // style may skip any of them. pass_phosphor returns the picture that bloom and composite read.
 const gl::Texture2D& pass_phosphor(const PassContext& ctx, const gl::Texture2D& beam, double dt_seconds);
@@ -52,5 +75,20 @@ void pass_composite(const PassContext& ctx, const gl::Texture2D& picture, bool b
 // The image-space outline baseline (LineMethod::image_outline), in place of prepass + lines.
 void pass_outline_prepass(const PassContext& ctx);
 void pass_image_outline(const PassContext& ctx, bool mask_mode);
+
+// Filled styles (render/styles/pass_*.cpp).
+// The style's fill into the canvas and the depth texture (in place of the prepass): paper
+// tone, then every object's triangles, both faces.
+void pass_fill(const PassContext& ctx);
+// The halo's depth mask: every occluder shrunk along its vertex normals.
+void pass_shrunk_depth(const PassContext& ctx);
+// Ink outlines of the feature edges onto the canvas (toon, pop-art).
+void pass_outline(const PassContext& ctx);
+// Pencil strokes onto the canvas (sketch); mask_mode: their 1-pixel spines into targets.mask.
+void pass_sketch(const PassContext& ctx, bool mask_mode);
+// Soft halos (MAX blended off screen), laid over the canvas, then the silhouette strokes.
+void pass_halo(const PassContext& ctx);
+// Canvas + HUD lines into the target (filled styles' composite).
+void pass_ink_composite(const PassContext& ctx);
 
 }  // namespace bz::render

@@ -38,6 +38,7 @@ Programs load_programs(const RenderSettings& settings) {
     p.mask = gl::Program({stage(GL_VERTEX_SHADER, "lines.vert"), stage(GL_GEOMETRY_SHADER, "lines.geom"),
                           stage(GL_FRAGMENT_SHADER, "lines.frag")},
                          {"MASK_MODE 1"});
+    p.edges = gl::Program({stage(GL_COMPUTE_SHADER, "edges.comp")});
     p.hud = gl::Program({stage(GL_VERTEX_SHADER, "hud.vert"), stage(GL_GEOMETRY_SHADER, "hud.geom"),
                          stage(GL_FRAGMENT_SHADER, "hud.frag")});
     p.bloom_down = gl::Program({stage(GL_VERTEX_SHADER, "fullscreen.vert"),
@@ -54,6 +55,27 @@ Programs load_programs(const RenderSettings& settings) {
     p.image_outline_mask = gl::Program({stage(GL_VERTEX_SHADER, "fullscreen.vert"),
                                         stage(GL_FRAGMENT_SHADER, "image_outline.frag")},
                                        {"MASK_MODE 1"});
+    const auto fill = [&](const char* define) {
+        return gl::Program({stage(GL_VERTEX_SHADER, "fill.vert"), stage(GL_FRAGMENT_SHADER, "fill.frag")},
+                           {define});
+    };
+    p.fill_toon = fill("FILL_TOON 1");
+    p.fill_pop_art = fill("FILL_POP_ART 1");
+    p.fill_paper = fill("FILL_PAPER 1");
+    p.shrunk_depth = gl::Program({stage(GL_VERTEX_SHADER, "fill.vert")}, {"SHRINK 1"});
+    p.ink_composite = gl::Program({stage(GL_VERTEX_SHADER, "fullscreen.vert"),
+                                   stage(GL_FRAGMENT_SHADER, "ink_composite.frag")});
+    const auto stroke = [&](const char* frag, std::vector<std::string> defines) {
+        return gl::Program({stage(GL_VERTEX_SHADER, "stroke.vert"), stage(GL_FRAGMENT_SHADER, frag)},
+                           std::move(defines));
+    };
+    p.outline = stroke("outline.frag", {"STROKE_OUTLINE 1"});
+    p.sketch = stroke("sketch.frag", {"STROKE_SKETCH 1"});
+    p.sketch_mask = stroke("sketch.frag", {"STROKE_SKETCH 1", "MASK_MODE 1"});
+    p.halo_glow = stroke("halo.frag", {"STROKE_HALO 1", "HALO_GLOW 1"});
+    p.halo = stroke("halo.frag", {"STROKE_HALO 1"});
+    p.halo_apply = gl::Program({stage(GL_VERTEX_SHADER, "fullscreen.vert"),
+                                stage(GL_FRAGMENT_SHADER, "halo_apply.frag")});
     return p;
 }
 

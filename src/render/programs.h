@@ -11,6 +11,7 @@ struct Programs {
     gl::Program prepass;
     gl::Program lines;
     gl::Program mask;  // lines.* with MASK_MODE
+    gl::Program edges;            // LineMethod::compute: edges.comp fills the edge buffer
     gl::Program hud;
     gl::Program bloom_down;
     gl::Program bloom_blur;
@@ -20,6 +21,20 @@ struct Programs {
     gl::Program outline_prepass;     // image-space baseline: depth + face normals
     gl::Program image_outline;       // ... Sobel into the lines target
     gl::Program image_outline_mask;  // ... Sobel into the mask
+    // Filled styles (render/styles/): fill.vert + fill.frag per look, the halo's shrunk depth
+    // mask (fill.vert with SHRINK), and the canvas composite.
+    gl::Program fill_toon;
+    gl::Program fill_pop_art;
+    gl::Program fill_paper;
+    gl::Program shrunk_depth;
+    gl::Program ink_composite;
+    // Strokes on the edge buffer: stroke.vert with each look's fragment stage.
+    gl::Program outline;
+    gl::Program sketch;
+    gl::Program sketch_mask;
+    gl::Program halo_glow;
+    gl::Program halo;
+    gl::Program halo_apply;
 };
 
 // Throws UserError naming file:line:col of every compile error. The bloom kernel is baked

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "core/error.h"
-#include "render/passes.h"
+#include "render/frame_passes.h"
 
 namespace bz::render {
 
@@ -27,8 +27,10 @@ struct Renderer::Impl {
     gl::PassTimer timer;
     Programs programs;
     Targets targets;
+    StyleTextures style_textures = make_style_textures();
     gl::Buffer instances;
     MeshCache gpu_meshes{instances};
+    EdgeStorage edges;
     gl::VertexArray empty_vao;
     gl::Buffer hud_vertices;
     gl::VertexArray hud_vao;
@@ -51,6 +53,22 @@ struct Renderer::Impl {
         glGenQueries(1, &edge_query);
     }
     ~Impl() { glDeleteQueries(1, &edge_query); }
+
+    const StyleDef& style_of(const scene::FrameList& frame) const {
+        return style_def(settings.style ? *settings.style : frame.style);
+    }
+
+    PassContext context(const scene::MeshLibrary& meshes, const FrameBatches& batches,
+                        const CameraMatrices& cam, const StyleDef& style, GLsizei hud_count,
+                        GLuint target, const scene::FrameList& frame, FramePicture* picture) {
+        const int view_rows = scene_view_rows(frame.view_top, height);
+        return PassContext{programs,  targets,  gpu_meshes, meshes,
+                           batches,   cam,      settings,   style.hidden_lines_removed,
+                           empty_vao, instances, edges,     style,
+                           style_textures, hud_vao, hud_count, target,
+                           &stats,    edge_query, picture, frame.seed,
+                           view_rows};
+    }
 
     CameraMatrices camera(const scene::FrameList& frame) const {
         return camera_matrices(frame.camera, static_cast<double>(width) / height, settings.depth);
@@ -134,8 +152,7 @@ void Renderer::render(const scene::FrameList& frame, const scene::MeshLibrary& m
         m.last_target = held_target;
         const CameraMatrices cam = m.camera(frame);
         const FrameBatches none;
-        const PassContext ctx{m.programs, m.targets, m.gpu_meshes, meshes, none,
-                              cam,        m.settings, true,      m.empty_vao, m.instances};
+        const PassContext ctx = m.context(meshes, none, cam, m.style_of(frame), 0, held_target, frame, nullptr);
         m.timer.begin_frame();
         m.timer.begin("composite");
         pass_composite(ctx, *m.last_picture, m.settings.bloom_strength > 0.0f, held_target, m.width, m.height);
@@ -144,68 +161,27 @@ void Renderer::render(const scene::FrameList& frame, const scene::MeshLibrary& m
         return;
     }
     const CameraMatrices cam = m.camera(frame);
+    const StyleDef& style = m.style_of(frame);
+    m.gpu_meshes.set_edge_lists(style_needs_edge_buffer(style));
     const FrameBatches batches = m.prepare(frame, meshes, cam);
     const GLsizei hud_count = m.upload_hud(frame.hud);
-    const bool occlusion = frame.style == scene::LineStyle::occluded;
-    const int view_rows = scene_view_rows(frame.view_top, m.height);
-    const PassContext ctx{m.programs, m.targets,  m.gpu_meshes, meshes,      batches,
-                          cam,        m.settings, occlusion,    m.empty_vao, m.instances,
-                          frame.seed, view_rows};
     m.stats = batches.stats;
     const GLuint target = target_fbo == kOffscreen ? m.targets.output_fbo.id() : target_fbo;
     m.last_target = target;
+    // The first picture after new targets has no past: its history is black either way.
+    FramePicture picture{&m.targets.lines, m.last_picture ? frame.time_s - m.last_time_s : 0.0, false};
+    const PassContext ctx = m.context(meshes, batches, cam, style, hud_count, target, frame, &picture);
 
+    // The frame is the style's list of passes (frame_passes.cpp), each timed under its name.
     m.timer.begin_frame();
-    if (m.settings.method == LineMethod::image_outline) {
-        // The baseline finds no edges as such: feature_edges stays 0.
-        m.timer.begin("prepass");
-        pass_outline_prepass(ctx);
-        m.timer.end();
-        m.timer.begin("outline");
-        pass_image_outline(ctx, false);
-        m.timer.end();
-    } else {
-        m.timer.begin("prepass");
-        pass_prepass(ctx);
-        m.timer.end();
-
-        m.timer.begin("lines");
-        if (m.settings.count_edges) glBeginQuery(GL_PRIMITIVES_GENERATED, m.edge_query);
-        pass_lines(ctx, false);
-        if (m.settings.count_edges) {
-            glEndQuery(GL_PRIMITIVES_GENERATED);
-            GLuint64 prims = 0;
-            glGetQueryObjectui64v(m.edge_query, GL_QUERY_RESULT, &prims);
-            m.stats.feature_edges = static_cast<std::size_t>(prims / 2);  // two triangles per quad
-        }
+    for (const FramePass& pass : frame_passes(style, m.settings)) {
+        m.timer.begin(pass.name);
+        pass.run(ctx);
         m.timer.end();
     }
-
-    m.timer.begin("hud");
-    pass_hud(ctx, m.hud_vao, hud_count);
-    m.timer.end();
-
-    const gl::Texture2D* picture = &m.targets.lines;
-    if (m.settings.beam.phosphor != PhosphorDecay::off) {
-        // The first picture after new targets has no past: its history is black either way.
-        const double dt = m.last_picture ? frame.time_s - m.last_time_s : 0.0;
-        m.timer.begin("phosphor");
-        picture = &pass_phosphor(ctx, m.targets.lines, dt);
-        m.timer.end();
-    }
-
-    const bool bloom = m.settings.bloom_strength > 0.0f;
-    if (bloom) {
-        m.timer.begin("bloom");
-        pass_bloom(ctx, *picture);
-        m.timer.end();
-    }
-
-    m.timer.begin("composite");
-    pass_composite(ctx, *picture, bloom, target, m.width, m.height);
-    m.timer.end();
     m.timer.end_frame();
-    m.last_picture = picture;
+    // Only the beam styles' pictures can be held and shown again (pass_composite).
+    m.last_picture = style.fill == FillPass::none ? picture.texture : nullptr;
     m.last_time_s = frame.time_s;
 }
 
@@ -213,19 +189,12 @@ std::vector<std::uint8_t> Renderer::render_mask(const scene::FrameList& frame,
                                                 const scene::MeshLibrary& meshes) {
     Impl& m = *impl_;
     const CameraMatrices cam = m.camera(frame);
+    const StyleDef& style = m.style_of(frame);
+    m.gpu_meshes.set_edge_lists(style_needs_edge_buffer(style));
     const FrameBatches batches = m.prepare(frame, meshes, cam);
-    const bool occlusion = frame.style == scene::LineStyle::occluded;
-    const int view_rows = scene_view_rows(frame.view_top, m.height);
-    const PassContext ctx{m.programs, m.targets,  m.gpu_meshes, meshes,      batches,
-                          cam,        m.settings, occlusion,    m.empty_vao, m.instances,
-                          frame.seed, view_rows};
-    if (m.settings.method == LineMethod::image_outline) {
-        pass_outline_prepass(ctx);
-        pass_image_outline(ctx, true);
-    } else {
-        pass_prepass(ctx);
-        pass_lines(ctx, true);
-    }
+    const PassContext ctx = m.context(meshes, batches, cam, style, 0, m.targets.output_fbo.id(),
+                                      frame, nullptr);
+    for (const FramePass& pass : mask_passes(style, m.settings)) pass.run(ctx);
     std::vector<std::uint8_t> rows(static_cast<std::size_t>(m.width) * m.height);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     glGetTextureImage(m.targets.mask.id(), 0, GL_RED, GL_UNSIGNED_BYTE,

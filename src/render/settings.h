@@ -1,8 +1,11 @@
 #pragma once
 // Every knob of the line pipeline, and the named presets that set them all.
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
+
+#include "scene/style.h"
 
 namespace bz::render {
 
@@ -87,6 +90,15 @@ struct RenderSettings {
     bool instancing = true;         // false: one draw call per object (for measuring batching)
     // image_outline thresholds: relative depth step, and normal step as a crease angle.
     float outline_depth_threshold = 0.1f;
+    // Draw every frame in this style instead of the frame list's own (bench --style, the
+    // sweep's per-style rows); none: the frame's.
+    std::optional<scene::Style> style;
+    // The halo style's cubic silhouette smoothing (seed 004); off to compare with the plain
+    // polygonal outline (render --no-smoothing, the smoothing test).
+    bool cubic_smoothing = true;
+    // Toon and pop-art outlines as one-sided quads (extruded outward from silhouettes and
+    // depth-tested) instead of the styles' centred, spine-tested ones (seed 002's two variants).
+    bool one_sided_outlines = false;
     BeamSettings beam;
 };
 

@@ -26,6 +26,14 @@ Targets make_targets(int width, int height, const RenderSettings& s) {
     t.bloom_out_fbo = gl::Framebuffer({&t.bloom_out}, nullptr);
     t.mask_fbo = gl::Framebuffer({&t.mask}, nullptr);
     t.output_fbo = gl::Framebuffer({&t.output}, nullptr);
+    t.canvas = gl::Texture2D(width, height, GL_RGBA8, gl::Filter::nearest);
+    t.shrunk_depth = gl::Texture2D(width, height, depth_format, gl::Filter::nearest);
+    t.halo = gl::Texture2D(width, height, GL_RG16F, gl::Filter::nearest);
+    t.canvas_depth_fbo = gl::Framebuffer({&t.canvas}, &t.depth);
+    t.canvas_fbo = gl::Framebuffer({&t.canvas}, nullptr);
+    t.canvas_shrunk_fbo = gl::Framebuffer({&t.canvas}, &t.shrunk_depth);
+    t.shrunk_fbo = gl::Framebuffer({}, &t.shrunk_depth);
+    t.halo_fbo = gl::Framebuffer({&t.halo}, &t.shrunk_depth);
     if (s.beam.bloom == BloomKind::mip_chain) {
         int lw = bw, lh = bh;
         const std::size_t levels = std::clamp<std::size_t>(s.beam.mip_weights.size(), 1, 12);

@@ -19,6 +19,16 @@ struct Targets {
     gl::Texture2D mask;    // R8 visible-spine mask
     gl::Texture2D output;  // RGBA8 composite, for PNGs and screenshots
     gl::Texture2D normals; // RGBA8 face normals, only for LineMethod::image_outline
+    // Filled styles (render/styles/): the paper with fills and ink strokes, display-referred
+    // RGBA8; the halo's shrunk-mesh depth mask; its off-screen soft-halo buffer (MAX blended:
+    // r = halo strength, g = inverse view depth of the stroke that cast it).
+    gl::Texture2D canvas;
+    gl::Texture2D shrunk_depth;
+    gl::Texture2D halo;
+    gl::Framebuffer canvas_depth_fbo;  // canvas + the prepass depth (fills write both)
+    gl::Framebuffer canvas_fbo;        // canvas alone (strokes read the depth as a texture)
+    gl::Framebuffer canvas_shrunk_fbo; // canvas + shrunk depth (halo strokes depth-test it)
+    gl::Framebuffer shrunk_fbo, halo_fbo;
     gl::Framebuffer depth_fbo, lines_fbo, bloom_a_fbo, bloom_b_fbo, bloom_out_fbo, mask_fbo, output_fbo;
     gl::Framebuffer normals_fbo;  // normals + depth
     // BloomKind::mip_chain: level 0 at the bloom resolution, each next one half as large.

@@ -6,6 +6,8 @@
 
 #include <glm/glm.hpp>
 
+#include "scene/style.h"
+
 namespace bz::scene {
 
 using MeshId = std::uint32_t;  // index into a MeshLibrary
@@ -27,6 +29,7 @@ struct DrawItem {
     glm::vec3 color{0.2f, 1.0f, 0.3f};  // linear RGB; > 1 is allowed (HDR)
     float intensity = 1.0f;
     bool occluder = true;  // writes the depth prepass (debris and shells may choose not to)
+    bool smooth = false;   // filled styles: shade with smooth vertex normals, not flat faces
 };
 
 // A 2D line for the HUD, in HUD units: origin at the screen centre, y up, 1 unit = half the
@@ -38,16 +41,14 @@ struct HudLine {
     float intensity = 1.0f;
 };
 
-enum class LineStyle : std::uint8_t {
-    occluded,  // hidden lines removed against the depth prepass (default)
-    arcade,    // the 1980 look: no prepass, no hidden-line removal
-};
+// The first two styles' old name; scene::Style (scene/style.h) lists every look.
+using LineStyle = Style;
 
 struct FrameList {
     Camera camera;
     std::vector<DrawItem> items;
     std::vector<HudLine> hud;
-    LineStyle style = LineStyle::occluded;
+    Style style = Style::vector;
     // When this frame is shown, in seconds of game time (only differences matter: phosphor
     // decay and frame holding follow it), and the seed of its beam flicker. Both come from the
     // simulation, so replays and benchmarks draw the same pictures.

@@ -83,7 +83,7 @@ TEST(PlayLook, LevelPresetFillsInOnlyWhereTheSettingsNameNone) {
     look = choose_look(from_settings("preset = \"high\"\n"), &lv);
     EXPECT_EQ(look.render.preset, "high");
     EXPECT_EQ(look.style, scene::LineStyle::occluded);
-    EXPECT_EQ(look.summary, "style occluded (default), preset high (settings file), beam mame (default)");
+    EXPECT_EQ(look.summary, "style vector (default), preset high (settings file), beam mame (default)");
 }
 
 TEST(PlayLook, DefaultsWithNoLevelAndNoChoices) {
@@ -94,7 +94,7 @@ TEST(PlayLook, DefaultsWithNoLevelAndNoChoices) {
         const PlayLook look = choose_look(LookSources{}, lv);
         EXPECT_EQ(look.style, scene::LineStyle::occluded);
         EXPECT_EQ(look.render.preset, "balanced");
-        EXPECT_EQ(look.summary, "style occluded (default), preset balanced (default), beam mame (default)");
+        EXPECT_EQ(look.summary, "style vector (default), preset balanced (default), beam mame (default)");
     }
 }
 
@@ -128,6 +128,28 @@ TEST(PlayLook, ABadSettingsValueDoesNotCountAsNamed) {
     EXPECT_EQ(s.errors.size(), 2u);
     EXPECT_FALSE(s.preset_given);
     EXPECT_FALSE(s.style_given);
+}
+
+}  // namespace
+}  // namespace bz::app
+
+namespace bz::app {
+namespace {
+
+// The settings file (platform, which may not link scene) keeps its own copy of the style
+// names: every name the scene accepts must load from it, and choose the same style.
+TEST(PlayLook, EveryStyleNameWorksInTheSettingsFileAndTheLevel) {
+    for (const std::string_view name : scene::accepted_style_names()) {
+        SCOPED_TRACE(std::string(name));
+        const std::string settings = "style = \"" + std::string(name) + "\"\n";
+        const LookSources s = from_settings(settings.c_str());
+        EXPECT_TRUE(s.settings_style_given);
+        EXPECT_EQ(choose_look(s, nullptr).style, scene::style_from_name(name));
+        const std::string level_text =
+            "version = 1\nname = \"L\"\n[render]\nstyle = \"" + std::string(name) + "\"\n";
+        const level::Level lv = load(level_text.c_str());
+        EXPECT_EQ(choose_look(LookSources{}, &lv).style, scene::style_from_name(name));
+    }
 }
 
 }  // namespace

@@ -70,7 +70,7 @@ line=$(grep -o "level taken into the running game at tick [0-9]*: score [0-9]*, 
 tick=$(echo "$line" | sed 's/.* at tick \([0-9]*\):.*/\1/')
 [ -n "$line" ] && [ "$tick" -gt 0 ] || { echo "FAIL: the game did not go on: '$line'"; cat "$log"; exit 1; }
 echo "ok the running game kept going: $line"
-grep -q "look: style occluded (settings file)" "$log" || { echo "FAIL: the style did not follow the edit"; cat "$log"; exit 1; }
+grep -q "look: style vector (settings file)" "$log" || { echo "FAIL: the style did not follow the edit"; cat "$log"; exit 1; }
 echo "ok the style followed the edit: $(grep -o 'look: .*' "$log" | tail -1)"
 
 grep -q "the recording ends (a replay belongs to one level): [0-9]* ticks saved to $work/game.replay" "$log" \

@@ -25,7 +25,7 @@ TEST(LoaderSchema, SmallestLevelGetsDefaults) {
     EXPECT_TRUE(l.wrap);
     EXPECT_TRUE(l.obstacles.empty());
     EXPECT_FALSE(l.backdrop.mountains.empty());  // the default skyline
-    EXPECT_EQ(l.render.style, "occluded");
+    EXPECT_EQ(l.render.style, "vector");
     EXPECT_EQ(l.file, std::filesystem::path("levels/test.toml"));
 }
 

@@ -1,0 +1,116 @@
+#include "render/frame_passes.h"
+
+namespace bz::render {
+
+namespace {
+
+// The beam line pass; with count_edges it also counts the emitted feature edges.
+void lines_counted(const PassContext& ctx) {
+    if (!ctx.settings.count_edges || !ctx.stats) {
+        pass_lines(ctx, false);
+        return;
+    }
+    glBeginQuery(GL_PRIMITIVES_GENERATED, ctx.edge_query);
+    pass_lines(ctx, false);
+    glEndQuery(GL_PRIMITIVES_GENERATED);
+    GLuint64 prims = 0;
+    glGetQueryObjectui64v(ctx.edge_query, GL_QUERY_RESULT, &prims);
+    ctx.stats->feature_edges = static_cast<std::size_t>(prims / 2);  // two triangles per quad
+}
+
+// The edge buffer filled completely: grown and filled again when a frame appended more
+// records than it held (the mask must miss nothing; frames grow it for the next one).
+void edges_complete(const PassContext& ctx) {
+    pass_edges(ctx);
+    if (const std::size_t n = ctx.edges.appended(); n > ctx.edges.capacity()) {
+        ctx.edges.reserve(n);
+        pass_edges(ctx);
+    }
+}
+
+// The edge extraction; with count_edges it also reads back how many records it appended.
+void edges_counted(const PassContext& ctx) {
+    pass_edges(ctx);
+    if (ctx.settings.count_edges && ctx.stats) ctx.stats->feature_edges = ctx.edges.appended();
+}
+
+void sketch_strokes(const PassContext& ctx) { pass_sketch(ctx, false); }
+void sketch_mask(const PassContext& ctx) { pass_sketch(ctx, true); }
+
+// The beam passes hand the picture on (FramePicture): phosphor may replace the lines target
+// with its persistence texture, bloom and composite read whichever it is.
+void phosphor(const PassContext& ctx) {
+    ctx.picture->texture = &pass_phosphor(ctx, ctx.targets.lines, ctx.picture->dt_seconds);
+}
+
+void bloom(const PassContext& ctx) {
+    pass_bloom(ctx, *ctx.picture->texture);
+    ctx.picture->bloom = true;
+}
+
+void composite(const PassContext& ctx) {
+    pass_composite(ctx, *ctx.picture->texture, ctx.picture->bloom, ctx.target_fbo, ctx.targets.width,
+                   ctx.targets.height);
+}
+
+void outline_baseline(const PassContext& ctx) { pass_image_outline(ctx, false); }
+void lines_mask(const PassContext& ctx) { pass_lines(ctx, true); }
+void outline_mask(const PassContext& ctx) { pass_image_outline(ctx, true); }
+
+}  // namespace
+
+bool style_needs_edge_buffer(const StyleDef& style) {
+    return style.lines == LinePass::outline || style.lines == LinePass::sketch ||
+           style.lines == LinePass::halo;
+}
+
+std::vector<FramePass> frame_passes(const StyleDef& style, const RenderSettings& settings) {
+    std::vector<FramePass> list;
+    // Where the depth comes from, and what the lines go onto.
+    if (style.fill == FillPass::none) {
+        if (settings.method == LineMethod::image_outline) {
+            // The image-space baseline finds no edges as such: feature_edges stays 0.
+            list.push_back({"prepass", pass_outline_prepass});
+            list.push_back({"outline", outline_baseline});
+        } else {
+            list.push_back({"prepass", pass_prepass});
+            list.push_back({"lines", lines_counted});
+        }
+        list.push_back({"hud", pass_hud});
+        if (settings.beam.phosphor != PhosphorDecay::off) list.push_back({"phosphor", phosphor});
+        if (style.bloom && settings.bloom_strength > 0.0f) list.push_back({"bloom", bloom});
+        list.push_back({"composite", composite});
+        return list;
+    }
+    list.push_back({"fill", pass_fill});
+    // Strokes are drawn from the edge buffer: the edges pass appends every visible feature edge.
+    if (style_needs_edge_buffer(style)) list.push_back({"edges", edges_counted});
+    switch (style.lines) {
+        case LinePass::outline:
+            list.push_back({"outline", pass_outline});
+            break;
+        case LinePass::sketch:
+            list.push_back({"strokes", sketch_strokes});
+            break;
+        case LinePass::halo:
+            list.push_back({"shrunk", pass_shrunk_depth});
+            list.push_back({"halo", pass_halo});
+            break;
+        case LinePass::beam:
+            list.push_back({"lines", lines_counted});
+            break;
+    }
+    list.push_back({"hud", pass_hud});
+    list.push_back({"composite", pass_ink_composite});
+    return list;
+}
+
+std::vector<FramePass> mask_passes(const StyleDef& style, const RenderSettings& settings) {
+    if (style.fill == FillPass::none && settings.method == LineMethod::image_outline)
+        return {{"prepass", pass_outline_prepass}, {"outline", outline_mask}};
+    if (style.lines == LinePass::sketch)
+        return {{"prepass", pass_prepass}, {"edges", edges_complete}, {"strokes", sketch_mask}};
+    return {{"prepass", pass_prepass}, {"lines", lines_mask}};
+}
+
+}  // namespace bz::render

@@ -1,0 +1,82 @@
+#include "render/passes.h"
+
+namespace bz::render {
+
+namespace {
+
+const gl::Program& fill_program(const PassContext& ctx) {
+    switch (ctx.style.fill) {
+        case FillPass::toon:
+            return ctx.programs.fill_toon;
+        case FillPass::pop_art:
+            return ctx.programs.fill_pop_art;
+        case FillPass::paper:
+        case FillPass::none:
+            break;
+    }
+    return ctx.programs.fill_paper;
+}
+
+// Every batch's triangles from the fill vertex array (normals, colour, parameters).
+void draw_fill_batches(const PassContext& ctx, gl::PipelineState state, bool occluders_only) {
+    for (const Batch& b : ctx.batches.batches) {
+        if (occluders_only && !b.occluder) continue;
+        const GpuMesh& mesh = ctx.gpu_meshes.get(ctx.meshes, b.mesh, b.lod);
+        const bool cull = b.eye_outside && mesh.outward_closed;
+        if (cull != state.cull_back) {
+            state.cull_back = cull;
+            gl::apply(state);
+        }
+        mesh.fill_vao.bind();
+        glDrawElementsInstancedBaseInstance(GL_TRIANGLES, mesh.triangle_index_count, GL_UNSIGNED_INT,
+                                            nullptr, b.instance_count, b.first_instance);
+    }
+}
+
+}  // namespace
+
+// Paper tone, then every object filled in the style's look, writing the depth texture the
+// strokes' spine test reads (this pass takes the prepass's place). Every object is filled,
+// debris too: on paper anything solid hides what is behind it.
+void pass_fill(const PassContext& ctx) {
+    // In filled styles the lines target holds only the HUD; start it empty.
+    ctx.targets.lines_fbo.bind();
+    glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+
+    ctx.targets.canvas_depth_fbo.bind();
+    const gl::PipelineState state = depth_writing_state(ctx, true);
+    gl::apply(state);
+    const glm::vec3 paper = ctx.style.background;
+    glClearColor(paper.r, paper.g, paper.b, 1.0f);
+    glClearDepth(depth_clear_value(ctx));
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    const gl::Program& p = fill_program(ctx);
+    p.use();
+    p.set("u_proj", ctx.cam.proj);
+    p.set("u_light_dir", glm::normalize(ctx.style.light_dir));
+    p.set("u_bands", ctx.style.toon_bands);
+    p.set("u_cell_px", ctx.style.halftone_cell_px);
+    p.set("u_paper", paper);
+    p.set("u_tint", ctx.style.paper_tint);
+    draw_fill_batches(ctx, state, false);
+}
+
+// The halo's depth mask (seed 004): the occluders again, shrunk along their vertex normals, so
+// a stroke quad that reaches inside the silhouette stays in front of its own object.
+void pass_shrunk_depth(const PassContext& ctx) {
+    ctx.targets.shrunk_fbo.bind();
+    const gl::PipelineState state = depth_writing_state(ctx, false);
+    gl::apply(state);
+    glClearDepth(depth_clear_value(ctx));
+    glClear(GL_DEPTH_BUFFER_BIT);
+    const gl::Program& p = ctx.programs.shrunk_depth;
+    p.use();
+    p.set("u_proj", ctx.cam.proj);
+    // Pixels to view-space distance per unit of depth: 2 / (height * P[1][1]).
+    p.set("u_shrink", ctx.style.halo.shrink_px * 2.0f /
+                          (static_cast<float>(ctx.targets.height) * ctx.cam.proj[1][1]));
+    draw_fill_batches(ctx, state, true);
+}
+
+}  // namespace bz::render

@@ -1,0 +1,64 @@
+#include "render/styles/stroke_common.h"
+
+namespace bz::render {
+
+namespace {
+
+gl::PipelineState halo_state(const PassContext& ctx, gl::Blend blend) {
+    // Depth-tested against the shrunk-mesh mask, never written.
+    gl::PipelineState state = depth_writing_state(ctx, true);
+    state.depth_write = false;
+    state.blend = blend;
+    return state;
+}
+
+}  // namespace
+
+// Haloed strokes (seed 004), three steps:
+//  1. the soft halo outside every visible silhouette into the off-screen halo buffer, MAX
+//     blended (so the zig-zags of extracted silhouettes merge without seams);
+//  2. the halo laid over the canvas: surfaces behind the stroke that cast it fade to paper;
+//  3. the ink strokes, reaching inside and outside the silhouette, over the shrunk mask.
+void pass_halo(const PassContext& ctx) {
+    const HaloParams& h = ctx.style.halo;
+    ctx.targets.halo_fbo.bind();
+    gl::apply(halo_state(ctx, gl::Blend::max));
+    glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    const gl::Program& glow = ctx.programs.halo_glow;
+    begin_strokes(ctx, glow);
+    glow.set("u_profile", 1);
+    glow.set("u_strokes", h.strokes_per_edge);
+    ctx.style_textures.profile.bind(1);
+    draw_edge_strokes(ctx);
+
+    ctx.targets.canvas_fbo.bind();
+    gl::PipelineState apply_state;
+    apply_state.blend = gl::Blend::alpha;
+    gl::apply(apply_state);
+    const gl::Program& lay = ctx.programs.halo_apply;
+    lay.use();
+    set_line_uniforms(lay, ctx, 1.0f);
+    lay.set("u_halo", 1);
+    lay.set("u_paper", ctx.style.background);
+    ctx.targets.depth.bind(0);
+    ctx.targets.halo.bind(1);
+    ctx.empty_vao.bind();
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+
+    ctx.targets.canvas_shrunk_fbo.bind();
+    gl::apply(halo_state(ctx, gl::Blend::min));
+    const gl::Program& ink = ctx.programs.halo;
+    begin_strokes(ctx, ink);
+    ink.set("u_profile", 1);
+    ink.set("u_offset", 2);
+    ink.set("u_halo", 3);
+    ink.set("u_strokes", h.strokes_per_edge);
+    ctx.style_textures.profile.bind(1);
+    ctx.style_textures.offset.bind(2);
+    ctx.targets.halo.bind(3);
+    draw_edge_strokes(ctx);
+    ctx.edges.keep_count();
+}
+
+}  // namespace bz::render

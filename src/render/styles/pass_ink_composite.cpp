@@ -1,0 +1,20 @@
+#include "render/passes.h"
+
+namespace bz::render {
+
+// Filled styles: the canvas is the picture; the HUD lines are laid over it.
+void pass_ink_composite(const PassContext& ctx) {
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, ctx.target_fbo);
+    glViewport(0, 0, ctx.targets.width, ctx.targets.height);
+    gl::apply(gl::PipelineState{});
+    const gl::Program& p = ctx.programs.ink_composite;
+    p.use();
+    p.set("u_canvas", 0);
+    p.set("u_lines", 1);
+    ctx.targets.canvas.bind(0);
+    ctx.targets.lines.bind(1);
+    ctx.empty_vao.bind();
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+}  // namespace bz::render

@@ -1,0 +1,32 @@
+#include "render/styles/stroke_common.h"
+
+namespace bz::render {
+
+// Pencil strokes over the paper (seed 003), or in mask mode their centre lines into the mask.
+void pass_sketch(const PassContext& ctx, bool mask_mode) {
+    gl::PipelineState state;
+    state.depth_zero_to_one = ctx.cam.zero_to_one;
+    if (mask_mode) {
+        ctx.targets.mask_fbo.bind();
+        state.blend = gl::Blend::max;
+        gl::apply(state);
+        glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+        glClear(GL_COLOR_BUFFER_BIT);
+    } else {
+        ctx.targets.canvas_fbo.bind();
+        state.blend = gl::Blend::min;  // the darkest stroke wins: any order gives the same picture
+        gl::apply(state);
+    }
+    const gl::Program& p = mask_mode ? ctx.programs.sketch_mask : ctx.programs.sketch;
+    begin_strokes(ctx, p);
+    const SketchParams& s = ctx.style.sketch;
+    p.set("u_noise", 1);
+    p.set("u_strokes", s.strokes_per_edge);
+    p.set("u_darkness", s.darkness);
+    p.set("u_min_significance", s.min_significance);
+    ctx.style_textures.noise.bind(1);
+    draw_edge_strokes(ctx);
+    ctx.edges.keep_count();
+}
+
+}  // namespace bz::render
