@@ -16,7 +16,8 @@ double depth_clear_value(const PassContext& ctx) {
     return ctx.settings.depth == DepthFormat::reversed_f32 ? 0.0 : 1.0;
 }
 
-void draw_batch_triangles(const PassContext& ctx, gl::PipelineState state, bool occluders_only) {
+void draw_batch_triangles(const PassContext& ctx, gl::PipelineState state, bool occluders_only,
+                          gl::VertexArray GpuMesh::*vao) {
     for (const Batch& b : ctx.batches.batches) {
         if (occluders_only && !b.occluder) continue;
         const GpuMesh& mesh = ctx.gpu_meshes.get(ctx.meshes, b.mesh, b.lod);
@@ -26,7 +27,7 @@ void draw_batch_triangles(const PassContext& ctx, gl::PipelineState state, bool 
             state.cull_back = cull;
             gl::apply(state);
         }
-        mesh.prepass_vao.bind();
+        (mesh.*vao).bind();
         glDrawElementsInstancedBaseInstance(GL_TRIANGLES, mesh.triangle_index_count, GL_UNSIGNED_INT,
                                             nullptr, b.instance_count, b.first_instance);
     }

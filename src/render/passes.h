@@ -57,7 +57,9 @@ void pass_prepass(const PassContext& ctx);
 // that outward-closed meshes seen from outside allow.
 gl::PipelineState depth_writing_state(const PassContext& ctx, bool color_write);
 double depth_clear_value(const PassContext& ctx);
-void draw_batch_triangles(const PassContext& ctx, gl::PipelineState state, bool occluders_only);
+// `vao` picks the mesh's vertex layout: positions only (prepass) or the fill's normals and colour.
+void draw_batch_triangles(const PassContext& ctx, gl::PipelineState state, bool occluders_only,
+                          gl::VertexArray GpuMesh::*vao = &GpuMesh::prepass_vao);
 // mask_mode: draw the 1-pixel visible-spine mask into targets.mask instead of shaded lines.
 void pass_lines(const PassContext& ctx, bool mask_mode);
 void set_line_uniforms(const gl::Program& program, const PassContext& ctx, float half_width);

@@ -17,22 +17,6 @@ const gl::Program& fill_program(const PassContext& ctx) {
     return ctx.programs.fill_paper;
 }
 
-// Every batch's triangles from the fill vertex array (normals, colour, parameters).
-void draw_fill_batches(const PassContext& ctx, gl::PipelineState state, bool occluders_only) {
-    for (const Batch& b : ctx.batches.batches) {
-        if (occluders_only && !b.occluder) continue;
-        const GpuMesh& mesh = ctx.gpu_meshes.get(ctx.meshes, b.mesh, b.lod);
-        const bool cull = b.eye_outside && mesh.outward_closed;
-        if (cull != state.cull_back) {
-            state.cull_back = cull;
-            gl::apply(state);
-        }
-        mesh.fill_vao.bind();
-        glDrawElementsInstancedBaseInstance(GL_TRIANGLES, mesh.triangle_index_count, GL_UNSIGNED_INT,
-                                            nullptr, b.instance_count, b.first_instance);
-    }
-}
-
 }  // namespace
 
 // Paper tone, then every object filled in the style's look, writing the depth texture the
@@ -59,7 +43,7 @@ void pass_fill(const PassContext& ctx) {
     p.set("u_cell_px", ctx.style.halftone_cell_px);
     p.set("u_paper", paper);
     p.set("u_tint", ctx.style.paper_tint);
-    draw_fill_batches(ctx, state, false);
+    draw_batch_triangles(ctx, state, false, &GpuMesh::fill_vao);
 }
 
 // The halo's depth mask (seed 004): the occluders again, shrunk along their vertex normals, so
@@ -76,7 +60,7 @@ void pass_shrunk_depth(const PassContext& ctx) {
     // Pixels to view-space distance per unit of depth: 2 / (height * P[1][1]).
     p.set("u_shrink", ctx.style.halo.shrink_px * 2.0f /
                           (static_cast<float>(ctx.targets.height) * ctx.cam.proj[1][1]));
-    draw_fill_batches(ctx, state, true);
+    draw_batch_triangles(ctx, state, true, &GpuMesh::fill_vao);
 }
 
 }  // namespace bz::render
