@@ -47,56 +47,7 @@ flat out vec2 g_nudge;           // pixel offset that moves a silhouette sample 
 flat out vec3 g_color;
 flat out vec3 g_beam;            // half-width (px), gain, softness (beam_width.glsl)
 
-const float kGuard = 2.0;  // lateral guard band: clip to twice the view frustum
-
-vec3 face_normal(vec3 a, vec3 b, vec3 c) { return cross(b - a, c - a); }
-
-bool front_facing(vec3 a, vec3 b, vec3 c) {
-    // Camera at the view-space origin: robust for points behind the camera too.
-    return dot(face_normal(a, b, c), -a) > 0.0;
-}
-
-// Clips segment a-b (view space) to near <= depth <= far. False if nothing is left.
-bool clip_depth(inout vec3 a, inout vec3 b) {
-    float da = -a.z, db = -b.z;
-    if (da < u_near && db < u_near) return false;
-    if (da > u_far && db > u_far) return false;
-    if (da < u_near) a = mix(a, b, (u_near - da) / (db - da));
-    else if (db < u_near) b = mix(b, a, (u_near - db) / (da - db));
-    da = -a.z; db = -b.z;
-    if (da > u_far) a = mix(a, b, (da - u_far) / (da - db));
-    else if (db > u_far) b = mix(b, a, (db - u_far) / (db - da));
-    return true;
-}
-
-// Clips a clip-space segment (w > 0 at both ends) to the guard band |x|,|y| <= kGuard * w.
-bool clip_lateral(inout vec4 a, inout vec4 b) {
-    for (int axis = 0; axis < 2; ++axis) {
-        for (int side = -1; side <= 1; side += 2) {
-            float fa = kGuard * a.w - float(side) * a[axis];
-            float fb = kGuard * b.w - float(side) * b[axis];
-            if (fa < 0.0 && fb < 0.0) return false;
-            if (fa < 0.0) a = mix(a, b, fa / (fa - fb));
-            else if (fb < 0.0) b = mix(b, a, fb / (fb - fa));
-        }
-    }
-    return true;
-}
-
-vec2 to_window(vec4 clip) { return (clip.xy / clip.w * 0.5 + 0.5) * u_viewport; }
-
-// View-space ray (depth 1) through a window position.
-vec3 ray_at(vec2 px) {
-    vec2 ndc = px / u_viewport * 2.0 - 1.0;
-    return vec3(ndc.x / u_proj[0][0], ndc.y / u_proj[1][1], -1.0);
-}
-
-// The plane through p with normal n, scaled so that dot(plane, X) = 1 on it. A plane through
-// the eye (seen exactly edge-on) has no such form: zero, which means "use the spine's depth".
-vec3 plane_of(vec3 n, vec3 p) {
-    float k = dot(n, p);
-    return abs(k) > 1e-30 ? n / k : vec3(0.0);
-}
+#include "edge_geometry.glsl"
 
 // kind: 0 = crease (faces on both sides), 1 = silhouette, 2 = boundary-like (one face).
 // `face` is this triangle's plane, `other` the neighbour's (creases only); `opp` is this
@@ -104,39 +55,27 @@ vec3 plane_of(vec3 n, vec3 p) {
 void emit_edge(int i0, int i1, int kind, vec3 face, vec3 other, vec3 opp) {
     vec3 a = v_in[i0].view_pos, b = v_in[i1].view_pos;
     // The plane through the eye and the (unclipped) edge, oriented so the face is positive.
-    vec3 m = cross(a, b);
-    if (dot(m, opp) < 0.0) m = -m;
-    if (!clip_depth(a, b)) return;
-    vec4 ca = u_proj * vec4(a, 1.0), cb = u_proj * vec4(b, 1.0);
-    if (!clip_lateral(ca, cb)) return;
-    vec2 s0 = to_window(ca), s1 = to_window(cb);
-    vec2 d = s1 - s0;
-    float len = length(d);
-    vec2 dir = len > 1e-6 ? d / len : vec2(1.0, 0.0);
-    vec2 nrm = vec2(-dir.y, dir.x);
+    vec3 m = eye_edge_plane(a, b, opp);
+    ScreenEdge e;
+    if (!project_edge(a, b, e)) return;
+    vec2 dir, nrm;
+    spine_frame(e.s0, e.s1, dir, nrm);
     uint instance = v_in[0].instance;
-    BeamShape beam = beam_shape(instance_params(instance).z, len,
+    BeamShape beam = beam_shape(instance_params(instance).z, length(e.s1 - e.s0),
                                 (instance * 0x01000193u) ^ uint(gl_PrimitiveIDIn * 3 + i0 / 2));
-    float h = beam.half_width;
 
     g_edge_plane = m;
     g_face_pos = kind == 1 ? vec3(0.0) : face;
     g_face_neg = kind == 0 ? other : vec3(0.0);
-    g_nudge = vec2(0.0);
-    if (kind == 1) {
-        // Sample the depth just outside the front face, where the background or an occluder is.
-        g_nudge = (dot(m, ray_at(s0 + nrm)) > 0.0 ? -nrm : nrm) * 0.75;
-    }
-    g_p0 = s0;
-    g_p1 = s1;
-    g_inv_depth = vec2(1.0 / ca.w, 1.0 / cb.w);
+    g_nudge = kind == 1 ? silhouette_nudge(m, e.s0, nrm) : vec2(0.0);
+    g_p0 = e.s0;
+    g_p1 = e.s1;
+    g_inv_depth = 1.0 / e.w;
     g_color = instance_color(instance).rgb;
     g_beam = vec3(beam.half_width, beam.gain, beam.softness);
-    vec2 corners[4] = vec2[4](s0 - dir * h - nrm * h, s0 - dir * h + nrm * h,
-                              s1 + dir * h - nrm * h, s1 + dir * h + nrm * h);
     for (int k = 0; k < 4; ++k) {
-        g_pixel = corners[k];
-        gl_Position = vec4(corners[k] / u_viewport * 2.0 - 1.0, 0.0, 1.0);
+        g_pixel = quad_corner(e.s0, e.s1, dir, nrm, beam.half_width, k);
+        gl_Position = vec4(g_pixel / u_viewport * 2.0 - 1.0, 0.0, 1.0);
         EmitVertex();
     }
     EndPrimitive();

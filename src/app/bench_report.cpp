@@ -132,7 +132,7 @@ Json run_json(const RunResult& r) {
     Json settings = Json::object();
     settings["preset"] = s.preset;
     settings["method"] =
-        s.method == render::LineMethod::geometry ? "geometry" : "image_outline";
+        render::line_method_name(s.method);
     settings["depth"] = depth_name(s.depth);
     settings["spine_samples"] = s.spine_samples;
     settings["plane_tolerance_rel"] = static_cast<double>(s.plane_tolerance_rel);

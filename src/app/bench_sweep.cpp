@@ -46,7 +46,20 @@ SweepScore summarise(std::vector<geo::MaskScore> scores) {
 std::vector<SweepConfig> sweep_configs() {
     std::vector<SweepConfig> out;
     for (const std::string& name : render::preset_names()) {
-        out.push_back({name, "preset " + name, render::preset(name)});
+        out.push_back({name, "preset " + name + " (" + render::line_method_name(render::kDefaultLineMethod) + ")",
+                       render::preset(name)});
+    }
+    // Each preset again with the other line method: same lines, so the same F1, other cost.
+    for (const render::LineMethod m : render::feature_line_methods()) {
+        if (m == render::kDefaultLineMethod) continue;
+        std::string suffix = render::line_method_name(m);
+        std::replace(suffix.begin(), suffix.end(), '_', '-');
+        for (const std::string& name : render::preset_names()) {
+            SweepConfig c{name + "-" + suffix, "preset " + name + ", line method " + render::line_method_name(m),
+                          render::preset(name)};
+            c.settings.method = m;
+            out.push_back(c);
+        }
     }
     SweepConfig outline{"image-outline",
                         "baseline: Sobel on prepass depth + normals, balanced bloom",

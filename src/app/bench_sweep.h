@@ -20,8 +20,9 @@ struct SweepConfig {
     render::RenderSettings settings;
 };
 
-// fast, balanced, high, image-outline, balanced with culling / LOD / instancing off, and
-// every style (scene::all_styles) with the balanced preset.
+// fast, balanced, high (the default line method), each preset with the other line method,
+// image-outline, balanced with culling / LOD / instancing off, and every style
+// (scene::all_styles) with the balanced preset.
 std::vector<SweepConfig> sweep_configs();
 
 struct SweepScore {

@@ -31,6 +31,7 @@ namespace fs = std::filesystem;
 constexpr const char* kUsage =
     "usage: beamzone bench LEVEL [--frames N] [--warmup N] [--size WxH]\n"
     "                      [--preset fast|balanced|high] [--style NAME] [--sweep | --scaling]\n"
+    "                      [--line-method compute|geometry_shader|image_outline]\n"
     "                      [--out DIR] [--replay FILE] [--samples N] [--rounds N]\n"
     "                      [--timing auto|cpu|gpu] [--beam classic|mame]\n"
     "       beamzone bench --accuracy [--models-dir DIR] [--model FILE]... [--size WxH]\n"
@@ -75,6 +76,7 @@ struct Options {
     glm::ivec2 size{1280, 720};
     std::string preset;
     std::optional<scene::Style> style;  // none: each frame's own (the level's)
+    std::string line_method;  // empty: the level's, else the preset's
     Mode mode = Mode::single;
     std::string out = "bench-out";
     std::string replay;
@@ -106,6 +108,8 @@ Options parse(Args args) {
             preset_given = true;
         } else if (a == "--style") {
             o.style = parse_style(a, cur.value(a));
+        } else if (a == "--line-method") {
+            o.line_method = cur.value(a);
         } else if (a == "--sweep" || a == "--scaling" || a == "--accuracy") {
             const Mode m = a == "--sweep"     ? Mode::sweep
                            : a == "--scaling" ? Mode::scaling
@@ -153,6 +157,8 @@ Options parse(Args args) {
     if (o.level.empty()) throw UsageError("no LEVEL given");
     if (preset_given && o.mode == Mode::sweep)
         throw UsageError("--preset and --sweep exclude each other (the sweep runs every preset)");
+    if (!o.line_method.empty() && o.mode == Mode::sweep)
+        throw UsageError("--line-method and --sweep exclude each other (the sweep runs every method)");
     if (o.style && o.mode == Mode::sweep)
         throw UsageError("--style and --sweep exclude each other (the sweep runs every style)");
     if (o.mode == Mode::scaling && !o.frames_given) o.frames = 40;
@@ -263,6 +269,8 @@ int run(const Options& o) {
     const std::string preset_name = o.preset.empty() ? loaded.level->render.preset : o.preset;
     render::RenderSettings settings =
         render::preset(preset_name.empty() ? "balanced" : preset_name);
+    if (!o.line_method.empty()) settings.method = render::parse_line_method(o.line_method);
+    else if (loaded.level->render.line_method) settings.method = render::parse_line_method(*loaded.level->render.line_method);
     settings.count_edges = true;
     const std::string beam_name = !o.beam.empty() ? o.beam : loaded.level->render.beam.value_or("classic");
     settings.beam = render::beam_look(beam_name);
@@ -377,6 +385,7 @@ int cmd_bench(Args args) {
         Options o = parse(a);
         try {
             if (!o.preset.empty()) render::preset(o.preset);  // an unknown name is a usage error
+            if (!o.line_method.empty()) render::parse_line_method(o.line_method);
             if (!o.beam.empty()) render::beam_look(o.beam);
         } catch (const UserError& e) {
             throw UsageError(e.what());

@@ -97,6 +97,8 @@ struct Play {
         if (loaded.beam_given || !loaded.file_existed) look.settings_beam = settings.beam;
         look.settings_overlay = settings.overlay;
         look.settings_hold_41hz = settings.hold_41hz;
+        look.cli_line_method = options.line_method;
+        if (!settings.line_method.empty()) look.settings_line_method = settings.line_method;
 
         // A replay names its level: without a LEVEL argument, play it on that one (the
         // built-in level included), as `replay --verify` does.

@@ -24,6 +24,7 @@ namespace {
 constexpr const char* kUsage =
     "usage: beamzone render INPUT [--eye x,y,z] [--target x,y,z] [--up x,y,z] [--fov DEG]\n"
     "                       [--near N] [--far F] [--size WxH] [--preset fast|balanced|high]\n"
+    "                       [--line-method compute|geometry_shader|image_outline]\n"
     "                       [--style NAME] [--shading flat|smooth] [--no-smoothing] [--one-sided]\n"
     "                       [--color r,g,b] [--out frame.png]\n"
     "                       [--mask mask.png] [--repeat N] [--copies N] [--beam classic|mame]\n"
@@ -42,6 +43,7 @@ struct RenderOptions {
     std::string input;
     CameraArgs camera;  // shared with `reference`, so both place the camera alike
     std::string preset = "balanced";
+    std::string line_method;  // empty: the preset's
     scene::Style style = scene::Style::vector;
     bool smooth = true;  // filled styles: smooth vertex normals (--shading flat: faces)
     bool smoothing = true;  // halo: cubic silhouette smoothing (--no-smoothing: plain)
@@ -61,6 +63,7 @@ RenderOptions parse(Args args) {
         const std::string_view a = cur.next();
         if (parse_camera_option(a, cur, o.camera)) continue;
         if (a == "--preset") o.preset = cur.value(a);
+        else if (a == "--line-method") o.line_method = cur.value(a);
         else if (a == "--color") o.color = parse_vec3(a, cur.value(a));
         else if (a == "--out") o.out = cur.value(a);
         else if (a == "--mask") o.mask = cur.value(a);
@@ -134,6 +137,7 @@ int cmd_render(Args args) {
         try {
             settings = render::preset(parsed.preset);
             settings.beam = render::beam_look(parsed.beam);
+            if (!parsed.line_method.empty()) settings.method = render::parse_line_method(parsed.line_method);
         } catch (const UserError& e) {
             throw UsageError(e.what());  // an unknown preset name is a usage error
         }

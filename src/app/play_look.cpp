@@ -64,6 +64,16 @@ PlayLook choose_look(const LookSources& s, const level::Level* level) {
                    "), beam " + beam + " (" + beam_from + ")";
     if (look.render.beam.overlay) look.summary += ", overlay";
     if (look.render.beam.refresh_hz > 0.0f) look.summary += ", 41 Hz hold";
+    const std::optional<std::string>& method =
+        s.cli_line_method ? s.cli_line_method
+                          : (s.settings_line_method ? s.settings_line_method
+                                                    : (lv ? lv->line_method : std::optional<std::string>{}));
+    if (method) {
+        look.render.method = render::parse_line_method(*method);
+        look.summary += std::string(", line method ") + render::line_method_name(look.render.method) + " (" +
+                        (s.cli_line_method ? "command line" : s.settings_line_method ? "settings file" : "level") +
+                        ")";
+    }
     if (!lv) return look;
     if (lv->line_width_px) {
         look.render.line_half_width_px = static_cast<float>(*lv->line_width_px * 0.5);

@@ -26,6 +26,9 @@ struct LookSources {
     std::optional<std::string> settings_beam;    // none: the settings file does not name one
     bool settings_overlay = false;
     bool settings_hold_41hz = false;
+    // Line method: --line-method, else the settings file, else the level, else the preset's.
+    std::optional<std::string> cli_line_method;
+    std::optional<std::string> settings_line_method;
 };
 
 struct PlayLook {

@@ -72,6 +72,12 @@ PlayOptions parse_play_options(int argc, char* const* argv) {
                 throw UsageError("--preset: expected one of " + list + ", not '" + printable(p) + "'");
             }
             o.preset = p;
+        } else if (a == "--line-method") {
+            const std::string m(cur.value(a));
+            if (m != "compute" && m != "geometry_shader" && m != "geometry") {
+                throw UsageError("--line-method: expected compute or geometry_shader, not '" + m + "'");
+            }
+            o.line_method = m;
         } else if (a == "--style") {
             const std::string s(cur.value(a));
             if (!scene::style_from_name(s)) {
@@ -154,6 +160,8 @@ std::string play_usage(const std::string& settings_path, const std::string& high
            "                   level's, else mame)\n"
            "  --preset P       render preset for this run (else the settings', else the level's)\n"
            "  --difficulty D   for this run (else the settings' `difficulty`, else the level's)\n"
+           "  --line-method M  compute or geometry_shader, for this run (else the settings',\n"
+           "                   else the level's, else the preset's)\n"
            "  --record FILE    save this game's inputs so --replay FILE plays it back exactly\n"
            "                   (until the level file changes: a replay belongs to one level)\n"
            "  --seed N         random seed of the game (default: from the clock)\n"

@@ -27,6 +27,7 @@ struct PlayOptions {
     std::optional<std::string> preset;
     std::optional<std::string> style;  // a style name (scene/style.h)
     std::optional<std::string> beam;   // "mame" or "classic"
+    std::optional<std::string> line_method;  // "compute" or "geometry_shader"
     std::optional<bool> fullscreen;    // --fullscreen / --windowed
     std::optional<platform::Vsync> vsync;
     std::string record;

@@ -88,6 +88,7 @@ struct RenderSettings {
     std::optional<std::string> beam;
     std::optional<bool> overlay;
     std::optional<bool> hold_41hz;
+    std::optional<std::string> line_method;  // "compute" or "geometry_shader"; none: the preset's
     // Whether the file set style / preset (else the defaults above): `play` lets a level's
     // own choice win over the player's settings file, but not a default.
     bool style_given = false;

@@ -179,7 +179,7 @@ class Reader {
                                                       "vsync",  "fullscreen", "pause_on_focus_loss",
                                                       "preset", "style",      "gamepad",
                                                       "show_fps", "difficulty", "beam",
-                                                      "overlay",  "hold_41hz"};
+                                                      "overlay",  "hold_41hz",  "line_method"};
         for (const auto& [name, value] : t) {
             if (std::find(std::begin(kKnown), std::end(kKnown), name.str()) == std::end(kKnown)) {
                 error_at(name.source().begin, "unknown setting '" + printable(name.str()) + "'");
@@ -280,6 +280,10 @@ SettingsLoad parse_settings(std::string_view text, const std::string& source,
     }
     r.boolean(t, "overlay", s.overlay);
     r.boolean(t, "hold_41hz", s.hold_41hz);
+    const std::string line_methods[] = {"compute", "geometry_shader", "geometry"};
+    if (const int i = r.choice(t, "line_method", line_methods, s.line_method); i >= 0) {
+        s.line_method = line_methods[i];
+    }
     const std::string modes[] = {"tank", "drive"};
     if (const int i = r.choice(t, "gamepad", modes, modes[static_cast<int>(s.gamepad)]); i >= 0) {
         s.gamepad = static_cast<GamepadMode>(i);
@@ -331,6 +335,8 @@ std::string format_settings(const Settings& s) {
       << "         # Battlezone's cabinet overlay: top fifth red, the rest green\n"
       << "hold_41hz = " << (s.hold_41hz ? "true" : "false")
       << "       # the original's ~41 Hz refresh, frames held\n"
+      << (s.line_method.empty() ? "# line_method = \"compute\"" : "line_method = \"" + s.line_method + "\"")
+      << "  # \"compute\" or \"geometry_shader\"; unset: the preset's\n"
       << "gamepad = " << quoted(s.gamepad == GamepadMode::tank ? "tank" : "drive")
       << "          # \"tank\" (two sticks, one per tread) or \"drive\" (left stick)\n"
       << "show_fps = " << (s.show_fps ? "true" : "false")

@@ -34,6 +34,15 @@ void edges_counted(const PassContext& ctx) {
     if (ctx.settings.count_edges && ctx.stats) ctx.stats->feature_edges = ctx.edges.appended();
 }
 
+// LineMethod::compute's line pass: one quad per edge-buffer record; with count_edges it also
+// reads back how many records the edges pass appended (waits for it, so only on request).
+void edge_quads_counted(const PassContext& ctx) {
+    pass_edge_quads(ctx, false);
+    if (ctx.settings.count_edges && ctx.stats) ctx.stats->feature_edges = ctx.edges.appended();
+}
+
+void edge_quads_mask(const PassContext& ctx) { pass_edge_quads(ctx, true); }
+
 void sketch_strokes(const PassContext& ctx) { pass_sketch(ctx, false); }
 void sketch_mask(const PassContext& ctx) { pass_sketch(ctx, true); }
 
@@ -59,9 +68,17 @@ void outline_mask(const PassContext& ctx) { pass_image_outline(ctx, true); }
 
 }  // namespace
 
-bool style_needs_edge_buffer(const StyleDef& style) {
+namespace {
+
+bool compute_lines(const StyleDef& style, const RenderSettings& settings) {
+    return style.fill == FillPass::none && settings.method == LineMethod::compute;
+}
+
+}  // namespace
+
+bool style_needs_edge_buffer(const StyleDef& style, const RenderSettings& settings) {
     return style.lines == LinePass::outline || style.lines == LinePass::sketch ||
-           style.lines == LinePass::halo;
+           style.lines == LinePass::halo || compute_lines(style, settings);
 }
 
 std::vector<FramePass> frame_passes(const StyleDef& style, const RenderSettings& settings) {
@@ -72,6 +89,12 @@ std::vector<FramePass> frame_passes(const StyleDef& style, const RenderSettings&
             // The image-space baseline finds no edges as such: feature_edges stays 0.
             list.push_back({"prepass", pass_outline_prepass});
             list.push_back({"outline", outline_baseline});
+        } else if (settings.method == LineMethod::compute) {
+            // The edges pass appends every visible feature edge; the quads draw the count it
+            // appended (an indirect draw, no read-back).
+            list.push_back({"prepass", pass_prepass});
+            list.push_back({"edges", pass_edges});
+            list.push_back({"lines", edge_quads_counted});
         } else {
             list.push_back({"prepass", pass_prepass});
             list.push_back({"lines", lines_counted});
@@ -84,7 +107,7 @@ std::vector<FramePass> frame_passes(const StyleDef& style, const RenderSettings&
     }
     list.push_back({"fill", pass_fill});
     // Strokes are drawn from the edge buffer: the edges pass appends every visible feature edge.
-    if (style_needs_edge_buffer(style)) list.push_back({"edges", edges_counted});
+    if (style_needs_edge_buffer(style, settings)) list.push_back({"edges", edges_counted});
     switch (style.lines) {
         case LinePass::outline:
             list.push_back({"outline", pass_outline});
@@ -108,6 +131,8 @@ std::vector<FramePass> frame_passes(const StyleDef& style, const RenderSettings&
 std::vector<FramePass> mask_passes(const StyleDef& style, const RenderSettings& settings) {
     if (style.fill == FillPass::none && settings.method == LineMethod::image_outline)
         return {{"prepass", pass_outline_prepass}, {"outline", outline_mask}};
+    if (compute_lines(style, settings))
+        return {{"prepass", pass_prepass}, {"edges", edges_complete}, {"lines", edge_quads_mask}};
     if (style.lines == LinePass::sketch)
         return {{"prepass", pass_prepass}, {"edges", edges_complete}, {"strokes", sketch_mask}};
     return {{"prepass", pass_prepass}, {"lines", lines_mask}};

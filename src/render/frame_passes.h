@@ -12,8 +12,9 @@ struct FramePass {
     void (*run)(const PassContext& ctx);
 };
 
-// Whether the style's passes read the edge buffer (the mesh cache then builds edge lists).
-bool style_needs_edge_buffer(const StyleDef& style);
+// Whether the frame's passes read the edge buffer (the mesh cache then builds edge lists): the
+// stroke styles do, and the beam styles with LineMethod::compute.
+bool style_needs_edge_buffer(const StyleDef& style, const RenderSettings& settings);
 
 std::vector<FramePass> frame_passes(const StyleDef& style, const RenderSettings& settings);
 

@@ -4,6 +4,7 @@
 
 #include "geometry/closure.h"
 #include "geometry/dihedral.h"
+#include "geometry/edge_list.h"
 
 #include "geometry/simplify.h"
 #include "geometry/edge_list.h"
@@ -36,6 +37,8 @@ const GpuMesh& MeshCache::get(const scene::MeshLibrary& library, scene::MeshId i
         upload(*slot.full, library.mesh(id));
         slot.full->version = version;
     }
+    // A mesh uploaded before the compute line method was chosen gets its edge list now.
+    if (edge_lists_ && !slot.full->has_edge_list) upload_edges(*slot.full, library.mesh(id));
     if (lod <= 0) return *slot.full;
     if (!slot.simplify_tried) {
         slot.simplify_tried = true;
@@ -45,12 +48,19 @@ const GpuMesh& MeshCache::get(const scene::MeshLibrary& library, scene::MeshId i
             slot.simplified->version = version;
         }
     }
+    if (slot.simplified && edge_lists_ && !slot.simplified->has_edge_list) {
+        if (auto reduced = geo::simplify_line_mesh(library.mesh(id))) upload_edges(*slot.simplified, *reduced);
+    }
     return slot.simplified ? *slot.simplified : *slot.full;
 }
 
-void MeshCache::set_edge_lists(bool on) {
-    if (on && !edge_lists_) meshes_.clear();
-    edge_lists_ = on;
+void MeshCache::set_edge_lists(bool on) { edge_lists_ = on; }
+
+void MeshCache::upload_edges(GpuMesh& gpu, const geo::AdjacencyMesh& mesh) {
+    const std::vector<geo::MeshEdge> edges = geo::build_edge_list(mesh);
+    gpu.edge_list.set(std::span<const geo::MeshEdge>(edges), GL_STATIC_DRAW);
+    gpu.edge_count = static_cast<GLuint>(edges.size());
+    gpu.has_edge_list = true;
 }
 
 void MeshCache::upload(GpuMesh& gpu, const geo::AdjacencyMesh& mesh) {
@@ -63,11 +73,7 @@ void MeshCache::upload(GpuMesh& gpu, const geo::AdjacencyMesh& mesh) {
     gpu.outward_closed = geo::is_outward_closed(mesh);
     const std::vector<float> cosines = geo::edge_dihedral_cosines(mesh);
     gpu.edge_cosines.set(std::span<const float>(cosines), GL_STATIC_DRAW);
-    if (edge_lists_) {
-        const std::vector<geo::MeshEdge> edges = geo::build_edge_list(mesh);
-        gpu.edge_list.set(std::span<const geo::MeshEdge>(edges), GL_STATIC_DRAW);
-        gpu.edge_count = static_cast<GLuint>(edges.size());
-    }
+    if (edge_lists_) upload_edges(gpu, mesh);
     gpu.adjacency_count = static_cast<GLsizei>(mesh.adjacency.size());
     gpu.triangle_index_count = static_cast<GLsizei>(mesh.triangles.size());
 

@@ -34,6 +34,7 @@ struct GpuMesh {
     gl::Buffer adjacency;
     gl::Buffer triangles;
     gl::Buffer edge_cosines;  // 3 per triangle, read by the geometry shader (binding 0)
+    bool has_edge_list = false;  // edge_list is filled (uploaded on first use with edge lists on)
     gl::VertexArray lines_vao;
     gl::VertexArray prepass_vao;
     gl::VertexArray fill_vao;  // triangles with normals, colour and parameters
@@ -50,11 +51,11 @@ public:
     // Uploads on first use and when the library's version for `id` changed. lod 1 is the
     // simplified mesh when the mesh has one, else the mesh itself.
     const GpuMesh& get(const scene::MeshLibrary& library, scene::MeshId id, int lod = 0);
+    // Build each mesh's edge list too (the compute line method); meshes uploaded without one
+    // get it on their next use (not counted as an upload).
+    void set_edge_lists(bool on);
     // GPU meshes uploaded so far (each model once, plus its simplified version if used).
     std::size_t uploads() const { return uploads_; }
-    // Build each mesh's edge list too. Turning it on drops the meshes uploaded without one, so
-    // they are uploaded again on their next use.
-    void set_edge_lists(bool on);
 
 private:
     struct Slot {
@@ -63,6 +64,7 @@ private:
         bool simplify_tried = false;
     };
     void upload(GpuMesh& gpu, const geo::AdjacencyMesh& mesh);
+    void upload_edges(GpuMesh& gpu, const geo::AdjacencyMesh& mesh);
     const gl::Buffer* instances_;
     std::vector<Slot> meshes_;
     std::size_t uploads_ = 0;

@@ -47,12 +47,13 @@ void set_line_uniforms(const gl::Program& p, const PassContext& ctx, float half_
     p.set("u_depth_max", glm::ivec2(ctx.targets.width - 1, ctx.targets.height - 1));
 }
 
-// The feature-line pass: the geometry shader finds and extrudes edges, the fragment shader
-// runs the spine test against the prepass depth and shades the beam. GL_MAX blending keeps
-// overlapping ends and crossings from getting brighter than a single line; additive blending
-// (BeamBlend::additive, MAME's) lets them add, as on a tube.
-void pass_lines(const PassContext& ctx, bool mask_mode) {
-    const gl::Program& program = mask_mode ? ctx.programs.mask : ctx.programs.lines;
+// The mask marks the pixels whose unit square the spine crosses: their centres lie within
+// sqrt(2)/2 of the spine (sideways and past its ends), so a quad of half-width 0.75 holds them
+// all. The beam fades to exactly zero at its half-width, so its quad is already as small as
+// the beam.
+constexpr float kMaskHalfWidth = 0.75f;
+
+void begin_line_target(const PassContext& ctx, const gl::Program& program, bool mask_mode) {
     (mask_mode ? ctx.targets.mask_fbo : ctx.targets.lines_fbo).bind();
     gl::PipelineState state;
     state.blend = !mask_mode && ctx.settings.beam.blend == BeamBlend::additive ? gl::Blend::add : gl::Blend::max;
@@ -66,12 +67,21 @@ void pass_lines(const PassContext& ctx, bool mask_mode) {
         gl::apply(state);
     }
     program.use();
-    // The mask needs only the pixels the spine crosses: a quad one pixel to each side.
-    set_line_uniforms(program, ctx, mask_mode ? 1.0f : ctx.settings.line_half_width_px);
+    set_line_uniforms(program, ctx, mask_mode ? kMaskHalfWidth : ctx.settings.line_half_width_px);
     set_beam_uniforms(program, ctx.settings.beam, ctx.settings.line_half_width_px, ctx.targets.height, ctx.seed,
                       mask_mode);
+    if (mask_mode) program.set("u_beam_width", glm::vec4(kMaskHalfWidth, kMaskHalfWidth, 0.0f, 1.0f));
     ctx.targets.depth.bind(0);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, ctx.instances.id());
+}
+
+// The feature-line pass of LineMethod::geometry_shader: the geometry shader finds and extrudes
+// edges, the fragment shader runs the spine test against the prepass depth and shades the
+// beam. GL_MAX blending keeps overlapping ends and crossings from getting brighter than a
+// single line; additive blending (BeamBlend::additive, MAME's) lets them add, as on a tube.
+void pass_lines(const PassContext& ctx, bool mask_mode) {
+    const gl::Program& program = mask_mode ? ctx.programs.mask : ctx.programs.lines;
+    begin_line_target(ctx, program, mask_mode);
     for (const Batch& b : ctx.batches.batches) {
         const GpuMesh& mesh = ctx.gpu_meshes.get(ctx.meshes, b.mesh, b.lod);
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, mesh.edge_cosines.id());

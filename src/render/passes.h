@@ -35,7 +35,7 @@ struct PassContext {
     bool occlusion;                       // false in the arcade style
     const gl::VertexArray& empty_vao;     // for full-screen triangles
     const gl::Buffer& instances;          // the frame's InstanceData, also read as an SSBO
-    EdgeStorage& edges;                   // the edge buffer (LineMethod::compute)
+    EdgeStorage& edges;                   // the edge buffer (strokes, LineMethod::compute)
     const StyleDef& style;                // what the frame looks like (render/styles/)
     const StyleTextures& style_textures;  // noise and stroke profiles
     const gl::VertexArray& hud_vao;
@@ -62,8 +62,18 @@ void draw_batch_triangles(const PassContext& ctx, gl::PipelineState state, bool 
                           gl::VertexArray GpuMesh::*vao = &GpuMesh::prepass_vao);
 // mask_mode: draw the 1-pixel visible-spine mask into targets.mask instead of shaded lines.
 void pass_lines(const PassContext& ctx, bool mask_mode);
+// Shared by both line methods' draw passes (pass_lines.cpp): binds and clears the lines (or
+// mask) target with the beam's blending, binds the depth texture and the instance buffer, uses
+// `program` and sets the uniforms of the line fragment stage, the beam and the shared edge
+// geometry.
+void begin_line_target(const PassContext& ctx, const gl::Program& program, bool mask_mode);
 void set_line_uniforms(const gl::Program& program, const PassContext& ctx, float half_width);
+// Fills the edge buffer from every batch's edge list (edges.comp): the strokes of the filled
+// styles and LineMethod::compute read it.
 void pass_edges(const PassContext& ctx);
+// LineMethod::compute: one quad per edge-buffer record (pass_edge_quads.cpp), with the same
+// fragment stage as pass_lines.
+void pass_edge_quads(const PassContext& ctx, bool mask_mode);
 void pass_hud(const PassContext& ctx);
 // Beam passes (the vector-monitor look, BeamSettings); each reads the image it is given, so a
 // style may skip any of them. pass_phosphor returns the picture that bloom and composite read.

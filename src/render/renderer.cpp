@@ -162,7 +162,7 @@ void Renderer::render(const scene::FrameList& frame, const scene::MeshLibrary& m
     }
     const CameraMatrices cam = m.camera(frame);
     const StyleDef& style = m.style_of(frame);
-    m.gpu_meshes.set_edge_lists(style_needs_edge_buffer(style));
+    m.gpu_meshes.set_edge_lists(style_needs_edge_buffer(style, m.settings));
     const FrameBatches batches = m.prepare(frame, meshes, cam);
     const GLsizei hud_count = m.upload_hud(frame.hud);
     m.stats = batches.stats;
@@ -190,7 +190,7 @@ std::vector<std::uint8_t> Renderer::render_mask(const scene::FrameList& frame,
     Impl& m = *impl_;
     const CameraMatrices cam = m.camera(frame);
     const StyleDef& style = m.style_of(frame);
-    m.gpu_meshes.set_edge_lists(style_needs_edge_buffer(style));
+    m.gpu_meshes.set_edge_lists(style_needs_edge_buffer(style, m.settings));
     const FrameBatches batches = m.prepare(frame, meshes, cam);
     const PassContext ctx = m.context(meshes, batches, cam, style, 0, m.targets.output_fbo.id(),
                                       frame, nullptr);

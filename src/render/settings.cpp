@@ -9,6 +9,28 @@ const std::vector<std::string>& preset_names() {
     return names;
 }
 
+LineMethod parse_line_method(std::string_view name) {
+    if (name == "geometry_shader" || name == "geometry") return LineMethod::geometry_shader;
+    if (name == "compute") return LineMethod::compute;
+    if (name == "image_outline") return LineMethod::image_outline;
+    throw UserError("unknown line method '" + std::string(name) +
+                    "' (use compute, geometry_shader or image_outline)");
+}
+
+const char* line_method_name(LineMethod method) {
+    switch (method) {
+        case LineMethod::geometry_shader: return "geometry_shader";
+        case LineMethod::compute: return "compute";
+        case LineMethod::image_outline: return "image_outline";
+    }
+    return "?";
+}
+
+const std::vector<LineMethod>& feature_line_methods() {
+    static const std::vector<LineMethod> methods = {LineMethod::compute, LineMethod::geometry_shader};
+    return methods;
+}
+
 RenderSettings preset(std::string_view name) {
     RenderSettings s;
     s.preset = std::string(name);

@@ -18,9 +18,21 @@ enum class BloomResolution { full = 1, half = 2, quarter = 4 };
 
 // How feature lines are found.
 enum class LineMethod {
-    geometry,       // the geometry shader on triangle adjacency, with the spine test (default)
-    image_outline,  // baseline: Sobel edges on the prepass depth and normals (pass_image_outline)
+    geometry_shader,  // a geometry shader per triangle on triangle adjacency (pass_lines.cpp)
+    compute,          // a compute shader per unique edge fills the edge buffer, then one quad per
+                      // edge (pass_edges.cpp, pass_edge_quads.cpp); same lines, same spine test
+    image_outline,    // baseline: Sobel edges on the prepass depth and normals (pass_image_outline)
 };
+
+// "geometry_shader" (also "geometry", its old name), "compute" or "image_outline"; throws
+// UserError naming the valid ones otherwise.
+LineMethod parse_line_method(std::string_view name);
+const char* line_method_name(LineMethod method);
+// The two methods that draw the same feature lines (not the image-space baseline).
+const std::vector<LineMethod>& feature_line_methods();
+
+// The method presets use; see the README's "line methods" for the measurements behind it.
+inline constexpr LineMethod kDefaultLineMethod = LineMethod::compute;
 
 // The vector beam: how a line's intensity becomes width and brightness, how lines combine,
 // how the phosphor holds them, and the glow. The `classic` look is the original beamzone beam
@@ -86,7 +98,7 @@ struct RenderSettings {
     bool frustum_culling = true;
     bool lod = true;                // raise the crease threshold / use simplified meshes far away
     bool count_edges = false;       // count emitted feature edges (costs a query per frame)
-    LineMethod method = LineMethod::geometry;
+    LineMethod method = kDefaultLineMethod;
     bool instancing = true;         // false: one draw call per object (for measuring batching)
     // image_outline thresholds: relative depth step, and normal step as a crease angle.
     float outline_depth_threshold = 0.1f;

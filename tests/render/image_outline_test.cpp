@@ -48,7 +48,7 @@ TEST_F(ImageOutlineTest, DrawsIntoTheSameFrameAsTheLinePass) {
     EXPECT_TRUE(finite);
     EXPECT_GT(lit, 300);
     // Switching back to the geometry method works on the same renderer.
-    settings.method = bz::render::LineMethod::geometry;
+    settings.method = bz::render::LineMethod::geometry_shader;
     EXPECT_GT(mask().count(), 300);
 }
 

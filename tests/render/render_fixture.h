@@ -11,6 +11,10 @@
 
 namespace bz::test {
 
+// Two masks of the same frame by the two feature-line methods: the same lines, up to a few
+// pixels where a face is seen exactly edge-on.
+void expect_same_lines(const Mask& a, const Mask& b, const std::string& what);
+
 class RenderTest : public GlTest {
 protected:
     static constexpr int kWidth = 320;
@@ -19,10 +23,14 @@ protected:
     void SetUp() override;
     scene::MeshId add_mesh(const std::string& name, const geo::TriMesh& mesh);
     void add_item(scene::MeshId id, const glm::dmat4& model = glm::dmat4(1.0));
+    // The mask with settings' line method. For the feature-line methods it also renders the
+    // mask with the other one and checks that both agree (see line_method_agreement), so every
+    // mask test checks the compute and the geometry-shader path against each other.
     Mask mask(const std::string& save_as = "");
     void save_color(const std::string& name);
 
     render::RenderSettings settings = render::preset("high");
+    bool compare_line_methods = true;
     std::unique_ptr<render::Renderer> renderer;
     scene::MeshLibrary meshes;
     scene::FrameList frame;

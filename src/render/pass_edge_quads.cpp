@@ -1,0 +1,20 @@
+#include "render/passes.h"
+
+namespace bz::render {
+
+// The line pass of LineMethod::compute: one quad per edge-buffer record, drawn with the count
+// the compute shader appended (glDrawArraysIndirect, no read-back), shaded by the same
+// fragment stage as the geometry-shader path (spine test, beam).
+void pass_edge_quads(const PassContext& ctx, bool mask_mode) {
+    const gl::Program& program = mask_mode ? ctx.programs.edge_quads_mask : ctx.programs.edge_quads;
+    begin_line_target(ctx, program, mask_mode);
+    program.set("u_capacity", ctx.edges.capacity());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEdgeRecordsBinding, ctx.edges.records().id());
+    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, ctx.edges.command().id());
+    ctx.empty_vao.bind();
+    glDrawArraysIndirect(GL_TRIANGLES, nullptr);
+    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
+    ctx.edges.keep_count();
+}
+
+}  // namespace bz::render

@@ -1,0 +1,110 @@
+// The two feature-line methods (LineMethod::compute and LineMethod::geometry_shader) draw the
+// same lines: on real models, against each other and against the exact CPU reference, and
+// they count the same feature edges. (Every analytic mask test also compares them: see
+// RenderTest::mask.)
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "geometry/import.h"
+#include "geometry/mask_score.h"
+#include "geometry/primitives.h"
+#include "render/camera_framing.h"
+#include "render/reference_frame.h"
+#include "render/render_fixture.h"
+
+using bz::render::LineMethod;
+using bz::test::Mask;
+using bz::test::RenderTest;
+
+namespace {
+
+const char* const kModels[] = {
+    "/usr/share/assimp/models/PLY/Wuson.ply",
+    "/usr/share/assimp/models/OBJ/spider.obj",
+    "/usr/share/assimp/models/Collada/duck.dae",
+    "/usr/share/assimp/models/glTF/CesiumMilkTruck/CesiumMilkTruck.gltf",
+    "/usr/share/assimp/models/3DS/fels.3ds",
+    "/usr/share/assimp/models/BLEND/Suzanne_248.blend",
+};
+
+}  // namespace
+
+class LineMethodsTest : public RenderTest {
+protected:
+    Mask mask_with(LineMethod m, const std::string& name) {
+        settings.method = m;
+        compare_line_methods = false;
+        return mask(name + "_" + bz::render::line_method_name(m));
+    }
+};
+
+TEST_F(LineMethodsTest, RealModelsSameMaskAndSameReferenceScore) {
+    for (const char* path : kModels) {
+        SCOPED_TRACE(path);
+        ASSERT_TRUE(std::filesystem::exists(path)) << "install assimp-testmodels (tools/install-deps)";
+        frame.items.clear();
+        const auto id = add_mesh(path, bz::geo::import_model(path));
+        add_item(id);
+        frame.camera = bz::render::frame_bounds(meshes.bounds(id), 50.0, double(kWidth) / kHeight);
+        const std::string name = "methods_" + std::filesystem::path(path).stem().string();
+        for (const char* preset : {"balanced", "high"}) {
+            SCOPED_TRACE(preset);
+            settings = bz::render::preset(preset);
+            const Mask gs = mask_with(LineMethod::geometry_shader, name);
+            const Mask cs = mask_with(LineMethod::compute, name);
+            EXPECT_GT(gs.count(), 100);
+            bz::test::expect_same_lines(cs, gs, name);
+            const std::vector<std::uint8_t> ref = bz::render::reference_frame_mask(frame, meshes, kWidth, kHeight);
+            const auto f_gs = bz::geo::score_masks(gs.pixels, ref, kWidth, kHeight, 1).f1;
+            const auto f_cs = bz::geo::score_masks(cs.pixels, ref, kWidth, kHeight, 1).f1;
+            EXPECT_NEAR(f_cs, f_gs, 0.002) << "F1 compute " << f_cs << ", geometry shader " << f_gs;
+            EXPECT_GT(f_cs, 0.9);
+        }
+    }
+}
+
+TEST_F(LineMethodsTest, BothCountTheSameFeatureEdges) {
+    // Instanced spheres and open boxes: silhouettes, creases and boundary edges, several batches.
+    const auto sphere = add_mesh("sphere", bz::geo::uv_sphere(1.0f, 10, 20));
+    const auto open = add_mesh("open", bz::geo::open_box(glm::vec3(0.8f)));
+    for (int i = 0; i < 4; ++i) {
+        add_item(sphere, glm::translate(glm::dmat4(1.0), glm::dvec3(i * 2.5 - 4.0, 0.0, 0.0)));
+        add_item(open, glm::translate(glm::dmat4(1.0), glm::dvec3(i * 2.5 - 4.0, 0.0, -3.0)));
+    }
+    frame.camera.eye = {1.0, 4.0, 9.0};
+    frame.camera.target = {0.0, 0.0, -1.0};
+    std::size_t counts[2] = {0, 0};
+    int k = 0;
+    for (const LineMethod m : {LineMethod::geometry_shader, LineMethod::compute}) {
+        settings = bz::render::preset("balanced");
+        settings.method = m;
+        settings.count_edges = true;
+        renderer->set_settings(settings);
+        renderer->render(frame, meshes, bz::render::Renderer::kOffscreen);
+        counts[k++] = renderer->stats().feature_edges;
+    }
+    EXPECT_GT(counts[0], 50u);
+    EXPECT_EQ(counts[1], counts[0]);
+}
+
+TEST_F(LineMethodsTest, EdgeBufferGrowsPastItsFirstSize) {
+    // More visible feature edges than the edge buffer's first size (65536 records, pass_edges):
+    // at a crease angle of 0 every edge of a finely divided sphere is a crease, about 100k of
+    // them face the eye. The mask must still be complete, and the same as the geometry shader's.
+    const auto sphere = add_mesh("sphere", bz::geo::uv_sphere(1.0f, 300, 600));
+    add_item(sphere);
+    frame.camera.eye = {0.0, 1.0, 3.0};
+    frame.camera.target = {0.0, 0.0, 0.0};
+    settings = bz::render::preset("balanced");
+    settings.crease_angle_deg = 0.0f;
+    settings.lod = false;
+    settings.count_edges = true;
+    const Mask gs = mask_with(LineMethod::geometry_shader, "grow");
+    const Mask cs = mask_with(LineMethod::compute, "grow");
+    bz::test::expect_same_lines(cs, gs, "grow");
+    renderer->render(frame, meshes, bz::render::Renderer::kOffscreen);
+    EXPECT_GT(renderer->stats().feature_edges, 65536u);
+}
