@@ -9,6 +9,9 @@ uniform int u_factor;
 uniform float u_threshold;  // peak-channel brightness where glow starts (0: everything glows)
 uniform float u_knee;       // half-width of the soft knee around the threshold
 layout(location = 0) out vec4 o_color;
+// The first level also marks where the picture holds any light at all (the sparse
+// composite's tiles.comp): the box average of non-negative texels is zero only if all are.
+layout(location = 1) out vec4 o_lit;
 
 vec3 box(vec2 uv) {
     if (u_factor == 1) return texture(u_source, uv).rgb;
@@ -33,5 +36,6 @@ vec3 above_threshold(vec3 c) {
 
 void main() {
     vec3 c = box(v_uv);
+    o_lit = vec4(max(c.r, max(c.g, c.b)) > 0.0 ? 1.0 : 0.0);
     o_color = vec4(u_threshold > 0.0 ? above_threshold(c) : c, 1.0);
 }

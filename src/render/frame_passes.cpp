@@ -101,7 +101,10 @@ std::vector<FramePass> frame_passes(const StyleDef& style, const RenderSettings&
         }
         list.push_back({"hud", pass_hud});
         if (settings.beam.phosphor != PhosphorDecay::off) list.push_back({"phosphor", phosphor});
-        if (style.bloom && settings.bloom_strength > 0.0f) list.push_back({"bloom", bloom});
+        if (style.bloom && settings.bloom_strength > 0.0f) {
+            list.push_back({"bloom", bloom});
+            if (settings.sparse_composite) list.push_back({"tiles", pass_tiles});
+        }
         list.push_back({"composite", composite});
         return list;
     }

@@ -81,7 +81,10 @@ const gl::Texture2D& pass_phosphor(const PassContext& ctx, const gl::Texture2D& 
 void pass_bloom(const PassContext& ctx, const gl::Texture2D& source);
 // The weight of one level of the bloom chain (never zero: the chain divides by it).
 float mip_weight(const std::vector<float>& weights, std::size_t level);
-// `bloom`: false draws the picture without glow (bloom_out is not read).
+// The screen tiles the sparse composite shades (after bloom; needs Targets::tiles).
+void pass_tiles(const PassContext& ctx);
+// `bloom`: false draws the picture without glow (bloom_out is not read). With bloom and the
+// tiles of pass_tiles it shades only the lit tiles (RenderSettings::sparse_composite).
 void pass_composite(const PassContext& ctx, const gl::Texture2D& picture, bool bloom, GLuint target_fbo,
                     int width, int height);
 // The image-space outline baseline (LineMethod::image_outline), in place of prepass + lines.

@@ -4,6 +4,7 @@
 
 #include "core/paths.h"
 #include "render/bloom_kernel.h"
+#include "render/targets.h"
 
 namespace bz::render {
 
@@ -49,6 +50,11 @@ Programs load_programs(const RenderSettings& settings) {
     p.bloom_blur = load_bloom_blur(settings);
     p.composite = gl::Program({stage(GL_VERTEX_SHADER, "fullscreen.vert"),
                                stage(GL_FRAGMENT_SHADER, "composite.frag")});
+    const std::string tile_size = "TILE_SIZE " + std::to_string(kScreenTileSize);
+    p.composite_tiles = gl::Program({stage(GL_VERTEX_SHADER, "composite_tiles.vert"),
+                                     stage(GL_FRAGMENT_SHADER, "composite.frag")},
+                                    {tile_size});
+    p.tiles = gl::Program({stage(GL_COMPUTE_SHADER, "tiles.comp")}, {tile_size});
     p.bloom_up = gl::Program({stage(GL_VERTEX_SHADER, "fullscreen.vert"), stage(GL_FRAGMENT_SHADER, "bloom_up.frag")});
     p.phosphor = gl::Program({stage(GL_VERTEX_SHADER, "fullscreen.vert"), stage(GL_FRAGMENT_SHADER, "phosphor.frag")});
     p.outline_prepass = gl::Program({stage(GL_VERTEX_SHADER, "outline_prepass.vert"),

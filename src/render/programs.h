@@ -18,6 +18,8 @@ struct Programs {
     gl::Program bloom_down;
     gl::Program bloom_blur;
     gl::Program composite;
+    gl::Program composite_tiles;  // the same fragment stage over the lit screen tiles only
+    gl::Program tiles;            // tiles.comp: which screen tiles are lit
     gl::Program bloom_up;   // one step up the bloom chain (BloomKind::mip_chain)
     gl::Program phosphor;   // phosphor persistence
     gl::Program outline_prepass;     // image-space baseline: depth + face normals

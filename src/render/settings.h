@@ -112,6 +112,9 @@ struct RenderSettings {
     // depth-tested) instead of the styles' centred, spine-tested ones (seed 002's two variants).
     bool one_sided_outlines = false;
     BeamSettings beam;
+    // Composite only the screen tiles that bloom found lit (pass_tiles.cpp); false: every
+    // pixel (the same picture, for comparing).
+    bool sparse_composite = true;
 };
 
 // "fast", "balanced" or "high"; throws UserError naming the valid ones otherwise.

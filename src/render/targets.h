@@ -8,6 +8,9 @@
 
 namespace bz::render {
 
+// The sparse composite's screen tiles, in pixels (shaders/screen_tiles.glsl gets it too).
+inline constexpr int kScreenTileSize = 32;
+
 struct Targets {
     int width = 0;
     int height = 0;
@@ -39,6 +42,13 @@ struct Targets {
     std::array<gl::Texture2D, 2> phosphor;
     std::array<gl::Framebuffer, 2> phosphor_fbo;
     int phosphor_front = 0;  // which one holds the last picture
+    // Sparse composite (pass_tiles.cpp): where the picture holds light, one R8 texel per bloom
+    // texel (written by the bloom's first downsample), and the lit screen tiles (R8UI, one
+    // texel per kScreenTileSize square). Only where the bloom resolution divides the size, so
+    // that the downsample's blocks cover every pixel exactly.
+    gl::Texture2D lit;
+    gl::Texture2D tiles;
+    bool tiles_valid = false;  // tiles describe the current bloom (pass_tiles ran on it)
 };
 
 Targets make_targets(int width, int height, const RenderSettings& settings);

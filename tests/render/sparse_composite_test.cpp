@@ -1,0 +1,100 @@
+// The sparse composite (pass_tiles.cpp, pass_composite.cpp) shades only the screen tiles where
+// the picture or its glow is lit and clears the rest: the frame must be the one the dense,
+// every-pixel composite draws, faint glow and screen edges included, in both beam looks.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <vector>
+
+#include "render/render_fixture.h"
+
+namespace {
+
+constexpr int kW = 320;
+constexpr int kH = 240;
+
+glm::vec2 hud_at(float x, float y) { return {(x + 0.5f - kW * 0.5f) / (kH * 0.5f), (kH * 0.5f - y - 0.5f) / (kH * 0.5f)}; }
+
+// Lines of every brightness, from full to barely above black, some along the screen's edges
+// and corners (where tiles are cut off), a dot, and a crossing.
+bz::scene::FrameList scattered_lines(double time_s, float shift) {
+    bz::scene::FrameList f;
+    f.time_s = time_s;
+    const auto add = [&](glm::vec2 a, glm::vec2 b, glm::vec3 c, float i) {
+        f.hud.push_back({hud_at(a.x + shift, a.y), hud_at(b.x + shift, b.y), c, i});
+    };
+    add({20, 30}, {150, 30}, {0.2f, 1.0f, 0.3f}, 1.0f);
+    add({40, 200}, {40, 60}, {1.0f, 0.2f, 0.2f}, 0.6f);
+    add({200, 100}, {300, 220}, {1.0f, 1.0f, 1.0f}, 0.02f);  // faint: only its glow's edge
+    add({250, 20}, {250, 20}, {0.1f, 1.0f, 0.1f}, 0.5f);     // a dot
+    add({0, 239}, {319, 239}, {0.1f, 1.0f, 0.1f}, 0.3f);     // bottom edge
+    add({319, 0}, {319, 120}, {0.1f, 1.0f, 0.1f}, 0.003f);   // right edge, very faint
+    add({100, 150}, {180, 110}, {0.1f, 1.0f, 0.1f}, 1.5f);
+    add({100, 110}, {180, 150}, {0.1f, 1.0f, 0.1f}, 1.5f);
+    return f;
+}
+
+struct Frames {
+    std::vector<std::uint8_t> sparse, dense;
+};
+
+// The same frames through two renderers that differ only in the composite.
+Frames render_both(bz::render::RenderSettings s, int frames) {
+    bz::scene::MeshLibrary meshes;
+    s.sparse_composite = true;
+    bz::render::Renderer sparse(s, kW, kH, bz::gl::TimingMethod::off);
+    s.sparse_composite = false;
+    bz::render::Renderer dense(s, kW, kH, bz::gl::TimingMethod::off);
+    for (int i = 0; i < frames; ++i) {
+        const auto f = scattered_lines(i / 60.0, 7.0f * static_cast<float>(i));
+        sparse.render(f, meshes, bz::render::Renderer::kOffscreen);
+        dense.render(f, meshes, bz::render::Renderer::kOffscreen);
+    }
+    return {sparse.read_color(), dense.read_color()};
+}
+
+void expect_same_picture(const Frames& f, const char* what) {
+    ASSERT_EQ(f.sparse.size(), f.dense.size());
+    int worst = 0;
+    std::size_t lit = 0;
+    for (std::size_t i = 0; i < f.dense.size(); ++i) {
+        worst = std::max(worst, std::abs(int{f.sparse[i]} - int{f.dense[i]}));
+        if (i % 4 != 3 && f.dense[i] > 0) ++lit;
+    }
+    EXPECT_LE(worst, 1) << what << ": the sparse composite differs from the dense one";
+    // The frame is mostly black, but not all of it: the comparison means something.
+    EXPECT_GT(lit, f.dense.size() / 100) << what;
+    EXPECT_LT(lit, f.dense.size() * 3 / 4) << what;
+}
+
+class SparseCompositeTest : public bz::test::GlTest {};
+
+}  // namespace
+
+TEST_F(SparseCompositeTest, ClassicBeamMatchesTheDenseComposite) {
+    expect_same_picture(render_both(bz::render::preset("balanced"), 1), "classic, balanced");
+    expect_same_picture(render_both(bz::render::preset("high"), 1), "classic, high (half-res bloom)");
+}
+
+TEST_F(SparseCompositeTest, MameBeamWithPhosphorAndOverlayMatchesTheDenseComposite) {
+    auto s = bz::render::preset("balanced");
+    s.beam = bz::render::beam_look("mame");
+    expect_same_picture(render_both(s, 4), "mame, moving lines on the phosphor");
+    s.beam.overlay = true;
+    expect_same_picture(render_both(s, 2), "mame with the overlay");
+}
+
+TEST_F(SparseCompositeTest, SizesTheBloomDoesNotDivideFallBackToTheDenseComposite) {
+    auto s = bz::render::preset("balanced");  // quarter-resolution bloom
+    bz::scene::MeshLibrary meshes;
+    const auto f = scattered_lines(0.0, 0.0f);
+    std::vector<std::uint8_t> pictures[2];
+    for (const bool sparse : {true, false}) {
+        s.sparse_composite = sparse;
+        bz::render::Renderer r(s, kW + 3, kH + 1, bz::gl::TimingMethod::off);
+        r.render(f, meshes, bz::render::Renderer::kOffscreen);
+        pictures[sparse ? 0 : 1] = r.read_color();
+    }
+    EXPECT_EQ(pictures[0], pictures[1]);
+}
