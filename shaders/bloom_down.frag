@@ -3,14 +3,25 @@
 // Bilinear fetches at texel corners average 2x2 texels each; `u_factor` (1, 2 or 4) picks how
 // many. With a threshold, only light above it glows (soft knee), so dim lines - a far floor
 // grating - stay lines on black instead of a haze.
+// With PHOSPHOR the first level glows from a phosphor of its own at the bloom resolution: the
+// brighter of this block of the beam image and last frame's block picture, decayed
+// (phosphor.glsl), which it stores for the next frame. A still picture glows exactly as
+// without the phosphor; a moving one's trail glows from blocks instead of pixels. (The
+// composite computes the exact picture per pixel; reading the full-resolution history here
+// too would double this pass's cost.)
+#ifdef PHOSPHOR
+#include "phosphor.glsl"
+uniform sampler2D u_history_box;  // last frame's block picture (rgb, a = age)
+layout(location = 2) out vec4 o_picture_box;
+#endif
 in vec2 v_uv;
 uniform sampler2D u_source;
 uniform int u_factor;
 uniform float u_threshold;  // peak-channel brightness where glow starts (0: everything glows)
 uniform float u_knee;       // half-width of the soft knee around the threshold
 layout(location = 0) out vec4 o_color;
-// The first level also marks where the picture holds any light at all (the sparse
-// composite's tiles.comp): the box average of non-negative texels is zero only if all are.
+// The first level also marks where the beam image holds any light at all (the sparse
+// composite's tiles.comp): a sum of filtered non-negative texels is zero only if all are.
 layout(location = 1) out vec4 o_lit;
 
 vec3 box(vec2 uv) {
@@ -37,5 +48,9 @@ vec3 above_threshold(vec3 c) {
 void main() {
     vec3 c = box(v_uv);
     o_lit = vec4(max(c.r, max(c.g, c.b)) > 0.0 ? 1.0 : 0.0);
+#ifdef PHOSPHOR
+    o_picture_box = phosphor_picture(c, texelFetch(u_history_box, ivec2(gl_FragCoord.xy), 0));
+    c = o_picture_box.rgb;
+#endif
     o_color = vec4(u_threshold > 0.0 ? above_threshold(c) : c, 1.0);
 }

@@ -6,7 +6,18 @@
 // made of two square roots (native instructions) instead of pow().
 // It draws either one full-screen triangle or, sparse, one quad per lit screen tile
 // (composite_tiles.vert); positions come from gl_FragCoord so both give the same pixels.
+// With PHOSPHOR it also advances the phosphor: u_lines is this frame's beam image, the
+// picture is max(beam, decayed history) (phosphor.glsl), stored for the next frame.
 #include "bloom_encoding.glsl"
+#ifdef PHOSPHOR
+#include "phosphor.glsl"
+#include "screen_tiles.glsl"
+uniform sampler2D u_history;  // the previous picture
+layout(rgba16f, binding = 0) uniform writeonly image2D u_picture_out;
+// Per screen tile: the stored picture holds light there (cleared before; the sparse
+// composite's tiles.comp reads it for the next two frames).
+layout(r8ui, binding = 1) uniform writeonly uimage2D u_picture_lit;
+#endif
 
 uniform sampler2D u_lines;
 uniform sampler2D u_bloom;  // encoded 8-bit (bloom_encoding.glsl)
@@ -32,7 +43,14 @@ vec3 overlay(vec3 hdr, vec2 uv) {
 
 void main() {
     vec2 uv = gl_FragCoord.xy * u_inv_screen;
-    vec3 hdr = texelFetch(u_lines, ivec2(gl_FragCoord.xy), 0).rgb;
+    ivec2 px = ivec2(gl_FragCoord.xy);
+    vec3 hdr = texelFetch(u_lines, px, 0).rgb;
+#ifdef PHOSPHOR
+    vec4 picture = phosphor_picture(hdr, texelFetch(u_history, px, 0));
+    imageStore(u_picture_out, px, picture);
+    if (phosphor_peak(picture.rgb) > 0.0) imageStore(u_picture_lit, px / kTileSize, uvec4(1u));
+    hdr = picture.rgb;
+#endif
     if (u_bloom_strength > 0.0) hdr += decode_bloom(texture(u_bloom, uv).rgb) * u_bloom_strength;
     hdr *= u_exposure;
     if (u_overlay) hdr = overlay(hdr, uv);

@@ -46,20 +46,26 @@ void edge_quads_mask(const PassContext& ctx) { pass_edge_quads(ctx, true); }
 void sketch_strokes(const PassContext& ctx) { pass_sketch(ctx, false); }
 void sketch_mask(const PassContext& ctx) { pass_sketch(ctx, true); }
 
-// The beam passes hand the picture on (FramePicture): phosphor may replace the lines target
-// with its persistence texture, bloom and composite read whichever it is.
-void phosphor(const PassContext& ctx) {
-    ctx.picture->texture = &pass_phosphor(ctx, ctx.targets.lines, ctx.picture->dt_seconds);
+// The beam passes hand the picture on (FramePicture). With the phosphor on, bloom and
+// composite take this frame's phosphor step: the composite stores the new picture, which then
+// replaces the lines target as the frame's picture.
+const PhosphorStep* phosphor(const PassContext& ctx) {
+    FramePicture& picture = *ctx.picture;
+    if (ctx.settings.beam.phosphor == PhosphorDecay::off) return nullptr;
+    if (!picture.phosphor) picture.phosphor = phosphor_step(ctx, picture.dt_seconds);
+    return &*picture.phosphor;
 }
 
 void bloom(const PassContext& ctx) {
-    pass_bloom(ctx, *ctx.picture->texture);
+    pass_bloom(ctx, *ctx.picture->texture, phosphor(ctx));
     ctx.picture->bloom = true;
 }
 
 void composite(const PassContext& ctx) {
+    const PhosphorStep* step = phosphor(ctx);
     pass_composite(ctx, *ctx.picture->texture, ctx.picture->bloom, ctx.target_fbo, ctx.targets.width,
-                   ctx.targets.height);
+                   ctx.targets.height, step);
+    if (step) ctx.picture->texture = &finish_phosphor(ctx, *step);
 }
 
 void outline_baseline(const PassContext& ctx) { pass_image_outline(ctx, false); }
@@ -100,7 +106,6 @@ std::vector<FramePass> frame_passes(const StyleDef& style, const RenderSettings&
             list.push_back({"lines", lines_counted});
         }
         list.push_back({"hud", pass_hud});
-        if (settings.beam.phosphor != PhosphorDecay::off) list.push_back({"phosphor", phosphor});
         if (style.bloom && settings.bloom_strength > 0.0f) {
             list.push_back({"bloom", bloom});
             if (settings.sparse_composite) list.push_back({"tiles", pass_tiles});

@@ -4,23 +4,32 @@ namespace bz::render {
 
 namespace {
 
-void set_threshold(const gl::Program& p, const BeamSettings& b) {
-    p.set("u_threshold", b.bloom_threshold);
-    p.set("u_knee", b.bloom_knee);
+// The first downsample, from the full-resolution picture into the first level, also marking
+// the lit blocks (Targets::lit); with the phosphor, it glows from its own block phosphor.
+void first_downsample(const PassContext& ctx, const gl::Texture2D& source, const PhosphorStep* phosphor,
+                      float threshold) {
+    const Targets& t = ctx.targets;
+    (phosphor ? t.first_down_phosphor_fbo[static_cast<std::size_t>(phosphor->to)] : t.first_down_fbo).bind();
+    const gl::Program& down = phosphor ? ctx.programs.bloom_down_phosphor : ctx.programs.bloom_down;
+    down.use();
+    down.set("u_source", 0);
+    down.set("u_factor", static_cast<int>(ctx.settings.bloom_resolution));
+    down.set("u_threshold", threshold);
+    down.set("u_knee", ctx.settings.beam.bloom_knee);
+    source.bind(0);
+    if (phosphor) {
+        down.set("u_history_box", 1);
+        set_phosphor_uniforms(down, *phosphor);
+        t.block_picture[static_cast<std::size_t>(1 - phosphor->to)].bind(1);
+    }
+    glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
 // Downsample to the bloom resolution, then a separable linear-sampled Gaussian: horizontal
 // into bloom_b, vertical into bloom_out, encoded in 8 bits for the composite's cheap fetch.
-void gaussian_bloom(const PassContext& ctx, const gl::Texture2D& source) {
+void gaussian_bloom(const PassContext& ctx, const gl::Texture2D& source, const PhosphorStep* phosphor) {
     Targets& t = ctx.targets;
-    t.bloom_a_fbo.bind();
-    const gl::Program& down = ctx.programs.bloom_down;
-    down.use();
-    down.set("u_source", 0);
-    down.set("u_factor", static_cast<int>(ctx.settings.bloom_resolution));
-    set_threshold(down, ctx.settings.beam);
-    source.bind(0);
-    glDrawArrays(GL_TRIANGLES, 0, 3);
+    first_downsample(ctx, source, phosphor, ctx.settings.beam.bloom_threshold);
 
     const gl::Program& blur = ctx.programs.bloom_blur;  // kernel baked in (programs.cpp)
     blur.use();
@@ -43,20 +52,21 @@ void gaussian_bloom(const PassContext& ctx, const gl::Texture2D& source) {
 // MAME's bloom: a chain of levels, each half the size of the one before, summed with a
 // weight per level (BeamSettings::mip_weights). Wide, soft glow for little work: the levels
 // past the first cost a fraction of one full-resolution pass together.
-void mip_chain_bloom(const PassContext& ctx, const gl::Texture2D& source) {
+void mip_chain_bloom(const PassContext& ctx, const gl::Texture2D& source, const PhosphorStep* phosphor) {
     Targets& t = ctx.targets;
     const auto& w = ctx.settings.beam.mip_weights;
     const std::size_t n = t.bloom_mips.size();
+    // Only the first level filters by brightness; the rest downsample what it kept.
+    first_downsample(ctx, source, phosphor, ctx.settings.beam.bloom_threshold);
     const gl::Program& down = ctx.programs.bloom_down;
     down.use();
     down.set("u_source", 0);
-    for (std::size_t k = 0; k < n; ++k) {
+    down.set("u_factor", 2);
+    down.set("u_threshold", 0.0f);
+    down.set("u_knee", ctx.settings.beam.bloom_knee);
+    for (std::size_t k = 1; k < n; ++k) {
         t.bloom_mip_fbos[k].bind();
-        down.set("u_factor", k == 0 ? static_cast<int>(ctx.settings.bloom_resolution) : 2);
-        // Only the first level filters by brightness; the rest downsample what it kept.
-        down.set("u_threshold", k == 0 ? ctx.settings.beam.bloom_threshold : 0.0f);
-        down.set("u_knee", ctx.settings.beam.bloom_knee);
-        (k == 0 ? source : t.bloom_mips[k - 1]).bind(0);
+        t.bloom_mips[k - 1].bind(0);
         glDrawArrays(GL_TRIANGLES, 0, 3);
     }
 
@@ -94,13 +104,13 @@ float mip_weight(const std::vector<float>& weights, std::size_t level) {
     return level < weights.size() ? std::max(weights[level], 1e-4f) : 1e-4f;
 }
 
-void pass_bloom(const PassContext& ctx, const gl::Texture2D& source) {
+void pass_bloom(const PassContext& ctx, const gl::Texture2D& source, const PhosphorStep* phosphor) {
     gl::apply(gl::PipelineState{});
     ctx.empty_vao.bind();
     if (ctx.settings.beam.bloom == BloomKind::mip_chain && !ctx.targets.bloom_mips.empty()) {
-        mip_chain_bloom(ctx, source);
+        mip_chain_bloom(ctx, source, phosphor);
     } else {
-        gaussian_bloom(ctx, source);
+        gaussian_bloom(ctx, source, phosphor);
     }
 }
 

@@ -7,14 +7,17 @@ namespace bz::render {
 // With the bloom's lit tiles (pass_tiles) it is sparse: the target is cleared to black, which
 // is what an unlit pixel composites to exactly, and only the lit tiles are shaded; on
 // llvmpipe a full-screen pass costs per pixel even where it writes black.
+// With the phosphor it also stores the new picture (phosphor.glsl) into the history texture.
 void pass_composite(const PassContext& ctx, const gl::Texture2D& picture, bool bloom, GLuint target_fbo,
-                    int width, int height) {
+                    int width, int height, const PhosphorStep* phosphor) {
     const Targets& t = ctx.targets;
     const bool sparse = bloom && t.tiles_valid && ctx.settings.sparse_composite;
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, target_fbo);
     glViewport(0, 0, width, height);
     gl::apply(gl::PipelineState{});
-    const gl::Program& p = sparse ? ctx.programs.composite_tiles : ctx.programs.composite;
+    const Programs& programs = ctx.programs;
+    const gl::Program& p = sparse ? (phosphor ? programs.composite_tiles_phosphor : programs.composite_tiles)
+                                  : (phosphor ? programs.composite_phosphor : programs.composite);
     p.use();
     p.set("u_lines", 0);
     p.set("u_bloom", 1);
@@ -24,17 +27,29 @@ void pass_composite(const PassContext& ctx, const gl::Texture2D& picture, bool b
     p.set("u_inv_screen", glm::vec2(1.0f / static_cast<float>(width), 1.0f / static_cast<float>(height)));
     picture.bind(0);
     t.bloom_out.bind(1);
+    if (phosphor) {
+        const auto to = static_cast<std::size_t>(phosphor->to);
+        p.set("u_history", 3);
+        set_phosphor_uniforms(p, *phosphor);
+        phosphor->history->bind(3);
+        glBindImageTexture(0, t.phosphor[to].id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+        glClearTexImage(t.picture_lit[to].id(), 0, GL_RED_INTEGER, GL_UNSIGNED_BYTE, nullptr);
+        glBindImageTexture(1, t.picture_lit[to].id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R8UI);
+    }
     ctx.empty_vao.bind();
     if (!sparse) {
         glDrawArrays(GL_TRIANGLES, 0, 3);
-        return;
+    } else {
+        glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT);
+        const gl::Texture2D& tiles = t.tiles;
+        p.set("u_tiles", 2);
+        p.set("u_screen", glm::ivec2(width, height));
+        tiles.bind(2);
+        glDrawArraysInstanced(GL_TRIANGLES, 0, 6, tiles.width() * tiles.height());
     }
-    glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
-    glClear(GL_COLOR_BUFFER_BIT);
-    p.set("u_tiles", 2);
-    p.set("u_screen", glm::ivec2(width, height));
-    t.tiles.bind(2);
-    glDrawArraysInstanced(GL_TRIANGLES, 0, 6, t.tiles.width() * t.tiles.height());
+    // The stored picture and its lit tiles are read as textures next frame, and read back by tests.
+    if (phosphor) glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
 }
 
 }  // namespace bz::render

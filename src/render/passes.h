@@ -2,6 +2,7 @@
 // The passes of one frame, one file each. Which passes a frame runs, in which order, is the
 // style's list (frame_passes.h). Each states the whole GL state it needs (gl::apply), so
 // order is the only coupling.
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -16,12 +17,26 @@
 
 namespace bz::render {
 
+// One frame's step of phosphor persistence (pass_phosphor.cpp): the bloom's first downsample
+// glows from it and the composite computes and stores the new picture.
+struct PhosphorStep {
+    const gl::Texture2D* history = nullptr;  // the previous picture
+    int to = 0;                              // the history texture the new picture goes into
+    bool power_law = false;
+    float dt = 0.0f;          // seconds, capped
+    float exp_factor = 1.0f;  // exponential: exp(-dt / tau)
+    float t0_inv = 0.0f;      // power law: 1 / t0
+    float exponent = 1.0f;    // power law: p
+};
+
 // What the beam passes hand on within one frame: the picture bloom and composite read (the
-// lines target, or a phosphor texture after pass_phosphor), and whether bloom ran.
+// lines target; after the composite with the phosphor on, the new phosphor picture), the
+// phosphor step when it is on, and whether bloom ran.
 struct FramePicture {
     const gl::Texture2D* texture = nullptr;
     double dt_seconds = 0.0;  // game time since the last picture (phosphor decay)
     bool bloom = false;
+    std::optional<PhosphorStep> phosphor;
 };
 
 struct PassContext {
@@ -76,17 +91,26 @@ void pass_edges(const PassContext& ctx);
 void pass_edge_quads(const PassContext& ctx, bool mask_mode);
 void pass_hud(const PassContext& ctx);
 // Beam passes (the vector-monitor look, BeamSettings); each reads the image it is given, so a
-// style may skip any of them. pass_phosphor returns the picture that bloom and composite read.
-const gl::Texture2D& pass_phosphor(const PassContext& ctx, const gl::Texture2D& beam, double dt_seconds);
-void pass_bloom(const PassContext& ctx, const gl::Texture2D& source);
+// style may skip any of them. Phosphor persistence is no pass of its own: on llvmpipe a
+// full-screen pass costs per pixel, so the composite computes the new picture where it
+// shades anyway and stores it, and the bloom's first downsample glows from it.
+// phosphor_step sets up one frame's step; set_phosphor_uniforms hands it to a program
+// (shaders/phosphor.glsl); finish_phosphor records the composite's write and returns the
+// new picture.
+PhosphorStep phosphor_step(const PassContext& ctx, double dt_seconds);
+void set_phosphor_uniforms(const gl::Program& program, const PhosphorStep& step);
+const gl::Texture2D& finish_phosphor(const PassContext& ctx, const PhosphorStep& step);
+void pass_bloom(const PassContext& ctx, const gl::Texture2D& source, const PhosphorStep* phosphor = nullptr);
 // The weight of one level of the bloom chain (never zero: the chain divides by it).
 float mip_weight(const std::vector<float>& weights, std::size_t level);
 // The screen tiles the sparse composite shades (after bloom; needs Targets::tiles).
 void pass_tiles(const PassContext& ctx);
 // `bloom`: false draws the picture without glow (bloom_out is not read). With bloom and the
 // tiles of pass_tiles it shades only the lit tiles (RenderSettings::sparse_composite).
+// With `phosphor`, `picture` is this frame's beam image and the composite also stores the new
+// phosphor picture.
 void pass_composite(const PassContext& ctx, const gl::Texture2D& picture, bool bloom, GLuint target_fbo,
-                    int width, int height);
+                    int width, int height, const PhosphorStep* phosphor = nullptr);
 // The image-space outline baseline (LineMethod::image_outline), in place of prepass + lines.
 void pass_outline_prepass(const PassContext& ctx);
 void pass_image_outline(const PassContext& ctx, bool mask_mode);

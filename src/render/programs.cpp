@@ -51,12 +51,17 @@ Programs load_programs(const RenderSettings& settings) {
     p.composite = gl::Program({stage(GL_VERTEX_SHADER, "fullscreen.vert"),
                                stage(GL_FRAGMENT_SHADER, "composite.frag")});
     const std::string tile_size = "TILE_SIZE " + std::to_string(kScreenTileSize);
-    p.composite_tiles = gl::Program({stage(GL_VERTEX_SHADER, "composite_tiles.vert"),
-                                     stage(GL_FRAGMENT_SHADER, "composite.frag")},
-                                    {tile_size});
+    const auto composite = [&](const char* vertex, std::vector<std::string> defines) {
+        return gl::Program({stage(GL_VERTEX_SHADER, vertex), stage(GL_FRAGMENT_SHADER, "composite.frag")},
+                           std::move(defines));
+    };
+    p.composite_tiles = composite("composite_tiles.vert", {tile_size});
+    p.composite_phosphor = composite("fullscreen.vert", {tile_size, "PHOSPHOR 1"});
+    p.composite_tiles_phosphor = composite("composite_tiles.vert", {tile_size, "PHOSPHOR 1"});
+    p.bloom_down_phosphor = gl::Program(
+        {stage(GL_VERTEX_SHADER, "fullscreen.vert"), stage(GL_FRAGMENT_SHADER, "bloom_down.frag")}, {"PHOSPHOR 1"});
     p.tiles = gl::Program({stage(GL_COMPUTE_SHADER, "tiles.comp")}, {tile_size});
     p.bloom_up = gl::Program({stage(GL_VERTEX_SHADER, "fullscreen.vert"), stage(GL_FRAGMENT_SHADER, "bloom_up.frag")});
-    p.phosphor = gl::Program({stage(GL_VERTEX_SHADER, "fullscreen.vert"), stage(GL_FRAGMENT_SHADER, "phosphor.frag")});
     p.outline_prepass = gl::Program({stage(GL_VERTEX_SHADER, "outline_prepass.vert"),
                                      stage(GL_FRAGMENT_SHADER, "outline_prepass.frag")});
     p.image_outline = gl::Program({stage(GL_VERTEX_SHADER, "fullscreen.vert"),

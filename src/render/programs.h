@@ -19,9 +19,11 @@ struct Programs {
     gl::Program bloom_blur;
     gl::Program composite;
     gl::Program composite_tiles;  // the same fragment stage over the lit screen tiles only
+    gl::Program composite_phosphor;        // ... both advancing the phosphor (PHOSPHOR)
+    gl::Program composite_tiles_phosphor;
+    gl::Program bloom_down_phosphor;       // the first downsample, of the phosphor's picture
     gl::Program tiles;            // tiles.comp: which screen tiles are lit
     gl::Program bloom_up;   // one step up the bloom chain (BloomKind::mip_chain)
-    gl::Program phosphor;   // phosphor persistence
     gl::Program outline_prepass;     // image-space baseline: depth + face normals
     gl::Program image_outline;       // ... Sobel into the lines target
     gl::Program image_outline_mask;  // ... Sobel into the mask

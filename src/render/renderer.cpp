@@ -169,7 +169,7 @@ void Renderer::render(const scene::FrameList& frame, const scene::MeshLibrary& m
     const GLuint target = target_fbo == kOffscreen ? m.targets.output_fbo.id() : target_fbo;
     m.last_target = target;
     // The first picture after new targets has no past: its history is black either way.
-    FramePicture picture{&m.targets.lines, m.last_picture ? frame.time_s - m.last_time_s : 0.0, false};
+    FramePicture picture{&m.targets.lines, m.last_picture ? frame.time_s - m.last_time_s : 0.0, false, {}};
     const PassContext ctx = m.context(meshes, batches, cam, style, hud_count, target, frame, &picture);
 
     // The frame is the style's list of passes (frame_passes.cpp), each timed under its name.

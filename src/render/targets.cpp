@@ -17,21 +17,15 @@ Targets make_targets(int width, int height, const RenderSettings& s) {
     t.bloom_a = gl::Texture2D(bw, bh, GL_RGBA16F, gl::Filter::linear);
     t.bloom_b = gl::Texture2D(bw, bh, GL_RGBA16F, gl::Filter::linear);
     t.bloom_out = gl::Texture2D(bw, bh, GL_RGBA8, gl::Filter::linear);
-    const bool sparse = width % f == 0 && height % f == 0;
-    if (sparse) {
-        t.lit = gl::Texture2D(bw, bh, GL_R8, gl::Filter::nearest);
-        t.tiles = gl::Texture2D((width + kScreenTileSize - 1) / kScreenTileSize,
-                                (height + kScreenTileSize - 1) / kScreenTileSize, GL_R8UI, gl::Filter::nearest);
-    }
-    // The first downsample's framebuffer also marks the lit blocks, when there is a lit image.
-    const auto first_level = [&](const gl::Texture2D& level) {
-        return sparse ? std::vector<const gl::Texture2D*>{&level, &t.lit} : std::vector<const gl::Texture2D*>{&level};
-    };
+    const int tiles_x = (width + kScreenTileSize - 1) / kScreenTileSize;
+    const int tiles_y = (height + kScreenTileSize - 1) / kScreenTileSize;
+    t.lit = gl::Texture2D(bw, bh, GL_R8, gl::Filter::nearest);
+    if (width % f == 0 && height % f == 0) t.tiles = gl::Texture2D(tiles_x, tiles_y, GL_R8UI, gl::Filter::nearest);
     t.mask = gl::Texture2D(width, height, GL_R8, gl::Filter::nearest);
     t.output = gl::Texture2D(width, height, GL_RGBA8, gl::Filter::nearest);
     t.depth_fbo = gl::Framebuffer({}, &t.depth);
     t.lines_fbo = gl::Framebuffer({&t.lines}, nullptr);
-    t.bloom_a_fbo = gl::Framebuffer(first_level(t.bloom_a), nullptr);
+    t.bloom_a_fbo = gl::Framebuffer({&t.bloom_a}, nullptr);
     t.bloom_b_fbo = gl::Framebuffer({&t.bloom_b}, nullptr);
     t.bloom_out_fbo = gl::Framebuffer({&t.bloom_out}, nullptr);
     t.mask_fbo = gl::Framebuffer({&t.mask}, nullptr);
@@ -53,15 +47,21 @@ Targets make_targets(int width, int height, const RenderSettings& s) {
             lw = std::max(1, lw / 2);
             lh = std::max(1, lh / 2);
         }
-        for (const gl::Texture2D& level : t.bloom_mips) {
-            t.bloom_mip_fbos.emplace_back(t.bloom_mip_fbos.empty() ? first_level(level) : std::vector{&level}, nullptr);
-        }
+        for (const gl::Texture2D& level : t.bloom_mips) t.bloom_mip_fbos.emplace_back(std::vector{&level}, nullptr);
     }
+    // The bloom's first level: bloom_a, or the chain's first.
+    const gl::Texture2D& first_level = t.bloom_mips.empty() ? t.bloom_a : t.bloom_mips[0];
+    t.first_down_fbo = gl::Framebuffer({&first_level, &t.lit}, nullptr);
     if (s.beam.phosphor != PhosphorDecay::off) {
-        for (int i = 0; i < 2; ++i) {
+        for (std::size_t i = 0; i < 2; ++i) {
+            // Everything starts black, with no tile lit.
             t.phosphor[i] = gl::Texture2D(width, height, GL_RGBA16F, gl::Filter::linear);
-            glClearTexImage(t.phosphor[i].id(), 0, GL_RGBA, GL_FLOAT, nullptr);  // starts black
-            t.phosphor_fbo[i] = gl::Framebuffer({&t.phosphor[i]}, nullptr);
+            glClearTexImage(t.phosphor[i].id(), 0, GL_RGBA, GL_FLOAT, nullptr);
+            t.picture_lit[i] = gl::Texture2D(tiles_x, tiles_y, GL_R8UI, gl::Filter::nearest);
+            glClearTexImage(t.picture_lit[i].id(), 0, GL_RED_INTEGER, GL_UNSIGNED_BYTE, nullptr);
+            t.block_picture[i] = gl::Texture2D(bw, bh, GL_RGBA16F, gl::Filter::nearest);
+            glClearTexImage(t.block_picture[i].id(), 0, GL_RGBA, GL_FLOAT, nullptr);
+            t.first_down_phosphor_fbo[i] = gl::Framebuffer({&first_level, &t.lit, &t.block_picture[i]}, nullptr);
         }
     }
     if (s.method == LineMethod::image_outline) {

@@ -38,17 +38,25 @@ struct Targets {
     std::vector<gl::Texture2D> bloom_mips;
     std::vector<gl::Framebuffer> bloom_mip_fbos;
     // Phosphor persistence: the picture shown last frame and the one drawn now, swapped each
-    // frame (RGBA16F, alpha = age for the power law). Only when BeamSettings::phosphor is on.
+    // frame (RGBA16F, alpha = age for the power law), the new one written by the composite.
+    // Only when BeamSettings::phosphor is on.
     std::array<gl::Texture2D, 2> phosphor;
-    std::array<gl::Framebuffer, 2> phosphor_fbo;
     int phosphor_front = 0;  // which one holds the last picture
-    // Sparse composite (pass_tiles.cpp): where the picture holds light, one R8 texel per bloom
-    // texel (written by the bloom's first downsample), and the lit screen tiles (R8UI, one
-    // texel per kScreenTileSize square). Only where the bloom resolution divides the size, so
-    // that the downsample's blocks cover every pixel exactly.
+    // Per history texture: which screen tiles of it hold light (R8UI, marked by the composite
+    // that stores it), and the bloom's own phosphor at its resolution (RGBA16F, a = age),
+    // with the framebuffer of the first downsample that writes it.
+    std::array<gl::Texture2D, 2> picture_lit;
+    std::array<gl::Texture2D, 2> block_picture;
+    std::array<gl::Framebuffer, 2> first_down_phosphor_fbo;
+    // Sparse composite (pass_tiles.cpp): where the beam image holds light, one R8 texel per
+    // bloom texel (written by the bloom's first downsample), and the screen tiles to shade
+    // (R8UI, one texel per kScreenTileSize square). Tiles only where the bloom resolution
+    // divides the size, so that the downsample's blocks cover every pixel exactly.
     gl::Texture2D lit;
     gl::Texture2D tiles;
-    bool tiles_valid = false;  // tiles describe the current bloom (pass_tiles ran on it)
+    bool tiles_valid = false;  // they describe the current bloom (pass_tiles ran on it)
+    // The bloom's first level and `lit` (and, with the phosphor, block_picture[i]).
+    gl::Framebuffer first_down_fbo;
 };
 
 Targets make_targets(int width, int height, const RenderSettings& settings);

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <vector>
 
@@ -32,6 +33,12 @@ bz::scene::FrameList scattered_lines(double time_s, float shift) {
     add({319, 0}, {319, 120}, {0.1f, 1.0f, 0.1f}, 0.003f);   // right edge, very faint
     add({100, 150}, {180, 110}, {0.1f, 1.0f, 0.1f}, 1.5f);
     add({100, 110}, {180, 150}, {0.1f, 1.0f, 0.1f}, 1.5f);
+    return f;
+}
+
+bz::scene::FrameList empty_frame(double time_s) {
+    bz::scene::FrameList f;
+    f.time_s = time_s;
     return f;
 }
 
@@ -83,6 +90,54 @@ TEST_F(SparseCompositeTest, MameBeamWithPhosphorAndOverlayMatchesTheDenseComposi
     expect_same_picture(render_both(s, 4), "mame, moving lines on the phosphor");
     s.beam.overlay = true;
     expect_same_picture(render_both(s, 2), "mame with the overlay");
+}
+
+// The phosphor is computed by the composite where it shades: with the sparse composite, a
+// trail must fade and vanish where nothing is lit any more, in the tiles the lines left, and
+// the stored picture must equal the dense composite's every frame.
+TEST_F(SparseCompositeTest, PhosphorTrailsMatchTheDenseCompositeWhileLinesJumpAround) {
+    auto s = bz::render::preset("balanced");
+    s.beam = bz::render::beam_look("mame");
+    s.beam.persistence_ms = 30.0f;
+    bz::scene::MeshLibrary meshes;
+    s.sparse_composite = true;
+    bz::render::Renderer sparse(s, kW, kH, bz::gl::TimingMethod::off);
+    s.sparse_composite = false;
+    bz::render::Renderer dense(s, kW, kH, bz::gl::TimingMethod::off);
+    for (int i = 0; i < 12; ++i) {
+        // Two frames here, two frames 100 px away, then nothing for the last four.
+        const auto f = i < 8 ? scattered_lines(i / 60.0, (i / 2) % 2 == 0 ? 0.0f : 100.0f)
+                             : empty_frame(i / 60.0);
+        sparse.render(f, meshes, bz::render::Renderer::kOffscreen);
+        dense.render(f, meshes, bz::render::Renderer::kOffscreen);
+        EXPECT_EQ(sparse.read_picture_hdr(), dense.read_picture_hdr()) << "phosphor picture, frame " << i;
+        const auto a = sparse.read_color(), b = dense.read_color();
+        int worst = 0;
+        for (std::size_t k = 0; k < a.size(); ++k) worst = std::max(worst, std::abs(int{a[k]} - int{b[k]}));
+        EXPECT_LE(worst, 1) << "frame " << i;
+    }
+}
+
+TEST_F(SparseCompositeTest, PhosphorWithBloomDecaysAsExpOfElapsedTime) {
+    auto s = bz::render::preset("balanced");
+    s.beam.phosphor = bz::render::PhosphorDecay::exponential;
+    s.beam.persistence_ms = 100.0f;
+    bz::scene::MeshLibrary meshes;
+    for (const double fps : {30.0, 144.0}) {
+        bz::render::Renderer r(s, kW, kH, bz::gl::TimingMethod::off);
+        bz::scene::FrameList lit;
+        lit.hud.push_back({hud_at(60, 120), hud_at(260, 120), {0.0f, 1.0f, 0.0f}, 1.0f});
+        r.render(lit, meshes, bz::render::Renderer::kOffscreen);
+        const std::size_t centre = (static_cast<std::size_t>(120) * kW + 160) * 4 + 1;
+        const float first = r.read_picture_hdr()[centre];
+        ASSERT_GT(first, 0.5f);
+        const int frames = static_cast<int>(std::lround(fps / 6.0));  // 1/6 s
+        for (int i = 1; i <= frames; ++i) {
+            r.render(empty_frame(i / fps), meshes, bz::render::Renderer::kOffscreen);
+        }
+        const double left = r.read_picture_hdr()[centre] / static_cast<double>(first);
+        EXPECT_NEAR(left / std::exp(-(1.0 / 6.0) / 0.1), 1.0, 0.01) << fps << " fps";
+    }
 }
 
 TEST_F(SparseCompositeTest, SizesTheBloomDoesNotDivideFallBackToTheDenseComposite) {
