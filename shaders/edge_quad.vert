@@ -5,9 +5,11 @@
 // fragment stage - spine test and beam - is shared by both line methods.
 #include "edge_record.glsl"
 #include "beam_width.glsl"
+#include "spine_samples.glsl"
 
 layout(std430, binding = EDGE_RECORDS_BINDING) readonly buffer Records { EdgeRecord records[]; };
 layout(std430, binding = 1) readonly buffer Instances { vec4 instance_data[]; };
+layout(std430, binding = SPINE_SPANS_BINDING) readonly buffer Spans { uvec4 spans[]; };
 
 uniform uint u_capacity;  // records the buffer holds (the draw count may run past it)
 uniform mat4 u_proj;
@@ -25,6 +27,9 @@ flat out vec3 g_face_neg;
 flat out vec2 g_nudge;
 flat out vec3 g_color;
 flat out vec3 g_beam;  // half-width (px), gain, softness (beam_width.glsl)
+flat out uvec4 g_samples;  // first stored sample, sample count (0: test here), sampled stretch
+flat out vec2 g_visible_t; // the visible stretch of the spine (t), with g_samples
+flat out uint g_lookup;    // 1: the stretch has hidden samples inside, look each one up
 
 #include "edge_geometry.glsl"
 
@@ -55,6 +60,30 @@ void main() {
     BeamShape beam = beam_shape(instance_data[instance * 6u + 5u].z, length(s1 - s0),
                                 (instance * 0x01000193u) ^ r.ids.z);
     g_beam = vec3(beam.half_width, beam.gain, beam.softness);
-    g_pixel = quad_corner(s0, s1, dir, nrm, beam.half_width, kCorner[uint(gl_VertexID) % EDGE_VERTICES]);
+    g_samples = uvec4(r.vertices.zw, 0u, 0u);
+    g_visible_t = vec2(-1.0, 2.0);
+    g_lookup = 0u;
+    // With spine samples the quad covers only the visible stretch: from half a sample before
+    // the first visible sample to half a sample after the last, where the look-up would turn
+    // hidden. A wholly hidden edge draws nothing; a stretch without hidden samples inside
+    // needs no look-ups, only the stretch's ends (lines.frag).
+    vec2 q0 = s0, q1 = s1;
+    if (g_samples.y > 0u) {
+        uvec4 span = spans[2u * index];
+        uint visible_n = spans[2u * index + 1u].x;
+        g_samples.zw = span.xy;
+        if (span.z > span.w) {
+            gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
+            return;
+        }
+        g_lookup = visible_n < span.w - span.z + 1u ? 1u : 0u;
+        if (g_samples.y > 1u) {
+            float steps = float(g_samples.y - 1u);
+            g_visible_t = vec2((float(span.z) - 0.5) / steps, (float(span.w) + 0.5) / steps);
+            q0 = mix(s0, s1, max(g_visible_t.x, 0.0));
+            q1 = mix(s0, s1, min(g_visible_t.y, 1.0));
+        }
+    }
+    g_pixel = quad_corner(q0, q1, dir, nrm, beam.half_width, kCorner[uint(gl_VertexID) % EDGE_VERTICES]);
     gl_Position = vec4(g_pixel / u_viewport * 2.0 - 1.0, 0.0, 1.0);
 }
