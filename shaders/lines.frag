@@ -15,41 +15,10 @@ flat in vec2 g_nudge;
 flat in vec3 g_color;
 flat in vec3 g_beam;  // half-width (px), gain, softness (beam_width.glsl)
 
-#ifdef SPINE_SAMPLES
-// LineMethod::compute: the spine test was run once per spine sample (spine_visibility.comp).
-#include "edge_record.glsl"
-#include "spine_samples.glsl"
-flat in uvec4 g_samples;  // first stored sample, count (0: no samples, test here), sampled stretch
-flat in vec2 g_visible_t; // the visible stretch (t): outside it every sample is hidden
-flat in uint g_lookup;    // 1: hidden samples inside the stretch too
-layout(std430, binding = SPINE_SAMPLES_BINDING) readonly buffer Samples { uint spine_samples[]; };
-#endif
-
-// Whether the spine point at parameter t is visible.
-bool spine_point_visible(float t, vec2 spine, float line_inv) {
-#ifdef SPINE_SAMPLES
-    if (g_samples.y > 0u) {
-        if (t < g_visible_t.x || t >= g_visible_t.y) return false;
-        if (g_lookup == 0u) return true;
-        uint k = clamp(spine_sample_index(t, g_samples.y), g_samples.z, g_samples.w);
-        return spine_samples[g_samples.x + (k - g_samples.z)] != 0u;
-    }
-#endif
-    return spine_visible(spine, line_inv, g_edge_plane, g_face_pos, g_face_neg, g_nudge);
-}
-
 layout(location = 0) out vec4 o_color;
 
 #ifdef MASK_MODE
-// True when segment a-b passes through the unit pixel square centred on c
-// (separating axes: x, y and the segment's normal).
-bool crosses_pixel(vec2 c, vec2 a, vec2 b) {
-    vec2 lo = min(a, b), hi = max(a, b);
-    if (hi.x < c.x - 0.5 || lo.x >= c.x + 0.5 || hi.y < c.y - 0.5 || lo.y >= c.y + 0.5) return false;
-    vec2 d = b - a;
-    vec2 n = vec2(-d.y, d.x);
-    return abs(dot(n, c - a)) <= 0.5 * (abs(n.x) + abs(n.y));
-}
+#include "pixel_cross.glsl"
 #endif
 
 void main() {
@@ -62,12 +31,12 @@ void main() {
     float line_inv = mix(g_inv_depth.x, g_inv_depth.y, t);  // 1/depth is affine on screen
 #ifdef MASK_MODE
     if (!crosses_pixel(p, g_p0, g_p1)) discard;
-    if (!spine_point_visible(t, spine, line_inv)) discard;
+    if (!spine_visible(spine, line_inv, g_edge_plane, g_face_pos, g_face_neg, g_nudge)) discard;
     o_color = vec4(1.0);
 #else
     float dist = distance(p, spine);
     if (dist >= g_beam.x) discard;
-    if (!spine_point_visible(t, spine, line_inv)) discard;
+    if (!spine_visible(spine, line_inv, g_edge_plane, g_face_pos, g_face_neg, g_nudge)) discard;
     o_color = vec4(g_color * (g_beam.y * beam_profile(dist, g_beam.x, g_beam.z)), 1.0);
 #endif
 }
