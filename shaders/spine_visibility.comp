@@ -7,7 +7,9 @@
 #include "edge_record.glsl"
 #include "spine_samples.glsl"
 
-layout(local_size_x = 32) in;
+// Eight invocations per record: one SIMD vector on llvmpipe, so a short edge (most of a dense
+// mesh's) wastes few lanes; a long one loops (pass_spine_visibility.cpp has the measurements).
+layout(local_size_x = 8) in;
 
 layout(std430, binding = EDGE_RECORDS_BINDING) readonly buffer Records { EdgeRecord records[]; };
 layout(std430, binding = EDGE_COMMAND_BINDING) readonly buffer Command {
