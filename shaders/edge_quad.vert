@@ -55,6 +55,7 @@ void main() {
     BeamShape beam = beam_shape(instance_data[instance * 6u + 5u].z, length(s1 - s0),
                                 (instance * 0x01000193u) ^ r.ids.z);
     g_beam = vec3(beam.half_width, beam.gain, beam.softness);
-    g_pixel = quad_corner(s0, s1, dir, nrm, beam.half_width, kCorner[uint(gl_VertexID) % EDGE_VERTICES]);
+    g_pixel = quad_corner(s0, s1, dir, nrm, beam.half_width, beam_end_reach(beam.half_width),
+                          kCorner[uint(gl_VertexID) % EDGE_VERTICES]);
     gl_Position = vec4(g_pixel / u_viewport * 2.0 - 1.0, 0.0, 1.0);
 }

@@ -13,13 +13,16 @@ BeamSettings beam_look(std::string_view name) {
     b.look = std::string(name);
     if (name == "classic") return b;  // the defaults: constant width, GL_MAX, Gaussian bloom
     if (name == "mame") {
-        // MAME's vector renderer with its monochrome vector preset: beam width 1 to 4 (MAME
-        // measures it in 1/512 of the screen: 2.1 to 8.4 pixels on 1080 lines), intensity
-        // weight 0.75, flicker 0.15, additive lines, a 9-level bloom chain with its weights.
+        // MAME's vector renderer with its monochrome vector preset (ini/presets/vector-mono.ini):
+        // beam width 1 to 4 (in 1/512 of the screen's smaller side: 2.11 to 8.44 pixels on
+        // 1080 lines, kMameBeamWidthUnitPx), intensity weight 0.75, flicker 0.15, additive
+        // lines, ends lengthened by 3/8 of the width (vector.cpp), a 9-level bloom chain with
+        // its weights.
         b.blend = BeamBlend::additive;
         b.intensity_width = true;
-        b.width_min_px = 2.1f;
-        b.width_max_px = 8.4f;
+        b.width_min_px = 1.0f * kMameBeamWidthUnitPx;
+        b.width_max_px = 4.0f * kMameBeamWidthUnitPx;
+        b.end_lengthening = 0.375f;
         b.intensity_weight = 0.75f;
         b.nominal = 0.75f;
         b.flicker = 0.15f;
