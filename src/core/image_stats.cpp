@@ -6,7 +6,8 @@
 namespace bz {
 
 double lit_share(const Image& image, int level) {
-    const std::size_t count = static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height);
+    const std::size_t count =
+        static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height);
     if (count == 0 || image.channels <= 0) return 0.0;
     const int colour_channels = image.channels == 4 ? 3 : image.channels;
     std::size_t lit = 0;

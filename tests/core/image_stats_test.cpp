@@ -1,12 +1,15 @@
-#include <gtest/gtest.h>
-
 #include "core/image_stats.h"
+
+#include <gtest/gtest.h>
 
 namespace {
 
-bz::Image rgba(int w, int h) { return {w, h, 4, std::vector<std::uint8_t>(static_cast<std::size_t>(w * h * 4), 0)}; }
+bz::Image rgba(int w, int h) {
+    return {w, h, 4, std::vector<std::uint8_t>(static_cast<std::size_t>(w * h * 4), 0)};
+}
 
-void set(bz::Image& img, int x, int y, std::uint8_t r, std::uint8_t g, std::uint8_t b, std::uint8_t a = 255) {
+void set(bz::Image& img, int x, int y, std::uint8_t r, std::uint8_t g, std::uint8_t b,
+         std::uint8_t a = 255) {
     auto* p = &img.pixels[static_cast<std::size_t>((y * img.width + x) * 4)];
     p[0] = r;
     p[1] = g;
