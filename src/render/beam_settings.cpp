@@ -39,8 +39,9 @@ BeamSettings beam_look(std::string_view name) {
         b.bloom_knee = 0.2f;
         // Without it the widest levels light every pixel of a dense scene (the seed's hallway:
         // 100% of pixels above 1/255). The lengthened ends add light where lines meet, and
-        // with 0.02 `high` (whose chain starts at half resolution, so more of a thin line
-        // passes the threshold than at quarter) lit 70.3% of the hallway; 0.025 brings it to
+        // with 0.02 `high` (whose chain starts at half resolution, where a thin line is
+        // averaged over fewer pixels than at quarter, so more of it passes the threshold)
+        // lit 70.3% of the hallway; 0.025 brings it to
         // 63.0% and fast and balanced to 55.7% (the goal: at most 70%; tools/haze), and the
         // floor grating stays lines on black.
         b.bloom_floor = 0.025f;
