@@ -67,7 +67,7 @@ void main() {
     vec2 p = g_pixel;
     float t = closest_t(p, p0, p1);
     vec2 spine = mix(p0, p1, t);
-    float dist = distance(p, spine);
+    float dist = beam_distance(p, p0, p1, spine, g_shade.w);  // lengthened ends: beam_ends.glsl
     if (dist >= g_shade.w) discard;
     if (!spine_point_visible(t, spine)) discard;
     o_color = vec4(g_shade.rgb * beam_profile(dist, g_shade.w, g_stretch.z), 1.0);

@@ -69,6 +69,9 @@ void main() {
             q1 = mix(s0, s1, min(g_stretch.y, 1.0));
         }
     }
-    g_pixel = quad_corner(q0, q1, dir, nrm, beam.half_width, kCorner[uint(gl_VertexID) % EDGE_VERTICES]);
+    // Past a true end the quad reaches over the lengthened beam (beam_ends.glsl); past a
+    // visible stretch's inner end the fragments are hidden anyway.
+    g_pixel = quad_corner(q0, q1, dir, nrm, beam.half_width, beam_end_reach(beam.half_width),
+                          kCorner[uint(gl_VertexID) % EDGE_VERTICES]);
     gl_Position = vec4(g_pixel / u_viewport * 2.0 - 1.0, 0.0, 1.0);
 }
