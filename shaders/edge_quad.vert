@@ -10,8 +10,16 @@
 layout(std430, binding = EDGE_RECORDS_BINDING) readonly buffer Records { EdgeRecord records[]; };
 layout(std430, binding = 1) readonly buffer Instances { vec4 instance_data[]; };
 layout(std430, binding = SPINE_SPANS_BINDING) readonly buffer Spans { uvec4 spans[]; };
+layout(std430, binding = EDGE_COMMAND_BINDING) readonly buffer Command {
+    uint vertex_count;
+    uint instance_count;
+    uint first_vertex;
+    uint base_instance;
+    uint samples_used;
+};
 
 uniform uint u_capacity;  // records the buffer holds (the draw count may run past it)
+uniform uint u_sample_capacity;  // spine samples the sample buffer holds
 uniform mat4 u_proj;
 uniform vec2 u_viewport;
 uniform float u_near;
@@ -45,7 +53,10 @@ void main() {
                                 (instance * 0x01000193u) ^ r.ids.z);
     g_shade = vec4(instance_data[instance * 6u + 4u].rgb * beam.gain, beam.half_width);
     g_stretch = vec4(-1.0, 2.0, beam.softness, 0.0);
-    g_samples = uvec4(r.vertices.z, r.vertices.w, 0u, index);
+    // When the frame asked for more samples than fit, every record is tested per fragment
+    // (spine_visibility.comp skipped them all), so that which records got samples - the order
+    // of the atomic appends - never shows.
+    g_samples = uvec4(r.vertices.z, samples_used <= u_sample_capacity ? r.vertices.w : 0u, 0u, index);
     // With spine samples the quad covers only the visible stretch: from half a sample before
     // the first visible sample to half a sample after the last, where the look-up would turn
     // hidden. A wholly hidden edge draws nothing; a stretch without hidden samples inside
