@@ -25,8 +25,11 @@ uniform vec2 u_viewport;
 uniform float u_near;
 uniform float u_far;
 
-noperspective out vec2 g_pixel;
+#ifdef MASK_MODE
 flat out vec4 g_ends;     // spine end points (edge_quad.frag documents these)
+#else
+noperspective out vec4 g_line;
+#endif
 flat out vec4 g_shade;
 flat out vec4 g_stretch;
 flat out uvec4 g_samples;
@@ -46,7 +49,9 @@ void main() {
     vec2 s0 = r.screen.xy, s1 = r.screen.zw;
     vec2 dir, nrm;
     spine_frame(s0, s1, dir, nrm);
+#ifdef MASK_MODE
     g_ends = vec4(s0, s1);
+#endif
     uint instance = r.ids.y;
     // The beam's shape per edge; the flicker key is the edge's own id in its mesh and instance.
     BeamShape beam = beam_shape(instance_data[instance * 6u + 5u].z, length(s1 - s0),
@@ -82,7 +87,17 @@ void main() {
     }
     // Past a true end the quad reaches over the lengthened beam (beam_ends.glsl); past a
     // visible stretch's inner end the fragments are hidden anyway.
-    g_pixel = quad_corner(q0, q1, dir, nrm, beam.half_width, beam_end_reach(beam.half_width),
-                          kCorner[uint(gl_VertexID) % EDGE_VERTICES]);
-    gl_Position = vec4(g_pixel / u_viewport * 2.0 - 1.0, 0.0, 1.0);
+    vec2 corner = quad_corner(q0, q1, dir, nrm, beam.half_width, beam_end_reach(beam.half_width),
+                              kCorner[uint(gl_VertexID) % EDGE_VERTICES]);
+#ifndef MASK_MODE
+    // The corner in the spine's own frame. All four are affine in the window position, so
+    // the rasteriser interpolates them exactly (noperspective) and the fragment needs no
+    // projection onto the spine: t along it, the distance across, and the distance along it
+    // from each end.
+    float len = length(s1 - s0);
+    vec2 rel = corner - s0;
+    float along = dot(rel, dir);
+    g_line = vec4(len > 1e-6 ? along / len : 0.0, dot(rel, nrm), along, along - len);
+#endif
+    gl_Position = vec4(corner / u_viewport * 2.0 - 1.0, 0.0, 1.0);
 }
