@@ -21,8 +21,12 @@ uniform float u_near;
 uniform float u_far;
 #include "edge_geometry.glsl"
 
-noperspective in vec2 g_pixel;
+#ifdef MASK_MODE
 flat in vec4 g_ends;     // spine end points, window pixels
+#else
+noperspective in vec4 g_line;  // x: t along the spine (unclamped), y: px across it, z: px
+                               // along it from the start, w: px along it from the end
+#endif
 flat in vec4 g_shade;    // rgb: colour times the beam's gain; w: half-width (px)
 flat in vec4 g_stretch;  // xy: the visible stretch (t); z: beam softness; w: samples stored when
                          // they must be looked up, 0 when the whole stretch is visible
@@ -36,8 +40,9 @@ layout(location = 0) out vec4 o_color;
 #endif
 
 // The spine test of a record that got no samples (the sample buffer was full).
-bool tested_here(float t, vec2 spine) {
+bool tested_here(float t) {
     EdgeRecord r = records[g_samples.w];
+    vec2 spine = mix(r.screen.xy, r.screen.zw, t);
     vec2 dir, nrm;
     spine_frame(r.screen.xy, r.screen.zw, dir, nrm);
     bool silhouette = (r.ids.x & EDGE_KIND_MASK) == EDGE_SILHOUETTE;
@@ -47,8 +52,8 @@ bool tested_here(float t, vec2 spine) {
 }
 
 // Whether the spine point at parameter t is visible.
-bool spine_point_visible(float t, vec2 spine) {
-    if (g_samples.y == 0u) return tested_here(t, spine);
+bool spine_point_visible(float t) {
+    if (g_samples.y == 0u) return tested_here(t);
     if (t < g_stretch.x || t >= g_stretch.y) return false;
     if (g_stretch.w == 0.0) return true;  // no hidden sample inside the stretch
     uint k = clamp(spine_sample_index(t, g_samples.y), g_samples.z, g_samples.z + uint(g_stretch.w) - 1u);
@@ -56,20 +61,22 @@ bool spine_point_visible(float t, vec2 spine) {
 }
 
 void main() {
-    vec2 p0 = g_ends.xy, p1 = g_ends.zw;
 #ifdef MASK_MODE
+    vec2 p0 = g_ends.xy, p1 = g_ends.zw;
     vec2 p = gl_FragCoord.xy;
     float t = closest_t(p, p0, p1);
     if (!crosses_pixel(p, p0, p1)) discard;
-    if (!spine_point_visible(t, mix(p0, p1, t))) discard;
+    if (!spine_point_visible(t)) discard;
     o_color = vec4(1.0);
 #else
-    vec2 p = g_pixel;
-    float t = closest_t(p, p0, p1);
-    vec2 spine = mix(p0, p1, t);
-    float dist = distance(p, spine);
+    float t = clamp(g_line.x, 0.0, 1.0);
+    // Past an end, the distance along the spine beyond it, less the lengthening
+    // (beam_ends.glsl): the distance to the lengthened spine, as beam_distance measures it.
+    float e = beam_end_lengthening(g_shade.w);
+    float beyond = min(g_line.z + e, 0.0) + max(g_line.w - e, 0.0);
+    float dist = length(vec2(g_line.y, beyond));
     if (dist >= g_shade.w) discard;
-    if (!spine_point_visible(t, spine)) discard;
+    if (!spine_point_visible(t)) discard;
     o_color = vec4(g_shade.rgb * beam_profile(dist, g_shade.w, g_stretch.z), 1.0);
 #endif
 }

@@ -34,7 +34,7 @@ void main() {
     if (!spine_visible(spine, line_inv, g_edge_plane, g_face_pos, g_face_neg, g_nudge)) discard;
     o_color = vec4(1.0);
 #else
-    float dist = distance(p, spine);
+    float dist = beam_distance(p, g_p0, g_p1, spine, g_beam.x);  // lengthened ends: beam_ends.glsl
     if (dist >= g_beam.x) discard;
     if (!spine_visible(spine, line_inv, g_edge_plane, g_face_pos, g_face_neg, g_nudge)) discard;
     o_color = vec4(g_color * (g_beam.y * beam_profile(dist, g_beam.x, g_beam.z)), 1.0);

@@ -23,6 +23,7 @@ layout(std430, binding = SPINE_SAMPLES_BINDING) writeonly buffer Samples { uint 
 layout(std430, binding = SPINE_SPANS_BINDING) buffer Spans { uvec4 spans[]; };  // from edges.comp
 
 uniform uint u_capacity;
+uniform uint u_sample_capacity;
 uniform mat4 u_proj;
 uniform vec2 u_viewport;
 uniform float u_near;
@@ -32,6 +33,8 @@ uniform float u_far;
 #include "spine_test.glsl"
 
 void main() {
+    // Too many samples for the buffer: the quads test every record per fragment instead.
+    if (samples_used > u_sample_capacity) return;
     uint records_n = min(vertex_count / EDGE_VERTICES, u_capacity);
     uint lane = gl_LocalInvocationID.x;
     for (uint index = gl_WorkGroupID.x; index < records_n; index += gl_NumWorkGroups.x) {

@@ -146,6 +146,7 @@ Json run_json(const RunResult& r) {
     settings["frustum_culling"] = s.frustum_culling;
     settings["lod"] = s.lod;
     settings["instancing"] = s.instancing;
+    settings["beam"] = s.beam.look;  // classic or mame: the sweep's balanced-mame row
     j["settings"] = std::move(settings);
     const FrameTimeStats& t = r.stats;
     j["frame_time_ms"] = Json{{"mean", t.mean_ms}, {"p50", t.p50_ms}, {"p95", t.p95_ms},

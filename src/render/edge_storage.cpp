@@ -25,7 +25,7 @@ EdgeStorage::EdgeStorage() {
     command_.set_data(&cmd, sizeof(cmd), GL_DYNAMIC_DRAW);
     kept_count_.set_data(&cmd, sizeof(cmd), GL_DYNAMIC_READ);
     reserve(1024);
-    reserve_samples(std::size_t{1} << 16);
+    reserve_samples(std::size_t{1} << 18);
 }
 
 void EdgeStorage::reserve(std::size_t records) {
@@ -61,6 +61,7 @@ std::size_t EdgeStorage::samples_used() const {
 }
 
 void EdgeStorage::keep_count() {
+    has_previous_ = true;
     glCopyNamedBufferSubData(command_.id(), kept_count_.id(), 0, 0, sizeof(EdgeDrawCommand));
 }
 

@@ -30,6 +30,8 @@ public:
     void keep_count();
     // The counters kept by the last keep_count (records appended = vertex_count / 6).
     EdgeDrawCommand previous() const;
+    // Whether keep_count ran yet: before it, previous() knows nothing of the scene's size.
+    bool has_previous() const { return has_previous_; }
 
     std::uint32_t capacity() const { return capacity_; }
     std::uint32_t max_capacity() const { return max_capacity_; }
@@ -49,6 +51,7 @@ private:
     std::uint32_t max_capacity_ = 0;
     std::uint32_t sample_capacity_ = 0;
     std::uint32_t max_samples_ = 0;
+    bool has_previous_ = false;
 };
 
 }  // namespace bz::render

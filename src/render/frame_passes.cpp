@@ -31,6 +31,19 @@ void edges_complete(const PassContext& ctx) {
     }
 }
 
+// LineMethod::compute's edge extraction. The first fill knows nothing of the scene's size: it
+// reads its counts back and fills again if the records or their spine samples did not fit,
+// so that no frame depends on which records the atomic appends left without samples (those
+// are tested per fragment, which differs from the samples where the spine test is a tie).
+// Later frames size the buffers from the frame before without waiting.
+void edges_sized(const PassContext& ctx) {
+    if (ctx.edges.has_previous()) {
+        pass_edges(ctx);
+    } else {
+        edges_complete(ctx);
+    }
+}
+
 // The edge extraction; with count_edges it also reads back how many records it appended.
 void edges_counted(const PassContext& ctx) {
     pass_edges(ctx);
@@ -111,7 +124,7 @@ std::vector<FramePass> frame_passes(const StyleDef& style, const RenderSettings&
             // spine test once per spine sample of each, and the quads draw the count the edges
             // pass appended (indirect dispatch and draw, no read-back).
             list.push_back({"prepass", pass_prepass});
-            list.push_back({"edges", pass_edges});
+            list.push_back({"edges", edges_sized});
             list.push_back({"visibility", pass_spine_visibility});
             list.push_back({"lines", edge_quads_counted});
         } else {

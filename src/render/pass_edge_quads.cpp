@@ -9,6 +9,8 @@ void pass_edge_quads(const PassContext& ctx, bool mask_mode) {
     const gl::Program& program = mask_mode ? ctx.programs.edge_quads_mask : ctx.programs.edge_quads;
     begin_line_target(ctx, program, mask_mode);
     program.set("u_capacity", ctx.edges.capacity());
+    program.set("u_sample_capacity", ctx.edges.sample_capacity());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEdgeCommandBinding, ctx.edges.command().id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEdgeRecordsBinding, ctx.edges.records().id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSpineSamplesBinding, ctx.edges.samples().id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSpineSpansBinding, ctx.edges.spans().id());

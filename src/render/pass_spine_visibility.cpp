@@ -30,6 +30,7 @@ void pass_spine_visibility(const PassContext& ctx) {
     program.use();
     set_line_uniforms(program, ctx, 0.0f);
     program.set("u_capacity", edges.capacity());
+    program.set("u_sample_capacity", edges.sample_capacity());
     ctx.targets.depth.bind(0);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEdgeCommandBinding, edges.command().id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEdgeRecordsBinding, edges.records().id());
