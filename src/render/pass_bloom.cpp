@@ -6,10 +6,12 @@ namespace {
 
 // The first downsample, from the full-resolution picture into the first level, also marking
 // the lit blocks (Targets::lit); with the phosphor, it glows from its own block phosphor.
-void first_downsample(const PassContext& ctx, const gl::Texture2D& source, const PhosphorStep* phosphor,
-                      float threshold) {
+void first_downsample(const PassContext& ctx, const gl::Texture2D& source,
+                      const PhosphorStep* phosphor, float threshold) {
     const Targets& t = ctx.targets;
-    (phosphor ? t.first_down_phosphor_fbo[static_cast<std::size_t>(phosphor->to)] : t.first_down_fbo).bind();
+    (phosphor ? t.first_down_phosphor_fbo[static_cast<std::size_t>(phosphor->to)]
+              : t.first_down_fbo)
+        .bind();
     const gl::Program& down = phosphor ? ctx.programs.bloom_down_phosphor : ctx.programs.bloom_down;
     down.use();
     down.set("u_source", 0);
@@ -27,7 +29,8 @@ void first_downsample(const PassContext& ctx, const gl::Texture2D& source, const
 
 // Downsample to the bloom resolution, then a separable linear-sampled Gaussian: horizontal
 // into bloom_b, vertical into bloom_out, encoded in 8 bits for the composite's cheap fetch.
-void gaussian_bloom(const PassContext& ctx, const gl::Texture2D& source, const PhosphorStep* phosphor) {
+void gaussian_bloom(const PassContext& ctx, const gl::Texture2D& source,
+                    const PhosphorStep* phosphor) {
     Targets& t = ctx.targets;
     first_downsample(ctx, source, phosphor, ctx.settings.beam.bloom_threshold);
 
@@ -52,7 +55,8 @@ void gaussian_bloom(const PassContext& ctx, const gl::Texture2D& source, const P
 // MAME's bloom: a chain of levels, each half the size of the one before, summed with a
 // weight per level (BeamSettings::mip_weights). Wide, soft glow for little work: the levels
 // past the first cost a fraction of one full-resolution pass together.
-void mip_chain_bloom(const PassContext& ctx, const gl::Texture2D& source, const PhosphorStep* phosphor) {
+void mip_chain_bloom(const PassContext& ctx, const gl::Texture2D& source,
+                     const PhosphorStep* phosphor) {
     Targets& t = ctx.targets;
     const auto& w = ctx.settings.beam.mip_weights;
     const std::size_t n = t.bloom_mips.size();

@@ -8,23 +8,25 @@ namespace bz::render {
 // is what an unlit pixel composites to exactly, and only the lit tiles are shaded; on
 // llvmpipe a full-screen pass costs per pixel even where it writes black.
 // With the phosphor it also stores the new picture (phosphor.glsl) into the history texture.
-void pass_composite(const PassContext& ctx, const gl::Texture2D& picture, bool bloom, GLuint target_fbo,
-                    int width, int height, const PhosphorStep* phosphor) {
+void pass_composite(const PassContext& ctx, const gl::Texture2D& picture, bool bloom,
+                    GLuint target_fbo, int width, int height, const PhosphorStep* phosphor) {
     const Targets& t = ctx.targets;
     const bool sparse = bloom && t.tiles_valid && ctx.settings.sparse_composite;
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, target_fbo);
     glViewport(0, 0, width, height);
     gl::apply(gl::PipelineState{});
     const Programs& programs = ctx.programs;
-    const gl::Program& p = sparse ? (phosphor ? programs.composite_tiles_phosphor : programs.composite_tiles)
-                                  : (phosphor ? programs.composite_phosphor : programs.composite);
+    const gl::Program& p =
+        sparse ? (phosphor ? programs.composite_tiles_phosphor : programs.composite_tiles)
+               : (phosphor ? programs.composite_phosphor : programs.composite);
     p.use();
     p.set("u_lines", 0);
     p.set("u_bloom", 1);
     p.set("u_bloom_strength", bloom ? ctx.settings.bloom_strength : 0.0f);
     p.set("u_exposure", ctx.settings.exposure);
     p.set("u_overlay", ctx.settings.beam.overlay ? 1 : 0);
-    p.set("u_inv_screen", glm::vec2(1.0f / static_cast<float>(width), 1.0f / static_cast<float>(height)));
+    p.set("u_inv_screen",
+          glm::vec2(1.0f / static_cast<float>(width), 1.0f / static_cast<float>(height)));
     picture.bind(0);
     t.bloom_out.bind(1);
     if (phosphor) {

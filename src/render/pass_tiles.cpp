@@ -10,7 +10,8 @@ namespace bz::render {
 void pass_tiles(const PassContext& ctx) {
     Targets& t = ctx.targets;
     if (!t.tiles) return;
-    const PhosphorStep* phosphor = ctx.picture && ctx.picture->phosphor ? &*ctx.picture->phosphor : nullptr;
+    const PhosphorStep* phosphor =
+        ctx.picture && ctx.picture->phosphor ? &*ctx.picture->phosphor : nullptr;
     const gl::Texture2D& tiles = t.tiles;
     const gl::Program& p = ctx.programs.tiles;
     p.use();
@@ -27,7 +28,8 @@ void pass_tiles(const PassContext& ctx) {
         t.picture_lit[static_cast<std::size_t>(phosphor->to)].bind(3);
     }
     glBindImageTexture(0, tiles.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R8UI);
-    glDispatchCompute(static_cast<GLuint>((tiles.width() + 7) / 8), static_cast<GLuint>((tiles.height() + 7) / 8), 1);
+    glDispatchCompute(static_cast<GLuint>((tiles.width() + 7) / 8),
+                      static_cast<GLuint>((tiles.height() + 7) / 8), 1);
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
     t.tiles_valid = true;
 }

@@ -15,7 +15,9 @@ namespace {
 constexpr int kW = 320;
 constexpr int kH = 240;
 
-glm::vec2 hud_at(float x, float y) { return {(x + 0.5f - kW * 0.5f) / (kH * 0.5f), (kH * 0.5f - y - 0.5f) / (kH * 0.5f)}; }
+glm::vec2 hud_at(float x, float y) {
+    return {(x + 0.5f - kW * 0.5f) / (kH * 0.5f), (kH * 0.5f - y - 0.5f) / (kH * 0.5f)};
+}
 
 // Lines of every brightness, from full to barely above black, some along the screen's edges
 // and corners (where tiles are cut off), a dot, and a crossing.
@@ -81,7 +83,8 @@ class SparseCompositeTest : public bz::test::GlTest {};
 
 TEST_F(SparseCompositeTest, ClassicBeamMatchesTheDenseComposite) {
     expect_same_picture(render_both(bz::render::preset("balanced"), 1), "classic, balanced");
-    expect_same_picture(render_both(bz::render::preset("high"), 1), "classic, high (half-res bloom)");
+    expect_same_picture(render_both(bz::render::preset("high"), 1),
+                        "classic, high (half-res bloom)");
 }
 
 TEST_F(SparseCompositeTest, MameBeamWithPhosphorAndOverlayMatchesTheDenseComposite) {
@@ -110,10 +113,12 @@ TEST_F(SparseCompositeTest, PhosphorTrailsMatchTheDenseCompositeWhileLinesJumpAr
                              : empty_frame(i / 60.0);
         sparse.render(f, meshes, bz::render::Renderer::kOffscreen);
         dense.render(f, meshes, bz::render::Renderer::kOffscreen);
-        EXPECT_EQ(sparse.read_picture_hdr(), dense.read_picture_hdr()) << "phosphor picture, frame " << i;
+        EXPECT_EQ(sparse.read_picture_hdr(), dense.read_picture_hdr())
+            << "phosphor picture, frame " << i;
         const auto a = sparse.read_color(), b = dense.read_color();
         int worst = 0;
-        for (std::size_t k = 0; k < a.size(); ++k) worst = std::max(worst, std::abs(int{a[k]} - int{b[k]}));
+        for (std::size_t k = 0; k < a.size(); ++k)
+            worst = std::max(worst, std::abs(int{a[k]} - int{b[k]}));
         EXPECT_LE(worst, 1) << "frame " << i;
     }
 }
