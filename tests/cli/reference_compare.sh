@@ -8,9 +8,6 @@ root=$(cd "$(dirname "$0")/../.." && pwd)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 fail() { echo "FAIL: $*" >&2; exit 1; }
-# The model-loading memory cap (RLIMIT_DATA) is tested with the hostile model files; here it
-# would only starve AddressSanitizer's allocator in the sanitizer build.
-export BEAMZONE_MEMORY_LIMIT_MB=0
 
 expect_seconds=120
 source "$(dirname "$0")/lib/expect.bash"
