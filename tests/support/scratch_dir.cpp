@@ -1,9 +1,7 @@
 #include "support/scratch_dir.h"
 
-#include <gtest/gtest.h>
 #include <unistd.h>
 
-#include <algorithm>
 #include <atomic>
 #include <fstream>
 
@@ -11,12 +9,9 @@ namespace bz::test {
 
 ScratchDir::ScratchDir(std::string_view prefix) {
     static std::atomic<int> serial{0};
-    std::string name(prefix);
-    if (const auto* info = ::testing::UnitTest::GetInstance()->current_test_info()) {
-        name += std::string("_") + info->test_suite_name() + "_" + info->name();
-    }
-    name += "_" + std::to_string(::getpid()) + "_" + std::to_string(serial++);
-    std::replace(name.begin(), name.end(), '/', '_');  // parameterised tests: "Suite/Name/0"
+    // Short: messages that quote a path may cut a long one (a model reference at 120 bytes).
+    const std::string name =
+        std::string(prefix) + "_" + std::to_string(::getpid()) + "_" + std::to_string(serial++);
     path_ = std::filesystem::temp_directory_path() / name;
     std::filesystem::remove_all(path_);
     std::filesystem::create_directories(path_);

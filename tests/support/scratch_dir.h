@@ -1,7 +1,7 @@
 #pragma once
 // A scratch folder for one test, removed with everything in it when the test's ScratchDir goes.
-// Its name holds the test's name, the process id and a serial number: ctest runs tests in
-// parallel processes, and one test may want several folders.
+// Its name is the prefix, the process id and a serial number: ctest runs tests in parallel
+// processes, and one test may want several folders.
 #include <filesystem>
 #include <string>
 #include <string_view>
