@@ -1,6 +1,8 @@
 // The beam profile shared by scene lines and HUD lines: a bright Gaussian core that fades to
 // exactly zero at the quad's edge, so neighbouring quads never show a seam.
 // `softness` below 1 flattens the core (an overdriven, defocused spot; beam_width.glsl).
+#include "beam_ends.glsl"
+
 float beam_profile(float dist_px, float half_width_px, float softness) {
     float x = dist_px / max(half_width_px, 1e-3);
     float core = exp2(-5.77078016 * softness * x * x);  // exp(-4 softness x^2)

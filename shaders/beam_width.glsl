@@ -2,6 +2,8 @@
 // (lines.geom, hud.geom, and any other line path): MAME's vector renderer
 // (src/emu/video/vector.cpp) plus beam dwell and overdrive defocus. The uniforms are set by
 // render/beam_uniforms.cpp (set_beam_uniforms); the look's knobs are render::BeamSettings.
+#include "beam_ends.glsl"
+
 uniform vec4 u_beam_width;  // x, y: min and max half-width (px, this target); z: sigmoid weight;
                             // w: the MAME intensity (0..1) of a line of intensity 1
 uniform vec4 u_beam_shape;  // x: flicker; y: dwell length (px); z: dwell's largest gain;

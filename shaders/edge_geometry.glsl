@@ -86,10 +86,10 @@ void spine_frame(vec2 s0, vec2 s1, out vec2 dir, out vec2 nrm) {
     nrm = vec2(-dir.y, dir.x);
 }
 
-// Corner k (0..3, triangle-strip order) of the quad around the spine, extended by h at both
-// ends for round caps.
-vec2 quad_corner(vec2 s0, vec2 s1, vec2 dir, vec2 nrm, float h, int k) {
-    vec2 end = (k < 2) ? s0 - dir * h : s1 + dir * h;
+// Corner k (0..3, triangle-strip order) of the quad around the spine: h to each side, and
+// `reach` past both ends (h for round caps, more for lengthened ends: beam_ends.glsl).
+vec2 quad_corner(vec2 s0, vec2 s1, vec2 dir, vec2 nrm, float h, float reach, int k) {
+    vec2 end = (k < 2) ? s0 - dir * reach : s1 + dir * reach;
     return end + ((k & 1) == 0 ? -nrm : nrm) * h;
 }
 

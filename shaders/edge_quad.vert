@@ -1,13 +1,15 @@
 #version 450 core
 // LineMethod::compute: draws one quad (two triangles, EDGE_VERTICES vertices) per record of the
-// edge buffer that shaders/edges.comp filled, with no geometry shader. It hands lines.frag the
-// same varyings as lines.geom, computed with the same code (edge_geometry.glsl), so the
-// fragment stage - spine test and beam - is shared by both line methods.
+// edge buffer that shaders/edges.comp filled, with no geometry shader, computed with the same
+// code as lines.geom (edge_geometry.glsl). Its fragments (edge_quad.frag) look visibility up
+// from the spine samples (spine_visibility.comp) instead of running the spine test.
 #include "edge_record.glsl"
 #include "beam_width.glsl"
+#include "spine_samples.glsl"
 
 layout(std430, binding = EDGE_RECORDS_BINDING) readonly buffer Records { EdgeRecord records[]; };
 layout(std430, binding = 1) readonly buffer Instances { vec4 instance_data[]; };
+layout(std430, binding = SPINE_SPANS_BINDING) readonly buffer Spans { uvec4 spans[]; };
 
 uniform uint u_capacity;  // records the buffer holds (the draw count may run past it)
 uniform mat4 u_proj;
@@ -16,15 +18,10 @@ uniform float u_near;
 uniform float u_far;
 
 noperspective out vec2 g_pixel;
-flat out vec2 g_p0;
-flat out vec2 g_p1;
-flat out vec2 g_inv_depth;
-flat out vec3 g_edge_plane;
-flat out vec3 g_face_pos;
-flat out vec3 g_face_neg;
-flat out vec2 g_nudge;
-flat out vec3 g_color;
-flat out vec3 g_beam;  // half-width (px), gain, softness (beam_width.glsl)
+flat out vec4 g_ends;     // spine end points (edge_quad.frag documents these)
+flat out vec4 g_shade;
+flat out vec4 g_stretch;
+flat out uvec4 g_samples;
 
 #include "edge_geometry.glsl"
 
@@ -41,20 +38,40 @@ void main() {
     vec2 s0 = r.screen.xy, s1 = r.screen.zw;
     vec2 dir, nrm;
     spine_frame(s0, s1, dir, nrm);
-    uint kind = r.ids.x & EDGE_KIND_MASK;
-    g_p0 = s0;
-    g_p1 = s1;
-    g_inv_depth = r.depth.xy;
-    g_edge_plane = r.edge_plane.xyz;
-    g_face_pos = r.face_pos.xyz;
-    g_face_neg = r.face_neg.xyz;
-    g_nudge = kind == EDGE_SILHOUETTE ? silhouette_nudge(r.edge_plane.xyz, s0, nrm) : vec2(0.0);
+    g_ends = vec4(s0, s1);
     uint instance = r.ids.y;
-    g_color = instance_data[instance * 6u + 4u].rgb;
     // The beam's shape per edge; the flicker key is the edge's own id in its mesh and instance.
     BeamShape beam = beam_shape(instance_data[instance * 6u + 5u].z, length(s1 - s0),
                                 (instance * 0x01000193u) ^ r.ids.z);
-    g_beam = vec3(beam.half_width, beam.gain, beam.softness);
-    g_pixel = quad_corner(s0, s1, dir, nrm, beam.half_width, kCorner[uint(gl_VertexID) % EDGE_VERTICES]);
+    g_shade = vec4(instance_data[instance * 6u + 4u].rgb * beam.gain, beam.half_width);
+    g_stretch = vec4(-1.0, 2.0, beam.softness, 0.0);
+    g_samples = uvec4(r.vertices.z, r.vertices.w, 0u, index);
+    // With spine samples the quad covers only the visible stretch: from half a sample before
+    // the first visible sample to half a sample after the last, where the look-up would turn
+    // hidden. A wholly hidden edge draws nothing; a stretch without hidden samples inside
+    // needs no look-ups, only the stretch's ends (edge_quad.frag).
+    vec2 q0 = s0, q1 = s1;
+    if (g_samples.y > 0u) {
+        uvec4 span = spans[2u * index];
+        uint visible_n = spans[2u * index + 1u].x;
+        g_samples.z = span.x;
+        if (span.z > span.w) {
+            gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
+            return;
+        }
+        // Look-ups only with hidden samples inside the stretch; then w holds how many samples
+        // are stored, so a look-up never leaves them.
+        g_stretch.w = visible_n < span.w - span.z + 1u ? float(span.y - span.x + 1u) : 0.0;
+        if (g_samples.y > 1u) {
+            float steps = float(g_samples.y - 1u);
+            g_stretch.xy = vec2((float(span.z) - 0.5) / steps, (float(span.w) + 0.5) / steps);
+            q0 = mix(s0, s1, max(g_stretch.x, 0.0));
+            q1 = mix(s0, s1, min(g_stretch.y, 1.0));
+        }
+    }
+    // Past a true end the quad reaches over the lengthened beam (beam_ends.glsl); past a
+    // visible stretch's inner end the fragments are hidden anyway.
+    g_pixel = quad_corner(q0, q1, dir, nrm, beam.half_width, beam_end_reach(beam.half_width),
+                          kCorner[uint(gl_VertexID) % EDGE_VERTICES]);
     gl_Position = vec4(g_pixel / u_viewport * 2.0 - 1.0, 0.0, 1.0);
 }

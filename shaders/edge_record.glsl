@@ -12,7 +12,7 @@ struct EdgeRecord {
     vec4 vertex_normal_a;  // xyz: unit view-space smooth vertex normal at a
     vec4 vertex_normal_b;  // xyz: ... at b
     uvec4 ids;             // x: kind | flags, y: instance index, z: edge id in the mesh, w: mesh id
-    uvec4 vertices;        // x, y: welded vertex ids of a and b
+    uvec4 vertices;        // x, y: welded vertex ids of a and b; z: first spine sample, w: samples
 };
 
 const uint EDGE_CREASE = 0u;
@@ -36,3 +36,5 @@ const uint EDGE_VERTICES = 6u;
 #define EDGE_RECORDS_BINDING 4
 #define EDGE_COMMAND_BINDING 5
 #define EDGE_VERTEX_NORMALS_BINDING 6
+#define SPINE_SAMPLES_BINDING 7
+#define SPINE_SPANS_BINDING 8

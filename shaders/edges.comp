@@ -7,6 +7,7 @@
 // shader, each edge is tested once instead of once from each of its faces, and the work is
 // spread over every thread llvmpipe (or a GPU) has.
 #include "edge_record.glsl"
+#include "spine_samples.glsl"
 
 layout(local_size_x = 64) in;
 
@@ -23,17 +24,24 @@ layout(std430, binding = EDGE_VERTEX_NORMALS_BINDING) readonly buffer VertexNorm
 // render::InstanceData: model-view in vec4 0-3, colour 4, parameters 5 (x: cos(crease angle)).
 layout(std430, binding = 1) readonly buffer Instances { vec4 instance_data[]; };
 layout(std430, binding = EDGE_RECORDS_BINDING) writeonly buffer Records { EdgeRecord records[]; };
+// Per record, two entries: the sampled stretch and the visible one, then the visible count
+// (spine_samples.glsl).
+layout(std430, binding = SPINE_SPANS_BINDING) writeonly buffer Spans { uvec4 spans[]; };
 layout(std430, binding = EDGE_COMMAND_BINDING) buffer Command {
     uint vertex_count;  // EDGE_VERTICES per appended record: the append counter
     uint instance_count;
     uint first_vertex;
     uint base_instance;
+    uint samples_used;  // spine samples asked for: the sample append counter
 };
 
 uniform uint u_edge_base;       // first edge of this dispatch (dispatches are chunked)
 uniform uint u_edge_count;
 uniform uint u_first_instance;  // this batch's first instance, plus the dispatch's y offset
 uniform uint u_capacity;        // records the buffer holds; later appends are counted, not written
+uniform uint u_sample_capacity; // spine samples the sample buffer holds (0: none wanted)
+uniform float u_sample_margin;  // pixels around the viewport that spine samples cover
+uniform float u_sample_spacing; // pixels between spine samples
 uniform uint u_mesh_id;
 uniform bool u_skip_back_faces;
 uniform mat4 u_proj;
@@ -50,6 +58,24 @@ vec3 vertex_normal(uint v) {
     return vec3(vertex_normals[3u * v], vertex_normals[3u * v + 1u], vertex_normals[3u * v + 2u]);
 }
 vec3 unit_or_zero(vec3 v) { float l = length(v); return l > 0.0 ? v / l : vec3(0.0); }
+
+// The stretch (t0, t1) of the spine s0-s1 within the viewport grown by u_sample_margin
+// (Liang-Barsky); t0 > t1 when none of it is. Spine points farther out light no pixel.
+vec2 on_screen_stretch(vec2 s0, vec2 s1) {
+    vec2 lo = vec2(-u_sample_margin), hi = u_viewport + u_sample_margin;
+    vec2 d = s1 - s0;
+    float t0 = 0.0, t1 = 1.0;
+    for (int axis = 0; axis < 2; ++axis) {
+        if (abs(d[axis]) < 1e-6) {
+            if (s0[axis] < lo[axis] || s0[axis] > hi[axis]) return vec2(1.0, 0.0);
+            continue;
+        }
+        float ta = (lo[axis] - s0[axis]) / d[axis], tb = (hi[axis] - s0[axis]) / d[axis];
+        t0 = max(t0, min(ta, tb));
+        t1 = min(t1, max(ta, tb));
+    }
+    return vec2(t0, t1);
+}
 
 void main() {
     uint e = u_edge_base + gl_GlobalInvocationID.x;
@@ -110,6 +136,21 @@ void main() {
     mat3 l = mat3(mv);
     mat3 cof = mat3(cross(l[1], l[2]), cross(l[2], l[0]), cross(l[0], l[1]));
     uint va = reversed ? me.b : me.a, vb = reversed ? me.a : me.b;
+    // Room for the spine-visibility samples of the stretch on screen; an edge that finds no
+    // room is tested per fragment (samples = 0).
+    uint first_sample = 0u, samples = 0u;
+    uvec2 sampled = uvec2(1u, 0u);
+    if (u_sample_capacity > 0u) {
+        uint n = spine_sample_count(s.s0, s.s1, u_sample_spacing);
+        vec2 stretch = on_screen_stretch(s.s0, s.s1);
+        uint want = 0u;
+        if (stretch.x <= stretch.y) {
+            sampled = uvec2(uint(floor(stretch.x * float(n - 1u))), min(uint(ceil(stretch.y * float(n - 1u))), n - 1u));
+            want = sampled.y - sampled.x + 1u;
+            first_sample = atomicAdd(samples_used, want);
+        }
+        if (want == 0u || (want <= u_sample_capacity && first_sample <= u_sample_capacity - want)) samples = n;
+    }
 
     EdgeRecord r;
     r.screen = vec4(s.s0, s.s1);
@@ -122,6 +163,10 @@ void main() {
     r.vertex_normal_a = vec4(unit_or_zero(cof * vertex_normal(va)), 0.0);
     r.vertex_normal_b = vec4(unit_or_zero(cof * vertex_normal(vb)), 0.0);
     r.ids = uvec4(kind | flags, inst, e, u_mesh_id);
-    r.vertices = uvec4(va, vb, 0u, 0u);
+    r.vertices = uvec4(va, vb, first_sample, samples);
     records[slot] = r;
+    if (samples > 0u) {  // none visible yet
+        spans[2u * slot] = uvec4(sampled, 0xFFFFFFFFu, 0u);
+        spans[2u * slot + 1u] = uvec4(0u);
+    }
 }

@@ -11,7 +11,7 @@ layout(location = 0) out vec4 o_color;
 
 void main() {
     float t = closest_t(g_pixel, g_p0, g_p1);
-    float dist = distance(g_pixel, mix(g_p0, g_p1, t));
+    float dist = beam_distance(g_pixel, g_p0, g_p1, mix(g_p0, g_p1, t), g_beam.x);
     if (dist >= g_beam.x) discard;
     o_color = vec4(g_color * (g_beam.y * beam_profile(dist, g_beam.x, g_beam.z)), 1.0);
 }

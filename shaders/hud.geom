@@ -23,9 +23,9 @@ void main() {
     vec2 nrm = vec2(-dir.y, dir.x);
     // HUD keys start high so a HUD line never flickers in step with a scene line.
     BeamShape beam = beam_shape(v_intensity[0], len, 0x80000000u + uint(gl_PrimitiveIDIn));
-    float h = beam.half_width;
-    vec2 corners[4] = vec2[4](s0 - dir * h - nrm * h, s0 - dir * h + nrm * h,
-                              s1 + dir * h - nrm * h, s1 + dir * h + nrm * h);
+    float h = beam.half_width, r = beam_end_reach(h);  // lengthened ends: beam_ends.glsl
+    vec2 corners[4] = vec2[4](s0 - dir * r - nrm * h, s0 - dir * r + nrm * h,
+                              s1 + dir * r - nrm * h, s1 + dir * r + nrm * h);
     for (int k = 0; k < 4; ++k) {
         g_pixel = corners[k];
         g_p0 = s0;

@@ -18,15 +18,7 @@ flat in vec3 g_beam;  // half-width (px), gain, softness (beam_width.glsl)
 layout(location = 0) out vec4 o_color;
 
 #ifdef MASK_MODE
-// True when segment a-b passes through the unit pixel square centred on c
-// (separating axes: x, y and the segment's normal).
-bool crosses_pixel(vec2 c, vec2 a, vec2 b) {
-    vec2 lo = min(a, b), hi = max(a, b);
-    if (hi.x < c.x - 0.5 || lo.x >= c.x + 0.5 || hi.y < c.y - 0.5 || lo.y >= c.y + 0.5) return false;
-    vec2 d = b - a;
-    vec2 n = vec2(-d.y, d.x);
-    return abs(dot(n, c - a)) <= 0.5 * (abs(n.x) + abs(n.y));
-}
+#include "pixel_cross.glsl"
 #endif
 
 void main() {
@@ -42,7 +34,7 @@ void main() {
     if (!spine_visible(spine, line_inv, g_edge_plane, g_face_pos, g_face_neg, g_nudge)) discard;
     o_color = vec4(1.0);
 #else
-    float dist = distance(p, spine);
+    float dist = beam_distance(p, g_p0, g_p1, spine, g_beam.x);  // lengthened ends: beam_ends.glsl
     if (dist >= g_beam.x) discard;
     if (!spine_visible(spine, line_inv, g_edge_plane, g_face_pos, g_face_neg, g_nudge)) discard;
     o_color = vec4(g_color * (g_beam.y * beam_profile(dist, g_beam.x, g_beam.z)), 1.0);

@@ -74,7 +74,7 @@ void emit_edge(int i0, int i1, int kind, vec3 face, vec3 other, vec3 opp) {
     g_color = instance_color(instance).rgb;
     g_beam = vec3(beam.half_width, beam.gain, beam.softness);
     for (int k = 0; k < 4; ++k) {
-        g_pixel = quad_corner(e.s0, e.s1, dir, nrm, beam.half_width, k);
+        g_pixel = quad_corner(e.s0, e.s1, dir, nrm, beam.half_width, beam_end_reach(beam.half_width), k);
         gl_Position = vec4(g_pixel / u_viewport * 2.0 - 1.0, 0.0, 1.0);
         EmitVertex();
     }

@@ -137,6 +137,7 @@ Json run_json(const RunResult& r) {
     settings["plane_tolerance_rel"] = static_cast<double>(s.plane_tolerance_rel);
     settings["plane_tolerance_px"] = static_cast<double>(s.plane_tolerance_px);
     settings["depth_bias"] = static_cast<double>(s.depth_bias);
+    settings["spine_sample_spacing_px"] = static_cast<double>(s.spine_sample_spacing_px);
     settings["line_half_width_px"] = static_cast<double>(s.line_half_width_px);
     settings["crease_angle_deg"] = static_cast<double>(s.crease_angle_deg);
     settings["bloom_resolution_divisor"] = static_cast<int>(s.bloom_resolution);
@@ -144,6 +145,7 @@ Json run_json(const RunResult& r) {
     settings["frustum_culling"] = s.frustum_culling;
     settings["lod"] = s.lod;
     settings["instancing"] = s.instancing;
+    settings["beam"] = s.beam.look;  // classic or mame: the sweep's balanced-mame row
     j["settings"] = std::move(settings);
     const FrameTimeStats& t = r.stats;
     j["frame_time_ms"] = Json{{"mean", t.mean_ms}, {"p50", t.p50_ms}, {"p95", t.p95_ms},

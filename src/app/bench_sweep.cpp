@@ -61,6 +61,12 @@ std::vector<SweepConfig> sweep_configs() {
             out.push_back(c);
         }
     }
+    SweepConfig per_fragment{"balanced-per-fragment",
+                             "balanced, compute line method with the spine test in every line fragment "
+                             "instead of once per spine sample",
+                             render::preset("balanced")};
+    per_fragment.settings.spine_sample_spacing_px = 0.0f;
+    out.push_back(per_fragment);
     SweepConfig outline{"image-outline",
                         "baseline: Sobel on prepass depth + normals, balanced bloom",
                         render::preset("balanced")};

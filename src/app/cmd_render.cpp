@@ -11,6 +11,7 @@
 #include "app/headless_gl.h"
 #include "core/error.h"
 #include "core/image_io.h"
+#include "core/image_stats.h"
 #include "app/model_source.h"
 #include "geometry/line_mesh.h"
 #include "render/renderer.h"
@@ -28,6 +29,7 @@ constexpr const char* kUsage =
     "                       [--style NAME] [--shading flat|smooth] [--no-smoothing] [--one-sided]\n"
     "                       [--color r,g,b] [--out frame.png]\n"
     "                       [--mask mask.png] [--repeat N] [--copies N] [--beam classic|mame]\n"
+    "                       [--lit-share]\n"
     "Renders a model file (or builtin:cube, builtin:sphere, builtin:grid) headless to PNG. Without --eye the camera frames the model's bounding\n"
     "box from a 3/4 view. --mask writes the 1-pixel visible-spine mask (255 = line).\n"
     "--style: vector (default), vector-xray, toon, sketch, pop-art or halo (occluded and arcade\n"
@@ -37,7 +39,9 @@ constexpr const char* kUsage =
     "--repeat N renders N timed frames and prints the mean milliseconds of each pass.\n"
     "--copies N draws N instances of the model on a square grid in the xz plane (a scene of a\n"
     "chosen size for timing; the camera frames them all).\n"
-    "--beam picks the vector beam's look (default classic; `play` defaults to mame).\n";
+    "--beam picks the vector beam's look (default classic; `play` defaults to mame).\n"
+    "--lit-share prints the share of the picture's pixels whose brightest channel is above\n"
+    "1/255 (the haze figure; tools/haze measures the seed's hallway with it).\n";
 
 struct RenderOptions {
     std::string input;
@@ -54,6 +58,7 @@ struct RenderOptions {
     int repeat = 0;
     int copies = 1;
     std::string beam = "classic";
+    bool lit_share = false;
 };
 
 RenderOptions parse(Args args) {
@@ -70,6 +75,7 @@ RenderOptions parse(Args args) {
         else if (a == "--repeat") o.repeat = parse_int(a, cur.value(a), 1, 100000);
         else if (a == "--copies") o.copies = parse_int(a, cur.value(a), 1, 100000);
         else if (a == "--beam") o.beam = cur.value(a);
+        else if (a == "--lit-share") o.lit_share = true;
         else if (a == "--style") {
             o.style = parse_style(a, cur.value(a));
         } else if (a == "--no-smoothing") {
@@ -173,7 +179,11 @@ int cmd_render(Args args) {
         renderer.render(frame, meshes, render::Renderer::kOffscreen);
         if (o.repeat > 0 && i >= 2) timings.push_back(renderer.pass_times());
     }
-    write_png(o.out, Image{o.camera.size.x, o.camera.size.y, 4, renderer.read_color()});
+    const Image picture{o.camera.size.x, o.camera.size.y, 4, renderer.read_color()};
+    write_png(o.out, picture);
+    if (o.lit_share) {
+        std::fprintf(stdout, "lit share (brightest channel above 1/255): %.2f%%\n", 100.0 * lit_share(picture));
+    }
     if (!o.mask.empty()) write_png(o.mask, Image{o.camera.size.x, o.camera.size.y, 1, renderer.render_mask(frame, meshes)});
     print_timings(renderer, timings);
     if (context->debug().error_count() > 0) {

@@ -28,6 +28,7 @@ void set_beam_uniforms(const gl::Program& p, const BeamSettings& b, float preset
         p.set("u_beam_width", glm::vec4(1.0f, 1.0f, 0.0f, 1.0f));
         p.set("u_beam_shape", glm::vec4(0.0f));
         p.set("u_beam_seed", 0u);
+        p.set("u_beam_lengthen", 0.0f);
         return;
     }
     const float lo = beam_half_width_min(b, preset_half_width_px, target_height);
@@ -37,6 +38,7 @@ void set_beam_uniforms(const gl::Program& p, const BeamSettings& b, float preset
     p.set("u_beam_shape", glm::vec4(std::clamp(b.flicker, 0.0f, 1.0f), dwell_px, std::max(b.dwell_max, 1.0f),
                                     std::max(b.defocus, 0.0f)));
     p.set("u_beam_seed", static_cast<unsigned>(seed));
+    p.set("u_beam_lengthen", std::max(b.end_lengthening, 0.0f));
 }
 
 }  // namespace bz::render

@@ -64,7 +64,8 @@ struct EdgeRecord {
                                // mesh's edge list (for per-edge seeds); w: the scene::MeshId
     glm::uvec4 vertices;       // x, y: welded vertex ids of a and b in the mesh (for chaining
                                // edges into strokes: records sharing a vertex id and instance
-                               // meet); z, w: 0 (reserved)
+                               // meet); z: the record's first spine sample in the sample
+                               // buffer, w: its sample count (0: none; spine_samples.glsl)
 };
 static_assert(sizeof(EdgeRecord) == 176, "must match shaders/edge_record.glsl (std430)");
 static_assert(offsetof(EdgeRecord, ids) == 144, "must match shaders/edge_record.glsl (std430)");
@@ -73,11 +74,13 @@ static_assert(offsetof(EdgeRecord, ids) == 144, "must match shaders/edge_record.
 // DrawArraysIndirectCommand the quad pass draws with. The compute shader appends a record by
 // atomically adding kVerticesPerEdge to vertex_count, so the count needs no fix-up pass:
 // edges appended = vertex_count / kVerticesPerEdge (capped at the buffer's capacity).
+// After it, the spine-sample append counter.
 struct EdgeDrawCommand {
     std::uint32_t vertex_count = 0;
     std::uint32_t instance_count = 1;
     std::uint32_t first_vertex = 0;
     std::uint32_t base_instance = 0;
+    std::uint32_t samples_used = 0;  // spine samples asked for, including any past capacity
 };
 inline constexpr std::uint32_t kVerticesPerEdge = 6;  // two triangles per quad
 
@@ -87,5 +90,7 @@ inline constexpr unsigned kEdgePositionsBinding = 3;  // the mesh's positions (v
 inline constexpr unsigned kEdgeRecordsBinding = 4;    // EdgeRecord[] (written, then read)
 inline constexpr unsigned kEdgeCommandBinding = 5;    // EdgeDrawCommand (atomic counter)
 inline constexpr unsigned kVertexNormalsBinding = 6;  // the mesh's vertex normals (3 floats each)
+inline constexpr unsigned kSpineSamplesBinding = 7;   // one visibility word per spine sample
+inline constexpr unsigned kSpineSpansBinding = 8;     // per record: first and last visible sample
 
 }  // namespace bz::render

@@ -4,24 +4,43 @@
 
 namespace bz::render {
 
+namespace {
+
+// Grows by at least half again, so a slowly growing scene does not reallocate every frame.
+std::uint32_t grown(std::uint32_t current, std::size_t want, std::uint32_t max) {
+    const auto w = static_cast<std::uint32_t>(std::min<std::size_t>(want, max));
+    if (w <= current) return current;
+    return std::min(max, std::max(w, current + current / 2));
+}
+
+}  // namespace
+
 EdgeStorage::EdgeStorage() {
     GLint64 max_block = 0;
     glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &max_block);
     max_capacity_ = static_cast<std::uint32_t>(
         std::min<GLint64>(max_block / static_cast<GLint64>(sizeof(EdgeRecord)), 0x7FFFFFFF / kVerticesPerEdge));
+    max_samples_ = static_cast<std::uint32_t>(std::min<GLint64>(max_block / 4, 0x7FFFFFFF));
     const EdgeDrawCommand cmd;
     command_.set_data(&cmd, sizeof(cmd), GL_DYNAMIC_DRAW);
-    const std::uint32_t zero = 0;
-    kept_count_.set_data(&zero, sizeof(zero), GL_DYNAMIC_READ);
+    kept_count_.set_data(&cmd, sizeof(cmd), GL_DYNAMIC_READ);
     reserve(1024);
+    reserve_samples(std::size_t{1} << 16);
 }
 
 void EdgeStorage::reserve(std::size_t records) {
-    const std::uint32_t want = static_cast<std::uint32_t>(std::min<std::size_t>(records, max_capacity_));
-    if (want <= capacity_) return;
-    // Grow by at least half again, so a slowly growing scene does not reallocate every frame.
-    capacity_ = std::min(max_capacity_, std::max(want, capacity_ + capacity_ / 2));
+    const std::uint32_t next = grown(capacity_, records, max_capacity_);
+    if (next == capacity_) return;
+    capacity_ = next;
     records_.set_data(nullptr, static_cast<std::size_t>(capacity_) * sizeof(EdgeRecord), GL_DYNAMIC_COPY);
+    spans_.set_data(nullptr, static_cast<std::size_t>(capacity_) * 8 * sizeof(std::uint32_t), GL_DYNAMIC_COPY);
+}
+
+void EdgeStorage::reserve_samples(std::size_t samples) {
+    const std::uint32_t next = grown(sample_capacity_, samples, max_samples_);
+    if (next == sample_capacity_) return;
+    sample_capacity_ = next;
+    samples_.set_data(nullptr, static_cast<std::size_t>(sample_capacity_) * sizeof(std::uint32_t), GL_DYNAMIC_COPY);
 }
 
 void EdgeStorage::reset() {
@@ -35,14 +54,20 @@ std::size_t EdgeStorage::appended() const {
     return vertices / kVerticesPerEdge;
 }
 
-void EdgeStorage::keep_count() {
-    glCopyNamedBufferSubData(command_.id(), kept_count_.id(), 0, 0, sizeof(std::uint32_t));
+std::size_t EdgeStorage::samples_used() const {
+    std::uint32_t used = 0;
+    glGetNamedBufferSubData(command_.id(), offsetof(EdgeDrawCommand, samples_used), sizeof(used), &used);
+    return used;
 }
 
-std::size_t EdgeStorage::previous_appended() const {
-    std::uint32_t vertices = 0;
-    glGetNamedBufferSubData(kept_count_.id(), 0, sizeof(vertices), &vertices);
-    return vertices / kVerticesPerEdge;
+void EdgeStorage::keep_count() {
+    glCopyNamedBufferSubData(command_.id(), kept_count_.id(), 0, 0, sizeof(EdgeDrawCommand));
+}
+
+EdgeDrawCommand EdgeStorage::previous() const {
+    EdgeDrawCommand cmd;
+    glGetNamedBufferSubData(kept_count_.id(), 0, sizeof(cmd), &cmd);
+    return cmd;
 }
 
 }  // namespace bz::render

@@ -22,8 +22,11 @@ void lines_counted(const PassContext& ctx) {
 // records than it held (the mask must miss nothing; frames grow it for the next one).
 void edges_complete(const PassContext& ctx) {
     pass_edges(ctx);
-    if (const std::size_t n = ctx.edges.appended(); n > ctx.edges.capacity()) {
+    const std::size_t n = ctx.edges.appended();
+    const std::size_t samples = wants_spine_samples(ctx) ? ctx.edges.samples_used() : 0;
+    if (n > ctx.edges.capacity() || samples > ctx.edges.sample_capacity()) {
         ctx.edges.reserve(n);
+        ctx.edges.reserve_samples(samples);
         pass_edges(ctx);
     }
 }
@@ -74,7 +77,15 @@ bool compute_lines(const StyleDef& style, const RenderSettings& settings) {
     return style.fill == FillPass::none && settings.method == LineMethod::compute;
 }
 
+bool exact_mask_from_edges(const StyleDef& style, const RenderSettings& settings) {
+    return settings.method == LineMethod::compute && style.lines != LinePass::sketch;
+}
+
 }  // namespace
+
+bool mask_needs_edge_buffer(const StyleDef& style, const RenderSettings& settings) {
+    return exact_mask_from_edges(style, settings) || style_needs_edge_buffer(style, settings);
+}
 
 bool style_needs_edge_buffer(const StyleDef& style, const RenderSettings& settings) {
     return style.lines == LinePass::outline || style.lines == LinePass::sketch ||
@@ -90,10 +101,12 @@ std::vector<FramePass> frame_passes(const StyleDef& style, const RenderSettings&
             list.push_back({"prepass", pass_outline_prepass});
             list.push_back({"outline", outline_baseline});
         } else if (settings.method == LineMethod::compute) {
-            // The edges pass appends every visible feature edge; the quads draw the count it
-            // appended (an indirect draw, no read-back).
+            // The edges pass appends every visible feature edge, the visibility pass runs the
+            // spine test once per spine sample of each, and the quads draw the count the edges
+            // pass appended (indirect dispatch and draw, no read-back).
             list.push_back({"prepass", pass_prepass});
             list.push_back({"edges", pass_edges});
+            list.push_back({"visibility", pass_spine_visibility});
             list.push_back({"lines", edge_quads_counted});
         } else {
             list.push_back({"prepass", pass_prepass});
@@ -131,8 +144,11 @@ std::vector<FramePass> frame_passes(const StyleDef& style, const RenderSettings&
 std::vector<FramePass> mask_passes(const StyleDef& style, const RenderSettings& settings) {
     if (style.fill == FillPass::none && settings.method == LineMethod::image_outline)
         return {{"prepass", pass_outline_prepass}, {"outline", outline_mask}};
-    if (compute_lines(style, settings))
-        return {{"prepass", pass_prepass}, {"edges", edges_complete}, {"lines", edge_quads_mask}};
+    if (exact_mask_from_edges(style, settings))
+        return {{"prepass", pass_prepass},
+                {"edges", edges_complete},
+                {"visibility", pass_spine_visibility},
+                {"lines", edge_quads_mask}};
     if (style.lines == LinePass::sketch)
         return {{"prepass", pass_prepass}, {"edges", edges_complete}, {"strokes", sketch_mask}};
     return {{"prepass", pass_prepass}, {"lines", lines_mask}};

@@ -15,6 +15,9 @@ struct FramePass {
 // Whether the frame's passes read the edge buffer (the mesh cache then builds edge lists): the
 // stroke styles do, and the beam styles with LineMethod::compute.
 bool style_needs_edge_buffer(const StyleDef& style, const RenderSettings& settings);
+// The same for the mask passes: with LineMethod::compute every exact-line style's mask is
+// drawn from the edge buffer, so that it is the vector style's mask to the pixel.
+bool mask_needs_edge_buffer(const StyleDef& style, const RenderSettings& settings);
 
 std::vector<FramePass> frame_passes(const StyleDef& style, const RenderSettings& settings);
 

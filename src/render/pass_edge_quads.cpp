@@ -10,6 +10,8 @@ void pass_edge_quads(const PassContext& ctx, bool mask_mode) {
     begin_line_target(ctx, program, mask_mode);
     program.set("u_capacity", ctx.edges.capacity());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEdgeRecordsBinding, ctx.edges.records().id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSpineSamplesBinding, ctx.edges.samples().id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSpineSpansBinding, ctx.edges.spans().id());
     glBindBuffer(GL_DRAW_INDIRECT_BUFFER, ctx.edges.command().id());
     ctx.empty_vao.bind();
     glDrawArraysIndirect(GL_TRIANGLES, nullptr);

@@ -23,7 +23,11 @@ void pass_edges(const PassContext& ctx) {
                  static_cast<std::size_t>(b.instance_count);
     }
     // A previous frame that overflowed asks for more; a frame that cannot overflow gets it all.
-    ctx.edges.reserve(std::min(worst, std::max(kInitialRecords, ctx.edges.previous_appended() + 1024)));
+    const EdgeDrawCommand previous = ctx.edges.previous();
+    ctx.edges.reserve(
+        std::min(worst, std::max(kInitialRecords, std::size_t{previous.vertex_count / kVerticesPerEdge} + 1024)));
+    const bool samples = wants_spine_samples(ctx);
+    if (samples) ctx.edges.reserve_samples(std::size_t{previous.samples_used} + previous.samples_used / 4);
     ctx.edges.reset();
 
     const gl::Program& program = ctx.programs.edges;
@@ -33,9 +37,14 @@ void pass_edges(const PassContext& ctx) {
     program.set("u_near", ctx.cam.near);
     program.set("u_far", ctx.cam.far);
     program.set("u_capacity", ctx.edges.capacity());
+    program.set("u_sample_capacity", samples ? ctx.edges.sample_capacity() : 0u);
+    // A fragment in the viewport lies within its beam's half-width of its spine point: cover that.
+    program.set("u_sample_margin", 16.0f);
+    program.set("u_sample_spacing", ctx.settings.spine_sample_spacing_px);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, ctx.instances.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEdgeRecordsBinding, ctx.edges.records().id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEdgeCommandBinding, ctx.edges.command().id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSpineSpansBinding, ctx.edges.spans().id());
     for (const Batch& b : ctx.batches.batches) {
         const GpuMesh& mesh = ctx.gpu_meshes.get(ctx.meshes, b.mesh, b.lod);
         if (mesh.edge_count == 0) continue;

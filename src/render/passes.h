@@ -71,6 +71,11 @@ void set_line_uniforms(const gl::Program& program, const PassContext& ctx, float
 // Fills the edge buffer from every batch's edge list (edges.comp): the strokes of the filled
 // styles and LineMethod::compute read it.
 void pass_edges(const PassContext& ctx);
+// Whether the edges pass reserves spine samples: LineMethod::compute's beam lines with
+// occlusion (pass_spine_visibility.cpp).
+bool wants_spine_samples(const PassContext& ctx);
+// LineMethod::compute: the spine test once per spine sample of every record, for the quads.
+void pass_spine_visibility(const PassContext& ctx);
 // LineMethod::compute: one quad per edge-buffer record (pass_edge_quads.cpp), with the same
 // fragment stage as pass_lines.
 void pass_edge_quads(const PassContext& ctx, bool mask_mode);

@@ -39,9 +39,10 @@ Programs load_programs(const RenderSettings& settings) {
                           stage(GL_FRAGMENT_SHADER, "lines.frag")},
                          {"MASK_MODE 1"});
     p.edges = gl::Program({stage(GL_COMPUTE_SHADER, "edges.comp")});
-    p.edge_quads = gl::Program({stage(GL_VERTEX_SHADER, "edge_quad.vert"), stage(GL_FRAGMENT_SHADER, "lines.frag")});
+    p.spine_visibility = gl::Program({stage(GL_COMPUTE_SHADER, "spine_visibility.comp")});
+    p.edge_quads = gl::Program({stage(GL_VERTEX_SHADER, "edge_quad.vert"), stage(GL_FRAGMENT_SHADER, "edge_quad.frag")});
     p.edge_quads_mask = gl::Program(
-        {stage(GL_VERTEX_SHADER, "edge_quad.vert"), stage(GL_FRAGMENT_SHADER, "lines.frag")}, {"MASK_MODE 1"});
+        {stage(GL_VERTEX_SHADER, "edge_quad.vert"), stage(GL_FRAGMENT_SHADER, "edge_quad.frag")}, {"MASK_MODE 1"});
     p.hud = gl::Program({stage(GL_VERTEX_SHADER, "hud.vert"), stage(GL_GEOMETRY_SHADER, "hud.geom"),
                          stage(GL_FRAGMENT_SHADER, "hud.frag")});
     p.bloom_down = gl::Program({stage(GL_VERTEX_SHADER, "fullscreen.vert"),

@@ -190,7 +190,7 @@ std::vector<std::uint8_t> Renderer::render_mask(const scene::FrameList& frame,
     Impl& m = *impl_;
     const CameraMatrices cam = m.camera(frame);
     const StyleDef& style = m.style_of(frame);
-    m.gpu_meshes.set_edge_lists(style_needs_edge_buffer(style, m.settings));
+    m.gpu_meshes.set_edge_lists(mask_needs_edge_buffer(style, m.settings));
     const FrameBatches batches = m.prepare(frame, meshes, cam);
     const PassContext ctx = m.context(meshes, batches, cam, style, 0, m.targets.output_fbo.id(),
                                       frame, nullptr);

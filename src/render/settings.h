@@ -41,6 +41,13 @@ inline constexpr LineMethod kDefaultLineMethod = LineMethod::compute;
 // overdrive defocus, frame-rate independent phosphor). Widths are full widths in pixels on a
 // 1080-line screen, scaled to the target's height.
 enum class BeamBlend { max, additive };
+
+// MAME's unit of beam width, in pixels of a 1080-line screen. vector.cpp divides the width by
+// VECTOR_WIDTH_DENOM (512) in coordinates normalised to the game screen, and render.cpp scales
+// a line's width by the smaller of the screen container's x and y scales (its size in target
+// pixels): one unit is 1/512 of the screen's smaller side, which for a landscape screen is its
+// height. beamzone fills the window, so it scales by the target's height.
+inline constexpr float kMameBeamWidthUnitPx = 1080.0f / 512.0f;
 enum class PhosphorDecay { off, exponential, power_law };
 enum class BloomKind { gaussian, mip_chain };
 
@@ -50,8 +57,8 @@ struct BeamSettings {
     // Width = min + sigmoid(intensity * nominal, weight) * (max - min) (MAME's normalized
     // tunable sigmoid); min == max keeps the preset's constant line width.
     bool intensity_width = false;
-    float width_min_px = 2.1f;
-    float width_max_px = 8.4f;
+    float width_min_px = 1.0f * kMameBeamWidthUnitPx;  // MAME's 1 and 4 (vector-mono.ini)
+    float width_max_px = 4.0f * kMameBeamWidthUnitPx;
     float intensity_weight = 0.75f;
     float nominal = 0.75f;        // the MAME intensity (0..1) of a line of intensity 1
     float flicker = 0.0f;         // intensity -= intensity * random * flicker, per line
@@ -62,6 +69,11 @@ struct BeamSettings {
     // Overdrive (MAME issue #14180): above MAME intensity 1 the spot widens and softens
     // instead of clipping: width x (1 + defocus * excess), peak / that factor.
     float defocus = 0.0f;
+    // MAME lengthens every vector by 3/8 of the beam's full width at each end
+    // (src/emu/video/vector.cpp, "extend vector line by 3/8 beam_width on both sides"): this
+    // share of the width is added past both end points. Visual only: whether an end shows is
+    // still decided at the edge's own end point (shaders/beam_ends.glsl).
+    float end_lengthening = 0.0f;
     PhosphorDecay phosphor = PhosphorDecay::off;
     float persistence_ms = 20.0f;  // exponential: tau; power law: the time to half brightness
     float power_law_exponent = 2.0f;
@@ -88,6 +100,10 @@ struct RenderSettings {
     // allowance may add: a steep face must not see through a thin surface in front of it.
     float depth_bias = 2e-4f;
     float line_half_width_px = 2.0f;
+    // LineMethod::compute: the spine test runs once per sample this many pixels apart along
+    // each edge (pass_spine_visibility.cpp) and fragments look it up; 0 runs it in every line
+    // fragment instead. 1 px scored the same F1 as every fragment (bench --accuracy).
+    float spine_sample_spacing_px = 1.0f;
     float crease_angle_deg = 60.0f;
     BloomResolution bloom_resolution = BloomResolution::half;
     int bloom_taps = 9;             // linear-sampled taps per direction (odd)

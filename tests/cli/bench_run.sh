@@ -16,7 +16,7 @@ source "$(dirname "$0")/lib/expect.bash"
 expect 0 "p50" bench "$level" --frames 6 --warmup 2 --size 192x108 --preset fast --out "$work/one"
 for f in summary.json frames.csv frametime.png; do [ -s "$work/one/$f" ] || fail "bench wrote no $f"; done
 # The compute line method (the presets' default) times its edge extraction before the lines.
-head -1 "$work/one/frames.csv" | grep -Eq "^Config,Frame,TimeInSeconds,MsBetweenPresents,MsCPUBusy,MsPass_prepass,(MsPass_edges,)?MsPass_lines" ||
+head -1 "$work/one/frames.csv" | grep -Eq "^Config,Frame,TimeInSeconds,MsBetweenPresents,MsCPUBusy,MsPass_prepass,(MsPass_edges,(MsPass_visibility,)?)?MsPass_lines" ||
   fail "frames.csv header: $(head -1 "$work/one/frames.csv")"
 [ "$(wc -l <"$work/one/frames.csv")" -eq 7 ] || fail "frames.csv should have a header and 6 rows"
 for key in '"p50"' '"p99"' '"low_1pct"' '"timing_method": "cpu_finish"' '"triangles_submitted_mean"' '"feature_edges_mean"'; do
@@ -34,7 +34,7 @@ expect 0 "goal high: mean F1" bench "$level" --sweep --frames 4 --warmup 2 --rou
 for f in sweep.json tradeoff.png summary.json frames.csv frametime.png masks/reference_frame0001.png; do
   [ -s "$work/sweep/$f" ] || fail "sweep wrote no $f"
 done
-for cfg in fast balanced high image-outline balanced-no-culling balanced-no-lod balanced-no-instancing; do
+for cfg in fast balanced high fast-geometry-shader balanced-per-fragment image-outline balanced-no-culling balanced-no-lod balanced-no-instancing; do
   grep -q "\"label\": \"$cfg\"" "$work/sweep/sweep.json" || fail "sweep.json lacks $cfg"
 done
 

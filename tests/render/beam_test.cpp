@@ -1,13 +1,16 @@
 // The vector beam (render::BeamSettings): phosphor decay in elapsed time, additive against max
-// blending, beam dwell, overdrive defocus and flicker. HUD lines are drawn through the same
-// beam maths as scene lines (shaders/beam_width.glsl) and need no meshes or camera, so these
-// tests draw HUD lines and read the HDR picture that bloom and composite see.
+// blending, beam dwell, overdrive defocus, flicker and MAME's lengthened ends. HUD lines are
+// drawn through the same beam maths as scene lines (shaders/beam_width.glsl) and need no meshes
+// or camera, so most tests draw HUD lines and read the HDR picture that bloom and composite
+// see; the lengthening tests also draw scene lines, in both line methods.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 #include <vector>
 
+#include "geometry/mesh.h"
 #include "render/render_fixture.h"
 
 using bz::test::RenderTest;
@@ -194,4 +197,129 @@ TEST_F(BeamTest, FlickerRepeatsForTheSameSeedAndChangesWithIt) {
     const float full = peak(green(f));
     EXPECT_LE(peak(c), full + 1e-4f);
     for (int i = 0; i < 16; ++i) EXPECT_GE(at(c, 160, 20 + 12 * i), 0.5f * full - 1e-3f);
+}
+
+namespace {
+
+// The camera of the lengthening tests: looking down -z at the origin, so that at z = 0 one
+// world unit is one pixel and world (0, 0) is the picture's centre (window x 160, y 120).
+constexpr double kEyeDistance = 120.0 / 0.57735026918962576;  // kH / 2 / tan(30 deg)
+
+// World x at depth z of window x `px` (pixels from the left).
+double world_x(double px, double z) { return (px - kW * 0.5) * (kEyeDistance - z) / kEyeDistance; }
+
+// A flat rectangle facing the camera, window x `x0`..`x1`, window rows (from the top) centred
+// on `row` and `rows` tall, at depth z. Its four sides are boundary edges, so a strip 0.2 px
+// tall draws as one horizontal line.
+bz::geo::TriMesh rectangle(double x0, double x1, double row, double rows, double z) {
+    const double s = (kEyeDistance - z) / kEyeDistance;
+    const float l = static_cast<float>(world_x(x0, z)), r = static_cast<float>(world_x(x1, z));
+    const float y = static_cast<float>((kH * 0.5 - row - 0.5) * s), h = static_cast<float>(rows * 0.5 * s);
+    const float zf = static_cast<float>(z);
+    return {{{l, y - h, zf}, {r, y - h, zf}, {r, y + h, zf}, {l, y + h, zf}}, {0, 1, 2, 0, 2, 3}};
+}
+
+// Where along row `y` the brightness first and last reaches half of the row's peak, with
+// linear interpolation between pixel centres (window x, pixels from the left).
+std::pair<double, double> half_peak_extent(const std::vector<float>& img, int y) {
+    const auto v = [&](int x) { return static_cast<double>(img[static_cast<std::size_t>(y) * kW + x]); };
+    double top = 0.0;
+    for (int x = 0; x < kW; ++x) top = std::max(top, v(x));
+    const double half = 0.5 * top;
+    double first = -1.0, last = -1.0;
+    for (int x = 1; x < kW; ++x) {
+        const double a = v(x - 1), b = v(x);
+        if (a < half && b >= half && first < 0.0) first = x - 0.5 + (half - a) / (b - a);
+        if (a >= half && b < half) last = x - 0.5 + (a - half) / (a - b);
+    }
+    return {first, last};
+}
+
+bz::scene::Camera facing_camera() {
+    bz::scene::Camera c;
+    c.eye = {0.0, 0.0, kEyeDistance};
+    c.target = {0.0, 0.0, 0.0};
+    c.fov_y_deg = 60.0;
+    return c;
+}
+
+// The row holding the most light (a strip's line; its short ends, lengthened, reach a few rows
+// up and down as bright, but hold far less light in all).
+int brightest_row(const std::vector<float>& img) {
+    int best = 0;
+    double best_sum = -1.0;
+    for (int y = 0; y < kH; ++y) {
+        double sum = 0.0;
+        for (int x = 0; x < kW; ++x) sum += static_cast<double>(img[static_cast<std::size_t>(y) * kW + x]);
+        if (sum > best_sum) {
+            best_sum = sum;
+            best = y;
+        }
+    }
+    return best;
+}
+
+}  // namespace
+
+// MAME (src/emu/video/vector.cpp) moves both ends of every vector out by 3/8 of the beam's
+// width. With a constant half-width of 4 px (width 8) that is 3 px at each end.
+TEST_F(BeamTest, HudLineEndsAreLengthenedByThreeEighthsOfTheWidth) {
+    auto s = plain();
+    s.line_half_width_px = 4.0f;
+    use(s);
+    const auto before = half_peak_extent(green(lit_frame(0.0)), 120);
+    s.beam.end_lengthening = 0.375f;
+    use(s);
+    const auto after = half_peak_extent(green(lit_frame(0.0)), 120);
+    EXPECT_NEAR(before.first - after.first, 3.0, 0.2) << "left end";
+    EXPECT_NEAR(after.second - before.second, 3.0, 0.2) << "right end";
+    // The middle of the line is untouched.
+    EXPECT_NEAR(after.second - after.first, before.second - before.first + 6.0, 0.3);
+}
+
+TEST_F(BeamTest, SceneLineEndsAreLengthenedInBothMethodsAndTheMaskIsNot) {
+    frame.camera = facing_camera();
+    add_item(add_mesh("strip", rectangle(60.5, 260.5, 120.0, 0.2, 0.0)));
+    for (const auto method : bz::render::feature_line_methods()) {
+        SCOPED_TRACE(bz::render::line_method_name(method));
+        auto s = plain();
+        s.method = method;
+        s.line_half_width_px = 4.0f;
+        use(s);
+        const auto img_before = green(frame);
+        const int row = brightest_row(img_before);
+        const auto before = half_peak_extent(img_before, row);
+        const bz::test::Mask mask_before = mask("beam_strip");
+        s.beam.end_lengthening = 0.375f;
+        use(s);
+        const auto after = half_peak_extent(green(frame), row);
+        EXPECT_NEAR(before.first - after.first, 3.0, 0.25) << "left end";
+        EXPECT_NEAR(after.second - before.second, 3.0, 0.25) << "right end";
+        const bz::test::Mask mask_after = mask("beam_strip_lengthened");
+        EXPECT_GT(mask_after.count(), 150);
+        EXPECT_EQ(mask_after.pixels, mask_before.pixels) << "the accuracy mask ignores the beam's ends";
+    }
+}
+
+// The strip's right end lies 1.5 px behind a red square in front of it: hidden. Lengthened,
+// the end would reach past the square's right side; the end point decides, so it stays dark.
+// (Deciding at the lengthened spine point instead would light a green stub there.)
+TEST_F(BeamTest, ALengthenedEndShowsOnlyWhereItsEndPointIsVisible) {
+    frame.camera = facing_camera();
+    add_item(add_mesh("strip", rectangle(60.5, 200.0, 120.0, 0.2, 0.0)));
+    add_item(add_mesh("square", rectangle(180.0, 201.5, 120.0, 40.0, 10.0)));
+    frame.items.back().color = glm::vec3(1.0f, 0.0f, 0.0f);  // its own lines hold no green
+    for (const auto method : bz::render::feature_line_methods()) {
+        SCOPED_TRACE(bz::render::line_method_name(method));
+        auto s = plain();
+        s.method = method;
+        s.line_half_width_px = 4.0f;
+        s.beam.end_lengthening = 0.375f;
+        use(s);
+        const auto img = green(frame);
+        const int row = brightest_row(img);
+        EXPECT_GT(at(img, 150, row), 0.5f) << "the visible part of the strip";
+        for (int x = 202; x < 212; ++x) EXPECT_EQ(at(img, x, row), 0.0f) << "x " << x;
+        for (int x = 184; x < 200; ++x) EXPECT_EQ(at(img, x, row), 0.0f) << "behind the square, x " << x;
+    }
 }

