@@ -95,13 +95,10 @@ TEST_F(LineMethodsTest, SpineSamplesScoreAsTheTestInEveryFragment) {
     // LineMethod::compute runs the spine test once per spine sample (1 px apart) and the
     // fragments look it up; spacing 0 runs it in every fragment instead. Same lines, and the
     // same score against the exact reference.
-    for (const char* path : kModels) {
+    for (const char* path : bz::test::kRealModels) {
         SCOPED_TRACE(path);
         ASSERT_TRUE(std::filesystem::exists(path)) << "install assimp-testmodels (tools/install-deps)";
-        frame.items.clear();
-        const auto id = add_mesh(path, bz::geo::import_model(path));
-        add_item(id);
-        frame.camera = bz::render::frame_bounds(meshes.bounds(id), 50.0, double(kWidth) / kHeight);
+        show_model(path);
         const std::string name = "samples_" + std::filesystem::path(path).stem().string();
         settings = bz::render::preset("balanced");
         ASSERT_GT(settings.spine_sample_spacing_px, 0.0f);
