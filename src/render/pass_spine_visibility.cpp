@@ -1,3 +1,5 @@
+#include <algorithm>
+
 #include "render/passes.h"
 
 namespace bz::render {
@@ -9,8 +11,11 @@ namespace {
 // each group's invocations anew, which costs as much as the spine tests of a short edge.
 // Measured on llvmpipe (800x600, the seed's hallway / Suzanne): 32 invocations per group
 // 8.0 / 3.3 ms, 8 invocations 4.6 / 1.4 ms; 128 or 1024 groups the same within the noise.
-// 1024 groups keep 8192 invocations busy on a GPU.
-constexpr GLuint kVisibilityGroups = 1024;
+// 1024 groups keep 8192 invocations busy on a GPU. A small frame gets fewer: about one group
+// per two records of the frame before (any count is correct, groups stride over the records),
+// since every group costs llvmpipe a start-up even when it finds no record.
+constexpr GLuint kMaxVisibilityGroups = 1024;
+constexpr GLuint kMinVisibilityGroups = 16;
 
 }  // namespace
 
@@ -38,7 +43,10 @@ void pass_spine_visibility(const PassContext& ctx) {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSpineSpansBinding, edges.spans().id());
     // A fixed number of groups, each reading the appended count itself: no indirect dispatch,
     // no read-back.
-    glDispatchCompute(kVisibilityGroups, 1, 1);
+    const std::size_t previous = edges.previous().vertex_count / kVerticesPerEdge;
+    glDispatchCompute(static_cast<GLuint>(std::clamp<std::size_t>(previous / 2, kMinVisibilityGroups,
+                                                                  kMaxVisibilityGroups)),
+                      1, 1);
     // The quad pass reads the samples in its fragments and the spans in its vertices.
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
