@@ -12,7 +12,7 @@
 #include "core/file_io.h"
 #include "core/hash.h"
 #include "core/image_io.h"
-#include "geometry/line_mesh.h"
+#include "geometry/line_mesh/line_mesh.h"
 #include "render/camera_framing.h"
 #include "render/reference_frame.h"
 

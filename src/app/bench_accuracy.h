@@ -11,7 +11,7 @@
 
 #include "app/bench_run.h"
 #include "app/bench_sweep.h"
-#include "geometry/mask_score.h"
+#include "geometry/reference/mask_score.h"
 #include "scene/frame_list.h"
 
 namespace bz::app {

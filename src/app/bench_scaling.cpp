@@ -3,7 +3,7 @@
 #include <cstdio>
 
 #include "core/error.h"
-#include "geometry/subdivide.h"
+#include "geometry/generated/subdivide.h"
 
 namespace bz::app {
 

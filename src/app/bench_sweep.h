@@ -9,7 +9,7 @@
 #include "app/bench_plots.h"
 #include "app/bench_report.h"
 #include "app/bench_run.h"
-#include "geometry/mask_score.h"
+#include "geometry/reference/mask_score.h"
 #include "scene/mesh_library.h"
 
 namespace bz::app {

@@ -9,7 +9,7 @@
 #include "app/parse_command.h"
 #include "core/error.h"
 #include "core/image_io.h"
-#include "geometry/mask_score.h"
+#include "geometry/reference/mask_score.h"
 
 namespace bz::app {
 

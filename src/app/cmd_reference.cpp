@@ -1,4 +1,4 @@
-// beamzone reference: the exact CPU line mask (geometry/reference.h) of a model, or of a
+// beamzone reference: the exact CPU line mask (geometry/reference/reference.h) of a model, or of a
 // level's benchmark frame, in the same format as `render --mask`.
 #include <chrono>
 #include <cmath>
@@ -15,7 +15,7 @@
 #include "app/model_source.h"
 #include "core/error.h"
 #include "core/image_io.h"
-#include "geometry/line_mesh.h"
+#include "geometry/line_mesh/line_mesh.h"
 #include "level/loader.h"
 #include "render/reference_frame.h"
 

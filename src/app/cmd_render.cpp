@@ -13,7 +13,7 @@
 #include "core/image_io.h"
 #include "core/image_stats.h"
 #include "app/model_source.h"
-#include "geometry/line_mesh.h"
+#include "geometry/line_mesh/line_mesh.h"
 #include "render/renderer.h"
 
 #include <glm/gtc/matrix_transform.hpp>

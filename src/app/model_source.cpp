@@ -2,8 +2,8 @@
 
 #include "core/error.h"
 #include "game/models.h"
-#include "geometry/import.h"
-#include "geometry/primitives.h"
+#include "geometry/import/import.h"
+#include "geometry/generated/primitives.h"
 
 namespace bz::app {
 

@@ -8,7 +8,7 @@
 #include "game/models.h"
 #include "game/obstacle_factories.h"
 #include "game/level_models.h"
-#include "geometry/line_mesh.h"
+#include "geometry/line_mesh/line_mesh.h"
 
 namespace bz::game {
 

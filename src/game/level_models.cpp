@@ -1,8 +1,8 @@
 #include "game/level_models.h"
 
 #include "core/error.h"
-#include "geometry/import.h"
-#include "geometry/line_mesh.h"
+#include "geometry/import/import.h"
+#include "geometry/line_mesh/line_mesh.h"
 
 namespace bz::game {
 

@@ -4,7 +4,7 @@
 // limits and the same folders, so that a level `check` passes is a level `play` can load.
 #include <string>
 
-#include "geometry/import_limits.h"
+#include "geometry/import/import_limits.h"
 #include "geometry/mesh.h"
 #include "level/level.h"
 

@@ -4,8 +4,8 @@
 #include <cmath>
 
 #include "game/models.h"
-#include "geometry/import.h"
-#include "geometry/line_mesh.h"
+#include "geometry/import/import.h"
+#include "geometry/line_mesh/line_mesh.h"
 #include "level/kinds.h"
 
 namespace bz::game {

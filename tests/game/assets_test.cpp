@@ -8,7 +8,7 @@
 #include "game/backdrop.h"
 #include "game/models.h"
 #include "game/obstacle_factories.h"
-#include "geometry/line_mesh.h"
+#include "geometry/line_mesh/line_mesh.h"
 #include "level/kinds.h"
 #include "scene/shapes.h"
 #include "test_world.h"
