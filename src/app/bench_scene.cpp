@@ -4,10 +4,10 @@
 #include <cstdio>
 
 #include "core/error.h"
-#include "game/autopilot.h"
-#include "game/backdrop.h"
-#include "game/difficulty.h"
-#include "game/hud.h"
+#include "game/difficulty/autopilot.h"
+#include "game/assets/backdrop.h"
+#include "game/difficulty/difficulty.h"
+#include "game/hud/hud.h"
 
 namespace bz::app {
 

@@ -7,9 +7,9 @@
 #include <optional>
 #include <string>
 
-#include "game/assets.h"
-#include "game/replay.h"
-#include "game/world.h"
+#include "game/assets/assets.h"
+#include "game/records/replay.h"
+#include "game/world/world.h"
 #include "level/level.h"
 #include "scene/frame_list.h"
 #include "scene/mesh_library.h"

@@ -6,7 +6,7 @@
 
 #include "app/commands.h"
 #include "core/error.h"
-#include "game/level_models.h"
+#include "game/assets/level_models.h"
 #include "level/loader.h"
 
 namespace bz::app {

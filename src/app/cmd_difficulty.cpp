@@ -12,8 +12,8 @@
 #include "app/parse_command.h"
 #include "core/file_io.h"
 #include "core/paths.h"
-#include "game/assets.h"
-#include "game/difficulty_probe.h"
+#include "game/assets/assets.h"
+#include "game/difficulty/difficulty_probe.h"
 #include "level/loader.h"
 
 namespace bz::app {

@@ -21,7 +21,7 @@
 #include "core/output_path.h"
 #include "core/paths.h"
 #include "game/default_level.h"
-#include "game/replay.h"
+#include "game/records/replay.h"
 #include "level/loader.h"
 #include "platform/pref_paths.h"
 #include "render/settings.h"

@@ -15,11 +15,11 @@
 #include "app/replay_level.h"
 #include "core/error.h"
 #include "core/paths.h"
-#include "game/assets.h"
-#include "game/autopilot.h"
+#include "game/assets/assets.h"
+#include "game/difficulty/autopilot.h"
 #include "game/default_level.h"
-#include "game/difficulty.h"
-#include "game/replay.h"
+#include "game/difficulty/difficulty.h"
+#include "game/records/replay.h"
 #include "level/loader.h"
 
 namespace bz::app {

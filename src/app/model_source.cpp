@@ -1,7 +1,7 @@
 #include "app/model_source.h"
 
 #include "core/error.h"
-#include "game/models.h"
+#include "game/assets/models.h"
 #include "geometry/import/import.h"
 #include "geometry/generated/primitives.h"
 

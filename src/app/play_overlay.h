@@ -1,6 +1,6 @@
 #pragma once
 // Text the play loop lays over the game's own HUD, each kind in the region the HUD layout
-// (game/hud_layout.h) reserves for it: errors (level, model, shader, settings) in the error
+// (game/hud/hud_layout.h) reserves for it: errors (level, model, shader, settings) in the error
 // box under the radar band, short notices (screenshot saved, volume) along the bottom, and the
 // footer's frame-rate readout. Drawn with the vector font so it glows like everything else.
 #include <array>

@@ -6,7 +6,7 @@
 
 #include "app/menu/play_menus.h"
 #include "core/interrupt.h"
-#include "game/highscores.h"
+#include "game/records/highscores.h"
 #include "level/level.h"
 #include "platform/free_fly.h"
 #include "platform/input.h"

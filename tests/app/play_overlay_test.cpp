@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "game/hud_layout.h"
+#include "game/hud/hud_layout.h"
 
 namespace bz::app {
 namespace {

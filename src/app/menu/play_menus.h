@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "app/menu/menu_page.h"
-#include "game/highscores.h"
+#include "game/records/highscores.h"
 #include "platform/input.h"
 #include "platform/settings.h"
 
