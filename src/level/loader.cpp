@@ -4,9 +4,9 @@
 
 #include "core/error.h"
 #include "core/file_io.h"
-#include "level/sections.h"
-#include "level/syntax.h"
-#include "level/table_reader.h"
+#include "level/sections/sections.h"
+#include "level/syntax/syntax.h"
+#include "level/sections/table_reader.h"
 
 namespace bz::level {
 namespace fs = std::filesystem;

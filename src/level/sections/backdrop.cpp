@@ -1,7 +1,7 @@
 #include <array>
 
 #include "level/loader.h"
-#include "level/sections.h"
+#include "level/sections/sections.h"
 
 namespace bz::level {
 

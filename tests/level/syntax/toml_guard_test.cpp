@@ -3,8 +3,8 @@
 #include <gtest/gtest.h>
 
 #include "level/loader.h"
-#include "level/toml_scan.h"
-#include "level_test_util.h"
+#include "level/syntax/toml_scan.h"
+#include "level/level_test_util.h"
 
 namespace bz::level {
 namespace {

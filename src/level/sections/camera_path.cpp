@@ -1,6 +1,6 @@
 #include <array>
 
-#include "level/sections.h"
+#include "level/sections/sections.h"
 
 namespace bz::level::detail {
 

@@ -2,7 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "level/loader.h"
-#include "level_test_util.h"
+#include "level/level_test_util.h"
 
 namespace bz::level {
 namespace {

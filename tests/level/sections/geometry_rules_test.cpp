@@ -5,8 +5,8 @@
 #include <cmath>
 
 #include "level/kinds.h"
-#include "level/placement.h"
-#include "level/suggest.h"
+#include "level/sections/placement.h"
+#include "level/sections/suggest.h"
 
 namespace bz::level {
 namespace {

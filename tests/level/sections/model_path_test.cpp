@@ -1,12 +1,12 @@
 // Model paths: resolved next to the level file, confined to the level's folder or data/.
-#include "level/model_path.h"
+#include "level/sections/model_path.h"
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
 
 #include "level/loader.h"
-#include "level_test_util.h"
+#include "level/level_test_util.h"
 
 namespace bz::level {
 namespace {

@@ -1,4 +1,4 @@
-#include "level/suggest.h"
+#include "level/sections/suggest.h"
 
 #include <algorithm>
 #include <vector>

@@ -1,4 +1,4 @@
-#include "level/placement.h"
+#include "level/sections/placement.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "level/model_path.h"
+#include "level/sections/model_path.h"
 
 #include <algorithm>
 #include <array>

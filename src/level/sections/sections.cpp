@@ -1,9 +1,9 @@
-#include "level/sections.h"
+#include "level/sections/sections.h"
 
 #include <algorithm>
 #include <array>
 
-#include "level/suggest.h"
+#include "level/sections/suggest.h"
 #include "scene/style.h"
 
 namespace bz::level::detail {

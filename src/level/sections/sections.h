@@ -9,8 +9,8 @@
 
 #include "level/level.h"
 #include "level/loader.h"
-#include "level/model_path.h"
-#include "level/table_reader.h"
+#include "level/sections/model_path.h"
+#include "level/sections/table_reader.h"
 
 namespace bz::level::detail {
 

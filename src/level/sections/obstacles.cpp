@@ -1,9 +1,9 @@
 #include <array>
 
 #include "level/kinds.h"
-#include "level/model_path.h"
-#include "level/placement.h"
-#include "level/sections.h"
+#include "level/sections/model_path.h"
+#include "level/sections/placement.h"
+#include "level/sections/sections.h"
 
 namespace bz::level::detail {
 

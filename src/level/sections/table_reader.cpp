@@ -1,9 +1,9 @@
-#include "level/table_reader.h"
+#include "level/sections/table_reader.h"
 
 #include <cmath>
 #include <cstdio>
 
-#include "level/suggest.h"
+#include "level/sections/suggest.h"
 
 namespace bz::level {
 

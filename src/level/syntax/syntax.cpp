@@ -1,10 +1,10 @@
-#include "level/syntax.h"
+#include "level/syntax/syntax.h"
 
 #include <algorithm>
 #include <cstdio>
 #include <optional>
 
-#include "level/toml_scan.h"
+#include "level/syntax/toml_scan.h"
 
 static_assert(TOML_EXCEPTIONS, "the level loader expects toml++ to report errors by exception");
 
