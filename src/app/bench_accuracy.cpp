@@ -9,7 +9,7 @@
 
 #include "app/model_source.h"
 #include "core/error.h"
-#include "core/file_io.h"
+#include "core/io/file_io.h"
 #include "core/hash.h"
 #include "core/image_io.h"
 #include "geometry/line_mesh/line_mesh.h"

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <string>
 
-#include "core/printable.h"
+#include "core/text/printable.h"
 
 namespace bz::app {
 

@@ -6,8 +6,8 @@
 #include <string>
 
 #include "app/bench_accuracy.h"
-#include "core/output_path.h"
-#include "core/printable.h"
+#include "core/io/output_path.h"
+#include "core/text/printable.h"
 #include "app/bench_plots.h"
 #include "app/bench_report.h"
 #include "app/bench_run.h"
@@ -19,7 +19,7 @@
 #include "app/parse_command.h"
 #include "app/headless_gl.h"
 #include "core/error.h"
-#include "core/file_io.h"
+#include "core/io/file_io.h"
 #include "level/loader.h"
 
 namespace bz::app {

@@ -3,7 +3,7 @@
 #include <cstdio>
 #include <string>
 
-#include "core/printable.h"
+#include "core/text/printable.h"
 #include "app/cli_args.h"
 #include "app/commands.h"
 #include "app/parse_command.h"

@@ -10,7 +10,7 @@
 #include "app/commands.h"
 #include "app/json_text.h"
 #include "app/parse_command.h"
-#include "core/file_io.h"
+#include "core/io/file_io.h"
 #include "core/paths.h"
 #include "game/assets/assets.h"
 #include "game/difficulty/difficulty_probe.h"

@@ -18,7 +18,7 @@
 #include "core/error.h"
 #include "core/interrupt.h"
 #include "core/log.h"
-#include "core/output_path.h"
+#include "core/io/output_path.h"
 #include "core/paths.h"
 #include "game/default_level.h"
 #include "game/records/replay.h"

@@ -2,8 +2,8 @@
 #include <cstdio>
 #include <string>
 
-#include "core/output_path.h"
-#include "core/printable.h"
+#include "core/io/output_path.h"
+#include "core/text/printable.h"
 #include "app/camera_args.h"
 #include "app/cli_args.h"
 #include "app/commands.h"

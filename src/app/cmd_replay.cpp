@@ -7,8 +7,8 @@
 #include <optional>
 #include <string>
 
-#include "core/output_path.h"
-#include "core/printable.h"
+#include "core/io/output_path.h"
+#include "core/text/printable.h"
 #include "app/cli_args.h"
 #include "app/commands.h"
 #include "app/parse_command.h"

@@ -4,7 +4,7 @@
 #include <charconv>
 
 #include "app/cli_args.h"
-#include "core/printable.h"
+#include "core/text/printable.h"
 #include "platform/settings.h"
 #include "render/settings.h"
 

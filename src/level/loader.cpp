@@ -3,7 +3,7 @@
 #include <tuple>
 
 #include "core/error.h"
-#include "core/file_io.h"
+#include "core/io/file_io.h"
 #include "level/sections/sections.h"
 #include "level/syntax/syntax.h"
 #include "level/sections/table_reader.h"

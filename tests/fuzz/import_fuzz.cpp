@@ -18,7 +18,7 @@
 #include <string>
 
 #include "core/error.h"
-#include "core/regular_file.h"
+#include "core/io/regular_file.h"
 #include "geometry/import/import.h"
 #include "geometry/import/import_gltf.h"
 #include "geometry/import/import_guard.h"

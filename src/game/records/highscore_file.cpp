@@ -9,9 +9,9 @@
 #include <ctime>
 
 #include "core/error.h"
-#include "core/file_io.h"
-#include "core/line_reader.h"
-#include "core/printable.h"
+#include "core/io/file_io.h"
+#include "core/text/line_reader.h"
+#include "core/text/printable.h"
 #include "game/records/highscores.h"
 
 namespace bz::game {

@@ -2,7 +2,7 @@
 
 #include <system_error>
 
-#include "core/file_io.h"
+#include "core/io/file_io.h"
 #include "core/hash.h"
 #include "game/assets/assets.h"
 #include "game/difficulty/difficulty.h"

@@ -7,9 +7,9 @@
 #include <system_error>
 
 #include "core/error.h"
-#include "core/file_io.h"
-#include "core/line_reader.h"
-#include "core/printable.h"
+#include "core/io/file_io.h"
+#include "core/text/line_reader.h"
+#include "core/text/printable.h"
 #include "game/difficulty/difficulty.h"
 #include "game/records/replay.h"
 

@@ -6,7 +6,7 @@
 #include <memory>
 #include <utility>
 
-#include "core/regular_file.h"
+#include "core/io/regular_file.h"
 
 namespace bz::geo::detail {
 namespace {

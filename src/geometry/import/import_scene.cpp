@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "core/error.h"
-#include "core/regular_file.h"
+#include "core/io/regular_file.h"
 #include "core/stderr_capture.h"
 #include "geometry/import/confined_io.h"
 #include "geometry/import/import_gltf.h"

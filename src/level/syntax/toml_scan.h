@@ -1,7 +1,7 @@
 #pragma once
 // The TOML scanner lives in core so the settings file (platform) can use the same guards as
 // the level loader; these names keep the level code reading as before.
-#include "core/toml_scan.h"
+#include "core/text/toml_scan.h"
 
 namespace bz::level {
 using bz::DeepKey;

@@ -5,7 +5,7 @@
 #include <filesystem>
 
 #include "core/error.h"
-#include "core/file_io.h"
+#include "core/io/file_io.h"
 #include "core/hash.h"
 #include "core/rng.h"
 #include "game/difficulty/autopilot.h"

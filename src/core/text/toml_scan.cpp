@@ -1,4 +1,4 @@
-#include "core/toml_scan.h"
+#include "core/text/toml_scan.h"
 
 namespace bz {
 

@@ -1,6 +1,6 @@
 // Opening files that must be regular: FIFOs (which block a reader until a writer comes),
 // devices and folders are refused at once, by what the descriptor is, not by a prior check.
-#include "core/regular_file.h"
+#include "core/io/regular_file.h"
 
 #include <gtest/gtest.h>
 #include <sys/stat.h>
@@ -11,7 +11,7 @@
 #include <fstream>
 
 #include "core/error.h"
-#include "core/file_io.h"
+#include "core/io/file_io.h"
 
 namespace bz {
 namespace {

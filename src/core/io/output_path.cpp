@@ -1,4 +1,4 @@
-#include "core/output_path.h"
+#include "core/io/output_path.h"
 
 #include <fcntl.h>
 #include <unistd.h>
@@ -9,7 +9,7 @@
 #include <string>
 
 #include "core/error.h"
-#include "core/printable.h"
+#include "core/text/printable.h"
 
 namespace bz {
 

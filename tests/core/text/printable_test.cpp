@@ -1,6 +1,6 @@
 // Untrusted text in messages: every control character, terminal escape and stray byte is
 // shown as an escape, valid UTF-8 stays readable, and a huge value is cut to a bounded size.
-#include "core/printable.h"
+#include "core/text/printable.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "core/file_io.h"
+#include "core/io/file_io.h"
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -11,7 +11,7 @@
 #include <sstream>
 
 #include "core/error.h"
-#include "core/regular_file.h"
+#include "core/io/regular_file.h"
 
 namespace bz {
 namespace fs = std::filesystem;
