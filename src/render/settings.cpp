@@ -35,9 +35,8 @@ RenderSettings preset(std::string_view name) {
     RenderSettings s;
     s.preset = std::string(name);
     if (name == "fast") {
-        // Fewest fragments and taps: one spine sample, quarter-resolution bloom, thin lines.
+        // Fewest fragments and taps: quarter-resolution bloom, thin lines.
         s.depth = DepthFormat::reversed_f32;
-        s.spine_samples = 1;
         s.depth_bias = 2e-4f;
         s.line_half_width_px = 1.5f;
         s.bloom_resolution = BloomResolution::quarter;
@@ -50,7 +49,6 @@ RenderSettings preset(std::string_view name) {
         // the lines (a 1280x720 game frame: 25.8 ms with half-resolution bloom, 14.7 ms with
         // quarter), and with sigma scaled to match, the glow looks the same.
         s.depth = DepthFormat::reversed_f32;
-        s.spine_samples = 1;
         s.depth_bias = 2e-4f;
         s.line_half_width_px = 2.0f;
         s.bloom_resolution = BloomResolution::quarter;
@@ -64,7 +62,6 @@ RenderSettings preset(std::string_view name) {
         // worst view 0.9873 against 0.9881) and slowed llvmpipe's line pass. A wider, smoother
         // bloom.
         s.depth = DepthFormat::reversed_f32;
-        s.spine_samples = 1;
         s.depth_bias = 2e-4f;
         // Full detail at every distance: the LOD's raised crease angle and simplified meshes
         // made high score below balanced against the exact reference (bench --sweep).

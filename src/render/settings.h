@@ -91,10 +91,9 @@ struct BeamSettings {
 struct RenderSettings {
     std::string preset = "balanced";
     DepthFormat depth = DepthFormat::reversed_f32;
-    int spine_samples = 1;  // spine-test samples: 1, the texel under the spine point (the only
-                            // test since issue 10; a 2x2 bilinear filter scored no better)
-    // The spine test compares the prepass with the exact plane of the edge's face; these say
-    // how far the rasterised depth may sit from it (shaders/spine_test.glsl):
+    // The spine test reads the one prepass texel under the spine point (a 2x2 bilinear filter
+    // scored no better, issue 10) and compares it with the exact plane of the edge's face;
+    // these say how far the rasterised depth may sit from it (shaders/spine_test.glsl):
     float plane_tolerance_rel = 1e-5f;   // relative to the depth: float rounding
     float plane_tolerance_px = 0.0625f;  // pixels of the face's own depth slope: rasterisation
     // Relative bias where no plane is usable (a face seen edge-on), and the most the slope

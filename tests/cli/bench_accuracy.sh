@@ -11,16 +11,8 @@ trap 'rm -rf "$work"' EXIT
 fail() { echo "FAIL: $*" >&2; exit 1; }
 [ -f "$models/PLY/Wuson.ply" ] || { echo "missing $models (install assimp-testmodels)" >&2; exit 1; }
 
-expect() {
-  local want=$1 pattern=$2
-  shift 2
-  timeout 600 "$bin" "$@" >"$work/out" 2>"$work/err"
-  local rc=$?
-  [ "$rc" -eq "$want" ] || fail "beamzone $* exited $rc, wanted $want: $(cat "$work/err")"
-  if [ -n "$pattern" ]; then
-    grep -qE -e "$pattern" "$work/err" "$work/out" || fail "beamzone $*: output lacks /$pattern/: $(cat "$work/err" "$work/out")"
-  fi
-}
+expect_seconds=600
+source "$(dirname "$0")/lib/expect.bash"
 
 run() { expect 0 "goal high: mean F1 >= balanced" bench --accuracy --models-dir "$models" --model PLY/Wuson.ply \
   --model Collada/duck.dae --size 160x120 --frames 2 --out "$work/acc"; }

@@ -9,16 +9,8 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 fail() { echo "FAIL: $*" >&2; exit 1; }
 
-expect() {
-  local want=$1 pattern=$2
-  shift 2
-  timeout 300 "$bin" "$@" >"$work/out" 2>"$work/err"
-  local rc=$?
-  [ "$rc" -eq "$want" ] || fail "beamzone $* exited $rc, wanted $want: $(cat "$work/err")"
-  if [ -n "$pattern" ]; then
-    grep -qE -e "$pattern" "$work/err" "$work/out" || fail "beamzone $*: output lacks /$pattern/: $(cat "$work/err" "$work/out")"
-  fi
-}
+expect_seconds=300
+source "$(dirname "$0")/lib/expect.bash"
 
 # A short single-preset run.
 expect 0 "p50" bench "$level" --frames 6 --warmup 2 --size 192x108 --preset fast --out "$work/one"

@@ -3,13 +3,7 @@
 # [render] style, else the settings file. Preset: --preset, else the settings file, else the
 # level's preset. The level's line width, crease angle and bloom strength always apply.
 set -euo pipefail
-bin=$1
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-export SDL_VIDEODRIVER=offscreen SDL_AUDIODRIVER=dummy
-pass=0
-ok() { echo "ok $1"; pass=$((pass + 1)); }
-fail() { echo "FAIL $1"; cat "$work/err" 2>/dev/null || true; exit 1; }
+source "$(dirname "$0")/lib/harness.bash"
 
 cat >"$work/styled.toml" <<'LVL'
 version = 1

@@ -5,13 +5,7 @@
 # file has errors), the level choice (shipped levels and the player's own folder) and --edit's
 # Escape; the log gets the frame-time percentiles.
 set -euo pipefail
-bin=$1
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-export BEAMZONE_PREF_DIR=$work/pref SDL_VIDEODRIVER=offscreen SDL_AUDIODRIVER=dummy
-pass=0
-ok() { echo "ok $1"; pass=$((pass + 1)); }
-fail() { echo "FAIL $1"; cat "$work/err" 2>/dev/null || true; exit 1; }
+source "$(dirname "$0")/lib/harness.bash"
 play() { "$bin" play --headless-test "$@" >"$work/out" 2>"$work/err" || fail "play $* exit $?"; }
 
 # Title menu: Up wraps from START to QUIT; Return quits at once.

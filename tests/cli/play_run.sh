@@ -3,13 +3,7 @@
 # (one 60 Hz tick each) of the game and of the --edit viewer, with screenshots, the settings
 # file and the log in a scratch pref folder.
 set -euo pipefail
-bin=$1
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-export BEAMZONE_PREF_DIR=$work/pref SDL_VIDEODRIVER=offscreen SDL_AUDIODRIVER=dummy
-pass=0
-ok() { echo "ok $1"; pass=$((pass + 1)); }
-fail() { echo "FAIL $1"; cat "$work/err" 2>/dev/null || true; exit 1; }
+source "$(dirname "$0")/lib/harness.bash"
 
 cat >"$work/level.toml" <<'LVL'
 version = 1

@@ -8,21 +8,9 @@ root=$(cd "$(dirname "$0")/../.." && pwd)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 fail() { echo "FAIL: $*" >&2; exit 1; }
-# The model-loading memory cap (RLIMIT_DATA) is tested with the hostile model files; here it
-# would only starve AddressSanitizer's allocator in the sanitizer build.
-export BEAMZONE_MEMORY_LIMIT_MB=0
 
-# expect RC PATTERN ARGS...: runs beamzone, checks the exit code and that the output matches.
-expect() {
-  local want=$1 pattern=$2
-  shift 2
-  timeout 120 "$bin" "$@" >"$work/out" 2>"$work/err"
-  local rc=$?
-  [ "$rc" -eq "$want" ] || fail "beamzone $* exited $rc, wanted $want: $(cat "$work/err")"
-  if [ -n "$pattern" ]; then
-    grep -qE -e "$pattern" "$work/err" "$work/out" || fail "beamzone $*: output lacks /$pattern/: $(cat "$work/err" "$work/out")"
-  fi
-}
+expect_seconds=120
+source "$(dirname "$0")/lib/expect.bash"
 
 # The GPU mask of a cube and the exact reference: same camera options, a perfect score.
 expect 0 "" render builtin:cube --size 200x150 --out "$work/c.png" --mask "$work/gpu.png"

@@ -8,17 +8,8 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 fail() { echo "FAIL: $*" >&2; exit 1; }
 
-# expect RC FILE-PATTERN ARGS...: runs beamzone, checks the exit code and that stderr matches.
-expect() {
-  local want=$1 pattern=$2
-  shift 2
-  timeout 60 "$bin" "$@" >"$work/out" 2>"$work/err"
-  local rc=$?
-  [ "$rc" -eq "$want" ] || fail "beamzone $* exited $rc, wanted $want: $(cat "$work/err")"
-  if [ -n "$pattern" ]; then
-    grep -qE "$pattern" "$work/err" "$work/out" || fail "beamzone $*: output lacks /$pattern/: $(cat "$work/err" "$work/out")"
-  fi
-}
+expect_seconds=60
+source "$(dirname "$0")/lib/expect.bash"
 
 expect 0 "recorded" replay "$work/demo.bzr" --record-demo 120 --seed 3
 expect 0 "ok: [0-9]+ ticks" replay "$work/demo.bzr" --verify

@@ -59,27 +59,27 @@ for sig in TERM INT; do
 done
 
 # Commands with nothing to save end at once.
-"$bin" render builtin:sphere --size 64x48 --repeat 100000 --out "$work/s.png" >"$work/out" 2>"$work/err" &
-pid=$!
-pids+=("$pid")
-sleep 2
-kill -0 "$pid" 2>/dev/null || fail "render ended before the signal"
-stop_and_time "$pid" INT
-[ "$rc" -eq 130 ] || fail "render SIGINT -> exit $rc"
-less_than "$secs" 2 || fail "render took ${secs}s to stop"
+# stops_at_once NAME SIGNAL EXIT COMMAND...: runs COMMAND, signals it after 2 s and expects
+# exit EXIT within 2 s.
+stops_at_once() {
+  local name=$1 sig=$2 want=$3
+  shift 3
+  "$@" >"$work/out" 2>"$work/err" &
+  pid=$!
+  pids+=("$pid")
+  sleep 2
+  kill -0 "$pid" 2>/dev/null || fail "$name ended before the signal"
+  stop_and_time "$pid" "$sig"
+  [ "$rc" -eq "$want" ] || fail "$name SIG$sig -> exit $rc"
+  less_than "$secs" 2 || fail "$name took ${secs}s to stop"
+}
+passes() { echo "ok $1: exit $rc after ${secs}s"; passed=$((passed + 1)); }
+
+stops_at_once render INT 130 "$bin" render builtin:sphere --size 64x48 --repeat 100000 --out "$work/s.png"
 grep -qF "beamzone: SIGINT: stopped" "$work/err" || fail "no note on stderr"
-echo "ok render SIGINT: exit $rc after ${secs}s"
-passed=$((passed + 1))
+passes "render SIGINT"
 
 printf 'version = 1\nname = "S"\n' >"$work/s.toml"
-"$bin" bench "$work/s.toml" --frames 1000000 --out "$work/bench" >"$work/out" 2>"$work/err" &
-pid=$!
-pids+=("$pid")
-sleep 2
-kill -0 "$pid" 2>/dev/null || fail "bench ended before the signal"
-stop_and_time "$pid" TERM
-[ "$rc" -eq 143 ] || fail "bench SIGTERM -> exit $rc"
-less_than "$secs" 2 || fail "bench took ${secs}s to stop"
-echo "ok bench SIGTERM: exit $rc after ${secs}s"
-passed=$((passed + 1))
+stops_at_once bench TERM 143 "$bin" bench "$work/s.toml" --frames 1000000 --out "$work/bench"
+passes "bench SIGTERM"
 echo "$passed passed, 0 failed"

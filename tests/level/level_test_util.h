@@ -3,50 +3,17 @@
 // as both the level's folder and the data/ root, so model-path rules can be exercised.
 // Header-only: tests/CMakeLists.txt compiles only *_test.cpp files.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
-#include <filesystem>
-#include <fstream>
 #include <string>
 #include <string_view>
 
 #include "level/loader.h"
+#include "support/scratch_dir.h"
 
 namespace bz::level::test {
 
-class ScratchDir {
-  public:
-    ScratchDir() {
-        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        std::string name = "bz_level_";
-        if (info) name += std::string(info->test_suite_name()) + "_" + info->name();
-        name += "_" + std::to_string(::getpid());
-        path_ = std::filesystem::temp_directory_path() / name;
-        std::filesystem::remove_all(path_);
-        std::filesystem::create_directories(path_);
-        path_ = std::filesystem::canonical(path_);
-    }
-    ~ScratchDir() {
-        std::error_code ec;
-        std::filesystem::remove_all(path_, ec);
-    }
-    ScratchDir(const ScratchDir&) = delete;
-    ScratchDir& operator=(const ScratchDir&) = delete;
-
-    const std::filesystem::path& path() const { return path_; }
-
-    // Writes `text` to `relative` under the folder (creating folders) and returns its path.
-    std::filesystem::path write(const std::string& relative, std::string_view text) const {
-        const std::filesystem::path p = path_ / relative;
-        std::filesystem::create_directories(p.parent_path());
-        std::ofstream out(p, std::ios::binary | std::ios::trunc);
-        out.write(text.data(), static_cast<std::streamsize>(text.size()));
-        return p;
-    }
-
-  private:
-    std::filesystem::path path_;
-};
+// A scratch folder per test that acts as both the level's folder and the data/ root.
+using ScratchDir = bz::test::ScratchDir;
 
 // The smallest valid level (two lines) with `body` appended.
 // Loads level text as "levels/test.toml" with a data/ root that does not exist, so no model

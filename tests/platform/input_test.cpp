@@ -183,25 +183,10 @@ TEST(Input, PadDeadZoneAndDriveMode) {
     EXPECT_FLOAT_EQ(s.right_tread, -1.0f);
 }
 
-}  // namespace
-}  // namespace bz::platform
-
-namespace bz::platform {
-namespace {
-
-SDL_Event key_event(Uint32 type, SDL_Scancode sc, Uint16 mod = KMOD_NONE, bool repeat = false) {
-    SDL_Event e{};
-    e.type = type;
-    e.key.keysym.scancode = sc;
-    e.key.keysym.mod = mod;
-    e.key.repeat = repeat ? 1 : 0;
-    return e;
-}
-
 TEST(InputLatch, TapBetweenTwoTicksReachesTheNextTickOnce) {
     Input in;
-    in.handle_event(key_event(SDL_KEYDOWN, SDL_SCANCODE_SPACE));
-    in.handle_event(key_event(SDL_KEYUP, SDL_SCANCODE_SPACE));
+    in.handle_event(key(SDL_KEYDOWN, SDL_SCANCODE_SPACE));
+    in.handle_event(key(SDL_KEYUP, SDL_SCANCODE_SPACE));
     EXPECT_FALSE(in.state().fire);  // nothing held: the old per-frame read lost this tap
     EXPECT_TRUE(in.next_tick().fire);
     EXPECT_FALSE(in.next_tick().fire);
@@ -211,8 +196,8 @@ TEST(InputLatch, TapBetweenTwoTicksReachesTheNextTickOnce) {
 TEST(InputLatch, SeveralTapsWithinOneTickCountOnce) {
     Input in;
     for (int i = 0; i < 3; ++i) {
-        in.handle_event(key_event(SDL_KEYDOWN, SDL_SCANCODE_UP));
-        in.handle_event(key_event(SDL_KEYUP, SDL_SCANCODE_UP));
+        in.handle_event(key(SDL_KEYDOWN, SDL_SCANCODE_UP));
+        in.handle_event(key(SDL_KEYUP, SDL_SCANCODE_UP));
     }
     EXPECT_TRUE(in.next_tick().up);
     EXPECT_FALSE(in.next_tick().up);
@@ -220,18 +205,18 @@ TEST(InputLatch, SeveralTapsWithinOneTickCountOnce) {
 
 TEST(InputLatch, HeldButtonStaysDownWithoutExtraPresses) {
     Input in;
-    in.handle_event(key_event(SDL_KEYDOWN, SDL_SCANCODE_SPACE));
+    in.handle_event(key(SDL_KEYDOWN, SDL_SCANCODE_SPACE));
     for (int i = 0; i < 5; ++i) EXPECT_TRUE(in.next_tick().fire) << i;
-    in.handle_event(key_event(SDL_KEYUP, SDL_SCANCODE_SPACE));
+    in.handle_event(key(SDL_KEYUP, SDL_SCANCODE_SPACE));
     EXPECT_FALSE(in.next_tick().fire);
 }
 
 TEST(InputLatch, ReleaseAndPressWithinOneTickGivesASecondPress) {
     Input in;
-    in.handle_event(key_event(SDL_KEYDOWN, SDL_SCANCODE_SPACE));
+    in.handle_event(key(SDL_KEYDOWN, SDL_SCANCODE_SPACE));
     EXPECT_TRUE(in.next_tick().fire);
-    in.handle_event(key_event(SDL_KEYUP, SDL_SCANCODE_SPACE));
-    in.handle_event(key_event(SDL_KEYDOWN, SDL_SCANCODE_SPACE));
+    in.handle_event(key(SDL_KEYUP, SDL_SCANCODE_SPACE));
+    in.handle_event(key(SDL_KEYDOWN, SDL_SCANCODE_SPACE));
     EXPECT_FALSE(in.next_tick().fire);  // the release the game must see
     EXPECT_TRUE(in.next_tick().fire);   // the second press
     EXPECT_TRUE(in.next_tick().fire);   // still held
@@ -239,13 +224,13 @@ TEST(InputLatch, ReleaseAndPressWithinOneTickGivesASecondPress) {
 
 TEST(InputLatch, HeldKeysStillDriveTheTreads) {
     Input in;
-    in.handle_event(key_event(SDL_KEYDOWN, SDL_SCANCODE_Q));
-    in.handle_event(key_event(SDL_KEYDOWN, SDL_SCANCODE_E));
+    in.handle_event(key(SDL_KEYDOWN, SDL_SCANCODE_Q));
+    in.handle_event(key(SDL_KEYDOWN, SDL_SCANCODE_E));
     const InputState s = in.next_tick();
     EXPECT_EQ(s.left_tread, 1.0f);
     EXPECT_EQ(s.right_tread, 1.0f);
     EXPECT_EQ(in.next_tick().left_tread, 1.0f);
-    in.handle_event(key_event(SDL_KEYUP, SDL_SCANCODE_Q));
+    in.handle_event(key(SDL_KEYUP, SDL_SCANCODE_Q));
     EXPECT_EQ(in.next_tick().left_tread, 0.0f);
 }
 
@@ -301,8 +286,7 @@ TapRun run_taps(double fps, double tap_ms, double period_s, double seconds) {
     const double frame = 1.0 / fps;
     for (double now = frame; now <= seconds + frame; now += frame) {
         while (next < events.size() && events[next].t <= now) {
-            in.handle_event(key_event(events[next].down ? SDL_KEYDOWN : SDL_KEYUP,
-                                      SDL_SCANCODE_SPACE));
+            in.handle_event(key(events[next].down ? SDL_KEYDOWN : SDL_KEYUP, SDL_SCANCODE_SPACE));
             ++next;
         }
         accumulator += frame;
@@ -343,8 +327,8 @@ TEST(InputLatch, LongHoldsStillCountOnceEach) {
 TEST(InputMenu, KeysFollowTheBindingsOneMenuKeyPerPress) {
     Input in;
     auto press = [&in](SDL_Scancode sc, Uint16 mod = KMOD_NONE) {
-        in.handle_event(key_event(SDL_KEYDOWN, sc, mod));
-        in.handle_event(key_event(SDL_KEYUP, sc));
+        in.handle_event(key(SDL_KEYDOWN, sc, mod));
+        in.handle_event(key(SDL_KEYUP, sc));
     };
     press(SDL_SCANCODE_DOWN);
     press(SDL_SCANCODE_W);
@@ -359,8 +343,8 @@ TEST(InputMenu, KeysFollowTheBindingsOneMenuKeyPerPress) {
     EXPECT_EQ(in.take_menu_keys(), want);
     EXPECT_TRUE(in.take_menu_keys().empty());
     // Held arrows repeat in menus; held Return does not confirm twice.
-    in.handle_event(key_event(SDL_KEYDOWN, SDL_SCANCODE_DOWN, KMOD_NONE, true));
-    in.handle_event(key_event(SDL_KEYDOWN, SDL_SCANCODE_RETURN, KMOD_NONE, true));
+    in.handle_event(key(SDL_KEYDOWN, SDL_SCANCODE_DOWN, KMOD_NONE, true));
+    in.handle_event(key(SDL_KEYDOWN, SDL_SCANCODE_RETURN, KMOD_NONE, true));
     EXPECT_EQ(in.take_menu_keys(), std::vector<MenuKey>{MenuKey::down});
 }
 
@@ -368,8 +352,8 @@ TEST(InputMenu, RebindingMovesTheMenuKeysToo) {
     Bindings b = default_bindings();
     b[static_cast<std::size_t>(Action::drive_back)] = {parse_key("J", nullptr).value()};
     Input in(b);
-    in.handle_event(key_event(SDL_KEYDOWN, SDL_SCANCODE_J));
-    in.handle_event(key_event(SDL_KEYDOWN, SDL_SCANCODE_DOWN));  // no longer bound
+    in.handle_event(key(SDL_KEYDOWN, SDL_SCANCODE_J));
+    in.handle_event(key(SDL_KEYDOWN, SDL_SCANCODE_DOWN));  // no longer bound
     EXPECT_EQ(in.take_menu_keys(), std::vector<MenuKey>{MenuKey::down});
 }
 
@@ -404,7 +388,7 @@ TEST(InputMenu, GamepadDrivesMenus) {
 TEST(InputCapture, NextKeyIsCapturedNotActedOn) {
     Input in;
     in.begin_capture();
-    in.handle_event(key_event(SDL_KEYDOWN, SDL_SCANCODE_K));
+    in.handle_event(key(SDL_KEYDOWN, SDL_SCANCODE_K));
     EXPECT_TRUE(in.take_pressed().empty());
     EXPECT_TRUE(in.take_menu_keys().empty());
     EXPECT_EQ(in.take_captured(), (KeyBinding{SDL_SCANCODE_K, kModNone}));
@@ -415,18 +399,18 @@ TEST(InputCapture, NextKeyIsCapturedNotActedOn) {
 TEST(InputCapture, ModifiersCombineOrStandAlone) {
     Input in;
     in.begin_capture();
-    in.handle_event(key_event(SDL_KEYDOWN, SDL_SCANCODE_LALT, KMOD_LALT));
-    in.handle_event(key_event(SDL_KEYDOWN, SDL_SCANCODE_RETURN, KMOD_LALT));
+    in.handle_event(key(SDL_KEYDOWN, SDL_SCANCODE_LALT, KMOD_LALT));
+    in.handle_event(key(SDL_KEYDOWN, SDL_SCANCODE_RETURN, KMOD_LALT));
     EXPECT_EQ(in.take_captured(), (KeyBinding{SDL_SCANCODE_RETURN, kModAlt}));
-    in.handle_event(key_event(SDL_KEYUP, SDL_SCANCODE_RETURN, KMOD_LALT));
-    in.handle_event(key_event(SDL_KEYUP, SDL_SCANCODE_LALT));
+    in.handle_event(key(SDL_KEYUP, SDL_SCANCODE_RETURN, KMOD_LALT));
+    in.handle_event(key(SDL_KEYUP, SDL_SCANCODE_LALT));
     in.begin_capture();
-    in.handle_event(key_event(SDL_KEYDOWN, SDL_SCANCODE_RCTRL, KMOD_RCTRL));
+    in.handle_event(key(SDL_KEYDOWN, SDL_SCANCODE_RCTRL, KMOD_RCTRL));
     EXPECT_FALSE(in.take_captured());  // might still become Ctrl+something
-    in.handle_event(key_event(SDL_KEYUP, SDL_SCANCODE_RCTRL));
+    in.handle_event(key(SDL_KEYUP, SDL_SCANCODE_RCTRL));
     EXPECT_EQ(in.take_captured(), (KeyBinding{SDL_SCANCODE_RCTRL, kModNone}));
     in.begin_capture();
-    in.handle_event(key_event(SDL_KEYDOWN, SDL_SCANCODE_ESCAPE));
+    in.handle_event(key(SDL_KEYDOWN, SDL_SCANCODE_ESCAPE));
     EXPECT_EQ(in.take_captured(), Input::kCaptureCancelled);
 }
 

@@ -1,12 +1,12 @@
 // Screenshot names when the folder already holds numbers at or past the end of the range:
 // the counter must not overflow into one name that every later shot overwrites.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <fstream>
 #include <set>
 
 #include "platform/screenshot.h"
+#include "support/scratch_dir.h"
 
 namespace bz::platform {
 namespace {
@@ -15,11 +15,10 @@ namespace fs = std::filesystem;
 
 class ScreenshotNumbers : public ::testing::Test {
   protected:
-    void SetUp() override { fs::create_directories(dir_); }
-    void TearDown() override { fs::remove_all(dir_); }
     void touch(const std::string& name) { std::ofstream(dir_ / name) << "x"; }
     std::vector<std::uint8_t> pixels() { return std::vector<std::uint8_t>(2 * 2 * 4, 9); }
-    fs::path dir_ = fs::temp_directory_path() / ("bz_shot_numbers_" + std::to_string(::getpid()));
+    bz::test::ScratchDir scratch_{"bz_shot_numbers"};
+    const fs::path dir_ = scratch_.path();
 };
 
 TEST_F(ScreenshotNumbers, HugeExistingNumbersNeverMakeShotsShareAName) {

@@ -1,12 +1,12 @@
 #include "platform/screenshot.h"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <fstream>
 
 #include "core/error.h"
 #include "core/image_io.h"
+#include "support/scratch_dir.h"
 
 namespace bz::platform {
 namespace {
@@ -15,8 +15,8 @@ namespace fs = std::filesystem;
 
 class Screenshots : public ::testing::Test {
   protected:
-    void TearDown() override { fs::remove_all(dir_); }
-    fs::path dir_ = fs::temp_directory_path() / ("bz_shots_" + std::to_string(::getpid()));
+    bz::test::ScratchDir scratch_{"bz_shots"};
+    const fs::path dir_ = scratch_.path();
 };
 
 std::vector<std::uint8_t> gradient(int w, int h) {

@@ -8,29 +8,14 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "geometry/import.h"
 #include "geometry/mask_score.h"
 #include "geometry/primitives.h"
-#include "render/camera_framing.h"
 #include "render/reference_frame.h"
 #include "render/render_fixture.h"
 
 using bz::render::LineMethod;
 using bz::test::Mask;
 using bz::test::RenderTest;
-
-namespace {
-
-const char* const kModels[] = {
-    "/usr/share/assimp/models/PLY/Wuson.ply",
-    "/usr/share/assimp/models/OBJ/spider.obj",
-    "/usr/share/assimp/models/Collada/duck.dae",
-    "/usr/share/assimp/models/glTF/CesiumMilkTruck/CesiumMilkTruck.gltf",
-    "/usr/share/assimp/models/3DS/fels.3ds",
-    "/usr/share/assimp/models/BLEND/Suzanne_248.blend",
-};
-
-}  // namespace
 
 class LineMethodsTest : public RenderTest {
 protected:
@@ -42,13 +27,10 @@ protected:
 };
 
 TEST_F(LineMethodsTest, RealModelsSameMaskAndSameReferenceScore) {
-    for (const char* path : kModels) {
+    for (const char* path : bz::test::kRealModels) {
         SCOPED_TRACE(path);
         ASSERT_TRUE(std::filesystem::exists(path)) << "install assimp-testmodels (tools/install-deps)";
-        frame.items.clear();
-        const auto id = add_mesh(path, bz::geo::import_model(path));
-        add_item(id);
-        frame.camera = bz::render::frame_bounds(meshes.bounds(id), 50.0, double(kWidth) / kHeight);
+        show_model(path);
         const std::string name = "methods_" + std::filesystem::path(path).stem().string();
         for (const char* preset : {"balanced", "high"}) {
             SCOPED_TRACE(preset);
@@ -113,13 +95,10 @@ TEST_F(LineMethodsTest, SpineSamplesScoreAsTheTestInEveryFragment) {
     // LineMethod::compute runs the spine test once per spine sample (1 px apart) and the
     // fragments look it up; spacing 0 runs it in every fragment instead. Same lines, and the
     // same score against the exact reference.
-    for (const char* path : kModels) {
+    for (const char* path : bz::test::kRealModels) {
         SCOPED_TRACE(path);
         ASSERT_TRUE(std::filesystem::exists(path)) << "install assimp-testmodels (tools/install-deps)";
-        frame.items.clear();
-        const auto id = add_mesh(path, bz::geo::import_model(path));
-        add_item(id);
-        frame.camera = bz::render::frame_bounds(meshes.bounds(id), 50.0, double(kWidth) / kHeight);
+        show_model(path);
         const std::string name = "samples_" + std::filesystem::path(path).stem().string();
         settings = bz::render::preset("balanced");
         ASSERT_GT(settings.spine_sample_spacing_px, 0.0f);

@@ -3,31 +3,18 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <span>
 
-#include "render/camera_framing.h"
-#include "geometry/import.h"
 #include "render/render_fixture.h"
 
 using bz::test::RenderTest;
 
-namespace {
-const char* const kModels[] = {
-    "/usr/share/assimp/models/PLY/Wuson.ply",
-    "/usr/share/assimp/models/OBJ/spider.obj",
-    "/usr/share/assimp/models/Collada/duck.dae",
-    "/usr/share/assimp/models/glTF/CesiumMilkTruck/CesiumMilkTruck.gltf",
-};
-}  // namespace
-
 TEST_F(RenderTest, RealModelsRenderNonEmptyMasks) {
-    for (const char* path : kModels) {
+    // The first four: line_methods_test draws all of them with both line methods.
+    for (const char* path : std::span(bz::test::kRealModels).first(4)) {
         SCOPED_TRACE(path);
         ASSERT_TRUE(std::filesystem::exists(path)) << "install assimp-testmodels (tools/install-deps)";
-        frame.items.clear();
-        const bz::geo::TriMesh tri = bz::geo::import_model(path);
-        const auto id = add_mesh(path, tri);
-        add_item(id);
-        frame.camera = bz::render::frame_bounds(meshes.bounds(id), 50.0, double(kWidth) / kHeight);
+        show_model(path);
         const std::string name = std::filesystem::path(path).stem().string();
         const auto m = mask(name);
         // A recognisable drawing, not a speck: lines across a good part of the frame.

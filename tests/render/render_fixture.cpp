@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include "core/image_io.h"
+#include "geometry/import.h"
+#include "render/camera_framing.h"
 
 namespace bz::test {
 
@@ -31,6 +33,14 @@ void RenderTest::add_item(scene::MeshId id, const glm::dmat4& model) {
     item.mesh = id;
     item.model = model;
     frame.items.push_back(item);
+}
+
+scene::MeshId RenderTest::show_model(const std::string& path) {
+    frame.items.clear();
+    const scene::MeshId id = add_mesh(path, geo::import_model(path));
+    add_item(id);
+    frame.camera = render::frame_bounds(meshes.bounds(id), 50.0, double(kWidth) / kHeight);
+    return id;
 }
 
 Mask RenderTest::mask(const std::string& save_as) {

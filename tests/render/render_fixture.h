@@ -11,6 +11,16 @@
 
 namespace bz::test {
 
+// Real models nobody here made, from Debian's assimp-testmodels (tools/install-deps).
+inline constexpr const char* kRealModels[] = {
+    "/usr/share/assimp/models/PLY/Wuson.ply",
+    "/usr/share/assimp/models/OBJ/spider.obj",
+    "/usr/share/assimp/models/Collada/duck.dae",
+    "/usr/share/assimp/models/glTF/CesiumMilkTruck/CesiumMilkTruck.gltf",
+    "/usr/share/assimp/models/3DS/fels.3ds",
+    "/usr/share/assimp/models/BLEND/Suzanne_248.blend",
+};
+
 // Two masks of the same frame by the two feature-line methods: the same lines, up to a few
 // pixels where a face is seen exactly edge-on.
 void expect_same_lines(const Mask& a, const Mask& b, const std::string& what);
@@ -23,6 +33,8 @@ protected:
     void SetUp() override;
     scene::MeshId add_mesh(const std::string& name, const geo::TriMesh& mesh);
     void add_item(scene::MeshId id, const glm::dmat4& model = glm::dmat4(1.0));
+    // Makes the model file at `path` the frame's only item, framed by a 50-degree camera.
+    scene::MeshId show_model(const std::string& path);
     // The mask with settings' line method. For the feature-line methods it also renders the
     // mask with the other one and checks that both agree (see line_method_agreement), so every
     // mask test checks the compute and the geometry-shader path against each other.

@@ -1,7 +1,6 @@
 #include "scene/vector_font.h"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cstdlib>
@@ -10,6 +9,7 @@
 #include <string>
 
 #include "core/error.h"
+#include "support/scratch_dir.h"
 
 namespace bz::scene {
 namespace {
@@ -35,18 +35,12 @@ Box bounds(const std::vector<HudLine>& lines) {
 // Font files made by a test live in a folder of their own, removed afterwards.
 class FontFiles : public ::testing::Test {
   protected:
-    void TearDown() override { fs::remove_all(dir_); }
     fs::path write_temp(const std::string& name, const std::string& content) {
-        fs::create_directories(dir_);
-        const fs::path p = dir_ / name;
-        std::ofstream(p, std::ios::binary) << content;
-        return p;
+        return dir_.write(name, content);
     }
 
   private:
-    fs::path dir_ = fs::temp_directory_path() /
-                    ("bz_font_test_" + std::to_string(::getpid()) + "_" +
-                     ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    bz::test::ScratchDir dir_{"bz_font_test"};
 };
 
 std::string error_of(const fs::path& p) {

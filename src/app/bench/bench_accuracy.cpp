@@ -382,10 +382,7 @@ std::string accuracy_json(const BenchMeta& meta, const AccuracyOptions& o,
         configs.push_back(std::move(c));
     }
     j["configs"] = std::move(configs);
-    Json goal_list = Json::array();
-    for (const Goal& g : goals)
-        goal_list.push_back(Json{{"goal", g.name}, {"met", g.met}, {"measured", g.detail}});
-    j["goals"] = std::move(goal_list);
+    j["goals"] = goals_json(goals);
     return json_text(j);
 }
 
@@ -403,10 +400,7 @@ void print_accuracy_table(std::FILE* out, const AccuracyResult& r, const std::ve
                  "p50; new reference masks took %.1f s of CPU\n",
                  r.views.size(), tolerance_px, r.reference_ms / 1000.0);
     for (const std::string& s : r.skipped) std::fprintf(out, "skipped: %s\n", s.c_str());
-    for (const Goal& g : goals) {
-        std::fprintf(out, "goal %-40s %-6s %s\n", g.name.c_str(), g.met ? "MET" : "MISSED",
-                     g.detail.c_str());
-    }
+    print_goals(out, goals, 40);
 }
 
 }  // namespace bz::app

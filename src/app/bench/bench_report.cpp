@@ -134,7 +134,6 @@ Json run_json(const RunResult& r) {
     settings["method"] =
         render::line_method_name(s.method);
     settings["depth"] = depth_name(s.depth);
-    settings["spine_samples"] = s.spine_samples;
     settings["plane_tolerance_rel"] = static_cast<double>(s.plane_tolerance_rel);
     settings["plane_tolerance_px"] = static_cast<double>(s.plane_tolerance_px);
     settings["depth_bias"] = static_cast<double>(s.depth_bias);

@@ -248,10 +248,7 @@ std::string sweep_json(const BenchMeta& meta, const SweepResult& r,
         configs.push_back(std::move(c));
     }
     j["configs"] = std::move(configs);
-    Json goal_list = Json::array();
-    for (const Goal& g : goals)
-        goal_list.push_back(Json{{"goal", g.name}, {"met", g.met}, {"measured", g.detail}});
-    j["goals"] = std::move(goal_list);
+    j["goals"] = goals_json(goals);
     return json_text(j);
 }
 
@@ -274,10 +271,7 @@ void print_sweep_table(std::FILE* out, const SweepResult& r, const std::vector<G
                      row.score_2px.mean_precision, row.score_2px.mean_recall, row.score_2px.mean_f1,
                      row.score_4px.mean_precision, row.score_4px.mean_recall, row.score_4px.mean_f1);
     }
-    for (const Goal& g : goals) {
-        std::fprintf(out, "goal %-46s %-6s %s\n", g.name.c_str(), g.met ? "MET" : "MISSED",
-                     g.detail.c_str());
-    }
+    print_goals(out, goals, 46);
 }
 
 }  // namespace bz::app

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "app/bench/bench_goals.h"
 #include "app/bench/bench_plots.h"
 #include "app/bench/bench_report.h"
 #include "app/bench/bench_run.h"
@@ -39,12 +40,6 @@ struct SweepRow {
     SweepScore score;      // at 1 px
     SweepScore score_2px;  // the same masks at 2 and 4 px (for the sketch style's jitter)
     SweepScore score_4px;
-};
-
-struct Goal {
-    std::string name;
-    bool met = false;
-    std::string detail;  // the measured numbers
 };
 
 // The goals, judged on the measured rows (missing rows make a goal unmet).

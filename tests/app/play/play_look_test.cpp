@@ -66,7 +66,7 @@ TEST(PlayLook, LevelOverridesApplyOnTopOfAnyPreset) {
         EXPECT_FLOAT_EQ(look.render.line_half_width_px, 1.5f);
         EXPECT_FLOAT_EQ(look.render.crease_angle_deg, 45.0f);
         EXPECT_FLOAT_EQ(look.render.bloom_strength, 0.5f);
-        EXPECT_EQ(look.render.spine_samples, base.spine_samples) << "the rest is the preset's";
+        EXPECT_EQ(look.render.bloom_taps, base.bloom_taps) << "the rest is the preset's";
     }
 }
 

@@ -4,7 +4,6 @@
 
 #include <gtest/gtest.h>
 #include <sys/stat.h>
-#include <unistd.h>
 
 #include <chrono>
 #include <filesystem>
@@ -12,21 +11,18 @@
 
 #include "core/error.h"
 #include "core/io/file_io.h"
+#include "support/scratch_dir.h"
 
 namespace bz {
 namespace {
 
 namespace fs = std::filesystem;
 
-struct Scratch {
-    fs::path dir = fs::temp_directory_path() / ("bz_regular_" + std::to_string(::getpid()));
-    Scratch() { fs::create_directories(dir); }
-    ~Scratch() { fs::remove_all(dir); }
-};
+using Scratch = bz::test::ScratchDir;
 
 TEST(RegularFile, FifoIsRefusedWithoutBlocking) {
     Scratch s;
-    const fs::path fifo = s.dir / "pipe";
+    const fs::path fifo = s.path() / "pipe";
     ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
     const auto start = std::chrono::steady_clock::now();
     const RegularFileResult r = open_regular_file(fifo);
@@ -45,14 +41,14 @@ TEST(RegularFile, FifoIsRefusedWithoutBlocking) {
 TEST(RegularFile, DevicesFoldersAndMissingFilesAreNamed) {
     Scratch s;
     EXPECT_EQ(open_regular_file("/dev/zero").why, "not a regular file (a character device)");
-    EXPECT_EQ(open_regular_file(s.dir).why, "not a regular file (a folder)");
-    EXPECT_EQ(open_regular_file(s.dir / "nope").why, "file not found");
+    EXPECT_EQ(open_regular_file(s.path()).why, "not a regular file (a folder)");
+    EXPECT_EQ(open_regular_file(s.path() / "nope").why, "file not found");
 }
 
 TEST(RegularFile, RegularFileOpensWithItsSizeAndReadsBlocking) {
     Scratch s;
-    std::ofstream(s.dir / "f.txt") << "hello world";
-    const RegularFileResult r = open_regular_file(s.dir / "f.txt");
+    std::ofstream(s.path() / "f.txt") << "hello world";
+    const RegularFileResult r = open_regular_file(s.path() / "f.txt");
     ASSERT_TRUE(r.file.is_open()) << r.why;
     EXPECT_EQ(r.file.size(), 11u);
     EXPECT_EQ(read_head(r.file, 5), "hello");

@@ -6,7 +6,6 @@
 
 #include <gtest/gtest.h>
 #include <sys/stat.h>
-#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -14,6 +13,7 @@
 #include "core/error.h"
 #include "game/assets/assets.h"
 #include "game/game.h"
+#include "support/scratch_dir.h"
 #include "game/test_world.h"
 
 namespace bz::game {
@@ -22,10 +22,10 @@ namespace {
 namespace fs = std::filesystem;
 
 struct LevelFolder {
-    fs::path root = fs::temp_directory_path() / ("bz_level_models_" + std::to_string(::getpid()));
+    bz::test::ScratchDir scratch{"bz_level_models"};
+    fs::path root = scratch.path();
     fs::path level = root / "level";
     LevelFolder() {
-        fs::remove_all(root);
         fs::create_directories(level);
         fs::create_directories(root / "outside");
         std::ofstream(root / "outside" / "secret.mtl") << "newmtl x\nKd 1 0 0\n";
@@ -34,7 +34,6 @@ struct LevelFolder {
         std::ofstream(level / "escape.obj") << "mtllib ../outside/secret.mtl\n"
                                                "v 0 0 0\nv 2 0 0\nv 0 0 2\nf 1 3 2\n";
     }
-    ~LevelFolder() { fs::remove_all(root); }
 
     level::Level with_model(const char* name) const {
         level::Level lv = test::empty_level();

@@ -2,29 +2,30 @@
 // old one-table format: valid entries are never lost, the damaged file is kept aside as
 // NAME.bad-DATE rather than overwritten, and there is one message to show.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <filesystem>
 
 #include "core/io/file_io.h"
 #include "game/records/highscores.h"
+#include "support/scratch_dir.h"
 
 namespace bz::game {
 namespace {
 
 namespace fs = std::filesystem;
 
-struct TempDir {
-    fs::path path;
-    explicit TempDir(const char* name)
-        : path(fs::temp_directory_path() / (name + std::to_string(::getpid()))) {
-        fs::remove_all(path);
-        fs::create_directories(path);
+// A scratch folder for a high-score file, which lists the damaged files kept aside in it.
+struct TempDir : bz::test::ScratchDir {
+    using ScratchDir::ScratchDir;
+    fs::path file() const { return path() / "highscores.toml"; }
+    // Writes `text` as the high-score file and loads it.
+    HighScoreLoad load_text(const std::string& text) const {
+        write_file_atomic(file(), text);
+        return load_highscores(file());
     }
-    ~TempDir() { fs::remove_all(path); }
     std::vector<fs::path> set_aside() const {
         std::vector<fs::path> out;
-        for (const auto& e : fs::directory_iterator(path)) {
+        for (const auto& e : fs::directory_iterator(path())) {
             if (e.path().filename().string().find(".bad-") != std::string::npos)
                 out.push_back(e.path());
         }
@@ -36,12 +37,11 @@ const LevelKey kClassic = level_key("Classic", 0xabc);
 
 TEST(HighScoresDamagedFile, OneBadLineKeepsEveryValidEntryAndTheFileAside) {
     TempDir dir("bz_hs_bad_line");
-    const fs::path f = dir.path / "highscores.toml";
+    const fs::path f = dir.file();
     const std::string text =
         "beamzone-highscores 2\nlevel 0000000000000abc Classic\nAAA 900\nB!B 800\nCCC 700\n"
         "end\n";
-    write_file_atomic(f, text);
-    const HighScoreLoad load = load_highscores(f);
+    const HighScoreLoad load = dir.load_text(text);
     ASSERT_EQ(load.errors.size(), 1u);
     EXPECT_NE(load.errors[0].find("highscores.toml:4:2: error: initials"), std::string::npos)
         << load.errors[0];
@@ -64,9 +64,8 @@ TEST(HighScoresDamagedFile, OneBadLineKeepsEveryValidEntryAndTheFileAside) {
 
 TEST(HighScoresDamagedFile, CutShortFileKeepsWhatWasWritten) {
     TempDir dir("bz_hs_cut");
-    const fs::path f = dir.path / "highscores.toml";
-    write_file_atomic(f, "beamzone-highscores 2\nlevel 0000000000000abc Classic\nAAA 900\nBB");
-    const HighScoreLoad load = load_highscores(f);
+    const HighScoreLoad load =
+        dir.load_text("beamzone-highscores 2\nlevel 0000000000000abc Classic\nAAA 900\nBB");
     EXPECT_FALSE(load.errors.empty());
     EXPECT_EQ(load.book.table(kClassic).entries().size(), 1u);
     EXPECT_EQ(dir.set_aside().size(), 1u);
@@ -74,9 +73,8 @@ TEST(HighScoresDamagedFile, CutShortFileKeepsWhatWasWritten) {
 
 TEST(HighScoresDamagedFile, ForeignOrUnreadableFileIsKeptAsideNotOverwritten) {
     TempDir dir("bz_hs_foreign");
-    const fs::path f = dir.path / "highscores.toml";
-    write_file_atomic(f, "[my]\nnotes = 1\n");
-    const HighScoreLoad load = load_highscores(f);
+    const fs::path f = dir.file();
+    const HighScoreLoad load = dir.load_text("[my]\nnotes = 1\n");
     EXPECT_EQ(load.book.entry_count(), 0u);
     ASSERT_EQ(dir.set_aside().size(), 1u);
     EXPECT_EQ(read_file(dir.set_aside()[0]), "[my]\nnotes = 1\n");
@@ -84,8 +82,8 @@ TEST(HighScoresDamagedFile, ForeignOrUnreadableFileIsKeptAsideNotOverwritten) {
 
     // A folder where the file should be: moved aside too, never deleted.
     TempDir dir2("bz_hs_folder");
-    fs::create_directory(dir2.path / "highscores.toml");
-    const HighScoreLoad folder = load_highscores(dir2.path / "highscores.toml");
+    fs::create_directory(dir2.file());
+    const HighScoreLoad folder = load_highscores(dir2.file());
     EXPECT_FALSE(folder.errors.empty());
     EXPECT_EQ(dir2.set_aside().size(), 1u);
 }
@@ -94,7 +92,7 @@ TEST(HighScoresDamagedFile, FileThatCannotBeMovedAsideIsNeverSaved) {
     TempDir dir("bz_hs_ro");
     // A 235-byte name: NAME.bad-DATE (24 more) is over the 255-byte limit, so the rename fails
     // for root too (a read-only folder would not stop root).
-    const fs::path f = dir.path / (std::string(230, 'h') + ".toml");
+    const fs::path f = dir.path() / (std::string(230, 'h') + ".toml");
     write_file_atomic(f, "junk\n");
     const HighScoreLoad load = load_highscores(f);
     EXPECT_FALSE(load.may_save);
@@ -104,9 +102,8 @@ TEST(HighScoresDamagedFile, FileThatCannotBeMovedAsideIsNeverSaved) {
 
 TEST(HighScoresOldFormat, OneTableFilesAreReadAndKeptUnderTheSharedKey) {
     TempDir dir("bz_hs_v1");
-    const fs::path f = dir.path / "highscores.toml";
-    write_file_atomic(f, "beamzone-highscores 1\nAAA 900\nBBB 800\nend\n");
-    const HighScoreLoad load = load_highscores(f);
+    const fs::path f = dir.file();
+    const HighScoreLoad load = dir.load_text("beamzone-highscores 1\nAAA 900\nBBB 800\nend\n");
     EXPECT_TRUE(load.errors.empty());
     EXPECT_TRUE(dir.set_aside().empty());
     ASSERT_TRUE(load.book.has(kSharedTableKey));

@@ -8,20 +8,14 @@
 
 #include "core/error.h"
 #include "core/io/file_io.h"
+#include "support/scratch_dir.h"
 
 namespace bz::game {
 namespace {
 
 namespace fs = std::filesystem;
 
-struct TempDir {
-    fs::path path;
-    explicit TempDir(const char* name) : path(fs::temp_directory_path() / name) {
-        fs::remove_all(path);
-        fs::create_directories(path);
-    }
-    ~TempDir() { fs::remove_all(path); }
-};
+using TempDir = bz::test::ScratchDir;
 
 TEST(HighScores, DefaultsAreSortedAndFull) {
     const HighScoreTable t = HighScoreTable::defaults();
@@ -93,7 +87,7 @@ TEST(HighScores, CorruptOrPartialFilesAreReportedWithLineAndColumn) {
 
 TEST(HighScores, FailedWriteLeavesTheOldFileIntact_InjectedWriter) {
     TempDir dir("bz_hs_inject");
-    const fs::path f = dir.path / "highscores.txt";
+    const fs::path f = dir.path() / "highscores.txt";
     save_highscores(f, book_of(HighScoreTable::defaults()));
     const std::string before = read_file(f);
     HighScoreTable t = HighScoreTable::defaults();
@@ -110,7 +104,7 @@ TEST(HighScores, FailedWriteLeavesTheOldFileIntact_InjectedWriter) {
 
 TEST(HighScores, FailedWriteLeavesTheOldFileIntact_RealWriteFailsMidway) {
     TempDir dir("bz_hs_fsize");
-    const fs::path f = dir.path / "highscores.txt";
+    const fs::path f = dir.path() / "highscores.txt";
     save_highscores(f, book_of(HighScoreTable::defaults()));
     const std::string before = read_file(f);
     HighScoreTable t = HighScoreTable::defaults();
@@ -140,7 +134,7 @@ TEST(HighScores, FailedWriteLeavesTheOldFileIntact_RealWriteFailsMidway) {
     EXPECT_NE(message.find("write failed"), std::string::npos) << message;
     EXPECT_EQ(read_file(f), before) << "the old table survives";
     int files = 0;
-    for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir.path)) ++files;
+    for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir.path())) ++files;
     EXPECT_EQ(files, 1) << "no temp file is left behind";
 }
 

@@ -9,10 +9,7 @@
 namespace bz::geo {
 namespace {
 
-using test::expect_refusal;
-using test::import_error;
-using test::quick;
-using test::ScratchDir;
+using namespace test;  // ScratchDir, import_error, expect_refusal, quick, seconds_since
 
 const std::string kTriangleObj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
 

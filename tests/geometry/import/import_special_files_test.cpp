@@ -10,19 +10,11 @@
 namespace bz::geo {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-using test::expect_refusal;
-using test::import_error;
-using test::quick;
-using test::ScratchDir;
-
-double seconds_since(Clock::time_point start) {
-    return std::chrono::duration<double>(Clock::now() - start).count();
-}
+using namespace test;  // ScratchDir, import_error, expect_refusal, quick, seconds_since
 
 TEST(SpecialFiles, FifoAsTheModelIsRefusedWithoutBlocking) {
     ScratchDir dir;
-    const auto p = dir.fifo("model.obj");
+    const auto p = make_fifo(dir, "model.obj");
     const auto start = Clock::now();
     expect_refusal(import_error(p, quick()), p, "not a regular file (a FIFO)");
     EXPECT_LT(seconds_since(start), 3.0);
@@ -30,7 +22,7 @@ TEST(SpecialFiles, FifoAsTheModelIsRefusedWithoutBlocking) {
 
 TEST(SpecialFiles, FifoAsMtllibIsRefused) {
     ScratchDir dir;
-    dir.fifo("materials.mtl");
+    make_fifo(dir, "materials.mtl");
     const auto p = dir.write("model.obj", "mtllib materials.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
     const auto start = Clock::now();
     const std::string m = import_error(p, quick());
@@ -41,7 +33,7 @@ TEST(SpecialFiles, FifoAsMtllibIsRefused) {
 
 TEST(SpecialFiles, FifoAsGltfBufferUriIsRefused) {
     ScratchDir dir;
-    dir.fifo("tri.bin");
+    make_fifo(dir, "tri.bin");
     const auto p = dir.write(
         "model.gltf", test::gltf_json(R"({"uri": "tri.bin", "byteLength": 42})", R"([{"mesh": 0}])", "[0]"));
     const auto start = Clock::now();

@@ -1,17 +1,16 @@
 #include "geometry/import/import.h"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <string>
 
 #include "core/error.h"
 #include "geometry/line_mesh/line_mesh.h"
+#include "gltf_test_files.h"
+#include "support/scratch_dir.h"
 
 namespace bz::geo {
 namespace {
@@ -20,22 +19,16 @@ namespace fs = std::filesystem;
 
 const fs::path kModels = "/usr/share/assimp/models";
 
-// A scratch folder per test process (ctest runs tests in parallel).
+// A scratch folder per test.
 class ImportTest : public ::testing::Test {
   protected:
-    void SetUp() override {
-        dir_ = fs::temp_directory_path() / ("bz_geo_import_" + std::to_string(::getpid()));
-        fs::create_directories(dir_);
-    }
-    void TearDown() override { fs::remove_all(dir_); }
-
     fs::path write(const std::string& name, const std::string& bytes) {
-        const fs::path p = dir_ / name;
-        std::ofstream(p, std::ios::binary) << bytes;
-        return p;
+        return scratch_.write(name, bytes);
     }
+    const fs::path& dir() const { return scratch_.path(); }
 
-    fs::path dir_;
+  private:
+    bz::test::ScratchDir scratch_{"bz_geo_import"};
 };
 
 // Runs import_model expecting a UserError; returns its message.
@@ -87,27 +80,12 @@ TEST_F(ImportTest, KeepsCoordinatesTriangulatesAndDropsPointsAndLines) {
 
 TEST_F(ImportTest, AppliesNodeTransformsOncePerReferencingNode) {
     // One triangle mesh, referenced by two child nodes (translated) of a scaled root.
-    const float pos[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
-    const std::uint16_t idx[3] = {0, 1, 2};
-    std::string bin(42, '\0');
-    std::memcpy(bin.data(), pos, sizeof pos);
-    std::memcpy(bin.data() + 36, idx, sizeof idx);
-    write("tri.bin", bin);
-    const fs::path gltf = write("instanced.gltf", R"({
-  "asset": {"version": "2.0"},
-  "buffers": [{"uri": "tri.bin", "byteLength": 42}],
-  "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 36, "target": 34962},
-                  {"buffer": 0, "byteOffset": 36, "byteLength": 6, "target": 34963}],
-  "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
-                 "min": [0, 0, 0], "max": [1, 1, 0]},
-                {"bufferView": 1, "componentType": 5123, "count": 3, "type": "SCALAR"}],
-  "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1, "mode": 4}]}],
-  "nodes": [{"children": [1, 2], "scale": [2, 2, 2]},
-            {"mesh": 0, "translation": [10, 0, 0]},
-            {"mesh": 0, "translation": [0, 5, 0]}],
-  "scenes": [{"nodes": [0]}],
-  "scene": 0
-})");
+    write("tri.bin", test::triangle_buffer());
+    const std::string buffer = R"({"uri": "tri.bin", "byteLength": 42})";
+    const std::string nodes = R"([{"children": [1, 2], "scale": [2, 2, 2]},
+                                  {"mesh": 0, "translation": [10, 0, 0]},
+                                  {"mesh": 0, "translation": [0, 5, 0]}])";
+    const fs::path gltf = write("instanced.gltf", test::gltf_json(buffer, nodes, "[0]"));
     const TriMesh m = import_model(gltf);
     ASSERT_EQ(m.triangle_count(), 2u);
     for (glm::vec3 p : {glm::vec3(20, 0, 0), glm::vec3(22, 0, 0), glm::vec3(20, 2, 0),
@@ -136,12 +114,12 @@ TEST_F(ImportTest, RejectsNaNAndInfWithTheFileName) {
 }
 
 TEST_F(ImportTest, MissingFileAndFolderAreNamed) {
-    const fs::path missing = dir_ / "no_such_model.obj";
+    const fs::path missing = dir() / "no_such_model.obj";
     std::string message = import_error(missing);
     expect_one_line_naming(message, missing);
     EXPECT_NE(message.find("not found"), std::string::npos);
-    message = import_error(dir_);
-    expect_one_line_naming(message, dir_);
+    message = import_error(dir());
+    expect_one_line_naming(message, dir());
     EXPECT_NE(message.find("not a regular file"), std::string::npos);
 }
 

@@ -22,8 +22,14 @@ constexpr float kLineHeight = 0.04f;
 
 Layout layout_for(const Page& page) {
     Layout l;
-    // The title's rows sit under the horizon, on the dark ground, where they read best.
-    if (page.big_title) l.rows_top = -0.06f;
+    // The title's rows sit low on the dark ground, below the band around the horizon where the
+    // attract demo's obstacles, tanks and wreckage stand: from -0.06 down, the first rows were
+    // drawn across them (the pyramid through START).
+    if (page.big_title) {
+        l.rows_top = -0.32f;
+        l.row_step = 0.09f;
+        l.rows_bottom = -0.78f;
+    }
     if (page.under_band) {  // under the reticle too, on the ground
         l.title_y = -0.32f;
         l.rows_top = -0.46f;
