@@ -1,9 +1,9 @@
 #include "app/model_source.h"
 
 #include "core/error.h"
-#include "game/models.h"
-#include "geometry/import.h"
-#include "geometry/primitives.h"
+#include "game/assets/models.h"
+#include "geometry/import/import.h"
+#include "geometry/generated/primitives.h"
 
 namespace bz::app {
 

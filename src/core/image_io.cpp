@@ -3,7 +3,7 @@
 #include <string>
 
 #include "core/error.h"
-#include "core/file_io.h"
+#include "core/io/file_io.h"
 
 #define STB_IMAGE_IMPLEMENTATION
 #define STBI_ONLY_PNG

@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "core/rng.h"
-#include "game/backdrop.h"
+#include "game/assets/backdrop.h"
 
 namespace bz::game {
 

@@ -4,14 +4,14 @@
 #include <cctype>
 
 #include "core/error.h"
-#include "game/autopilot.h"
-#include "game/backdrop.h"
+#include "game/difficulty/autopilot.h"
+#include "game/assets/backdrop.h"
 #include "game/default_level.h"
-#include "game/difficulty.h"
-#include "game/hud.h"
-#include "game/hud_layout.h"
-#include "game/screens.h"
-#include "game/tuning.h"
+#include "game/difficulty/difficulty.h"
+#include "game/hud/hud.h"
+#include "game/hud/hud_layout.h"
+#include "game/hud/screens.h"
+#include "game/world/tuning.h"
 
 namespace bz::game {
 

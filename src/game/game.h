@@ -12,13 +12,13 @@
 #include <optional>
 #include <string>
 
-#include "game/assets.h"
-#include "game/events.h"
-#include "game/highscores.h"
-#include "game/replay.h"
-#include "game/screens.h"
-#include "game/tick_command.h"
-#include "game/world.h"
+#include "game/assets/assets.h"
+#include "game/world/events.h"
+#include "game/records/highscores.h"
+#include "game/records/replay.h"
+#include "game/hud/screens.h"
+#include "game/world/tick_command.h"
+#include "game/world/world.h"
 #include "level/level.h"
 #include "scene/frame_list.h"
 #include "scene/mesh_library.h"

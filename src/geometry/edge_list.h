@@ -1,44 +1,4 @@
+// Moved to geometry/derived/edge_list.h. This forwarder stays until src/render and
+// tests/render (edited on another branch during the regrouping) include the new path.
 #pragma once
-// The unique edge list of a welded mesh, for edge extraction in a compute shader
-// (LineMethod::compute): one entry per edge that some frame could draw, with everything about
-// it that does not depend on the view, so the per-frame work is one invocation per edge.
-//
-// The entries reproduce the geometry shader's emission exactly (shaders/lines.geom):
-//  - an interior edge (two consistently wound faces) is one entry, oriented from its lower to
-//    its higher welded vertex; face A is the face that walks it that way, face B the other;
-//  - every other triangle edge (boundary, non-manifold, inconsistently wound) is one entry per
-//    triangle edge, in that triangle's winding, with no face B: the geometry shader emits such
-//    an edge once for each face on it, and so does the compute path.
-#include <cstdint>
-#include <vector>
-
-#include "geometry/mesh.h"
-
-namespace bz::geo {
-
-inline constexpr std::uint32_t kNoVertex = 0xFFFFFFFFu;
-
-// MeshEdge::flags
-inline constexpr std::uint32_t kEdgeInterior = 0u;
-inline constexpr std::uint32_t kEdgeBoundary = 1u;
-inline constexpr std::uint32_t kEdgeNonManifold = 2u;
-inline constexpr std::uint32_t kEdgeInconsistent = 3u;
-
-// 24 bytes, the std430 layout of shaders/edges.comp's MeshEdge.
-struct MeshEdge {
-    std::uint32_t a = 0, b = 0;  // the edge, in face A's winding
-    std::uint32_t opp_a = 0;     // face A's third vertex
-    std::uint32_t opp_b = kNoVertex;  // face B's third vertex; kNoVertex when there is no face B
-    float cos_dihedral = 2.0f;   // unit normals' dot (double, object space); 2 without face B
-    std::uint32_t flags = kEdgeInterior;  // kEdge* (the EdgeKind of the triangle edge)
-};
-static_assert(sizeof(MeshEdge) == 24);
-
-// Deterministic: triangles in order, each triangle's edges in order.
-std::vector<MeshEdge> build_edge_list(const AdjacencyMesh& mesh);
-
-// Unit angle-weighted vertex normals (zero for a vertex of degenerate faces only), for the edge
-// buffer's smoothing data.
-std::vector<glm::vec3> vertex_normals(const AdjacencyMesh& mesh);
-
-}  // namespace bz::geo
+#include "geometry/derived/edge_list.h"

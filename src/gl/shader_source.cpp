@@ -5,7 +5,7 @@
 #include <sstream>
 
 #include "core/error.h"
-#include "core/file_io.h"
+#include "core/io/file_io.h"
 
 namespace bz::gl {
 namespace fs = std::filesystem;

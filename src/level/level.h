@@ -32,7 +32,7 @@ struct ObjectDesc {
 };
 
 // How hard the game plays. The level names its default; the player's setting or --difficulty
-// wins. game/difficulty.h turns a level's rules into the rules of one difficulty.
+// wins. game/difficulty/difficulty.h turns a level's rules into the rules of one difficulty.
 enum class Difficulty : std::uint8_t { easy, normal, arcade };
 
 // The enemy rules and the scoring, after the 1980 operator defaults where those are known

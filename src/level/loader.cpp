@@ -3,10 +3,10 @@
 #include <tuple>
 
 #include "core/error.h"
-#include "core/file_io.h"
-#include "level/sections.h"
-#include "level/syntax.h"
-#include "level/table_reader.h"
+#include "core/io/file_io.h"
+#include "level/sections/sections.h"
+#include "level/syntax/syntax.h"
+#include "level/sections/table_reader.h"
 
 namespace bz::level {
 namespace fs = std::filesystem;

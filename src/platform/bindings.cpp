@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cctype>
 
-#include "core/printable.h"
+#include "core/text/printable.h"
 
 namespace bz::platform {
 

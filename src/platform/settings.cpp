@@ -9,9 +9,9 @@
 #include <sstream>
 
 #include "core/error.h"
-#include "core/file_io.h"
-#include "core/printable.h"
-#include "core/toml_scan.h"
+#include "core/io/file_io.h"
+#include "core/text/printable.h"
+#include "core/text/toml_scan.h"
 
 namespace bz::platform {
 
@@ -45,7 +45,7 @@ std::pair<std::size_t, std::size_t> position_of(std::string_view text, std::size
     return {line, column};
 }
 
-// What toml++ must not be given (see core/toml_scan.h), as one positioned message.
+// What toml++ must not be given (see core/text/toml_scan.h), as one positioned message.
 std::optional<std::string> unsafe_toml(std::string_view text, const std::string& source) {
     if (const auto deep = find_deep_key(text, kMaxSettingsKeyDots)) {
         std::size_t at = deep->offset;

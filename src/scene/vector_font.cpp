@@ -5,7 +5,7 @@
 #include <string>
 
 #include "core/error.h"
-#include "core/file_io.h"
+#include "core/io/file_io.h"
 #include "core/paths.h"
 
 namespace bz::scene {

@@ -8,7 +8,7 @@
 #include "core/image_io.h"
 #include "game/default_level.h"
 #include "game/game.h"
-#include "game/hud_layout.h"
+#include "game/hud/hud_layout.h"
 #include "render/renderer.h"
 #include "support/gl_test.h"
 

@@ -18,11 +18,11 @@
 #include <string>
 
 #include "core/error.h"
-#include "core/regular_file.h"
-#include "geometry/import.h"
-#include "geometry/import_gltf.h"
-#include "geometry/import_guard.h"
-#include "geometry/import_zip.h"
+#include "core/io/regular_file.h"
+#include "geometry/import/import.h"
+#include "geometry/import/import_gltf.h"
+#include "geometry/import/import_guard.h"
+#include "geometry/import/import_zip.h"
 
 namespace {
 

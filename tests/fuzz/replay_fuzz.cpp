@@ -8,7 +8,7 @@
 
 #include "core/error.h"
 #include "fuzz_checks.h"
-#include "game/replay.h"
+#include "game/records/replay.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     const std::string_view text(reinterpret_cast<const char*>(data), size);

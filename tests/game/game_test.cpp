@@ -5,8 +5,8 @@
 #include <gtest/gtest.h>
 
 #include "core/error.h"
-#include "game/autopilot.h"
-#include "game/tuning.h"
+#include "game/difficulty/autopilot.h"
+#include "game/world/tuning.h"
 #include "test_world.h"
 
 namespace bz::game {

@@ -3,10 +3,10 @@
 #include <functional>
 #include <memory>
 
-#include "game/assets.h"
+#include "game/assets/assets.h"
 #include "game/default_level.h"
-#include "game/tick_command.h"
-#include "game/world.h"
+#include "game/world/tick_command.h"
+#include "game/world/world.h"
 
 namespace bz::game::test {
 

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <filesystem>
 
-#include "core/file_io.h"
+#include "core/io/file_io.h"
 #include "level/loader.h"
 
 namespace bz::level {

@@ -6,7 +6,7 @@
 
 #include <filesystem>
 
-#include "core/file_io.h"
+#include "core/io/file_io.h"
 #include "level_test_util.h"
 
 namespace bz::level {

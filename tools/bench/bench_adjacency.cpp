@@ -12,10 +12,10 @@
 #include <string_view>
 #include <vector>
 
-#include "geometry/adjacency.h"
-#include "geometry/line_mesh.h"
-#include "geometry/primitives.h"
-#include "geometry/weld.h"
+#include "geometry/line_mesh/adjacency.h"
+#include "geometry/line_mesh/line_mesh.h"
+#include "geometry/generated/primitives.h"
+#include "geometry/line_mesh/weld.h"
 
 namespace {
 

@@ -2,11 +2,11 @@
 // verifying a recorded replay (the goal: minutes of play verify in well under a second).
 #include <benchmark/benchmark.h>
 
-#include "game/assets.h"
-#include "game/autopilot.h"
+#include "game/assets/assets.h"
+#include "game/difficulty/autopilot.h"
 #include "game/default_level.h"
-#include "game/replay.h"
-#include "game/world.h"
+#include "game/records/replay.h"
+#include "game/world/world.h"
 
 namespace {
 

@@ -1,0 +1,65 @@
+#include "app/commands/camera_args.h"
+
+#include <algorithm>
+#include <string>
+
+#include "render/camera_framing.h"
+
+namespace bz::app {
+
+bool parse_camera_option(std::string_view a, ArgCursor& cur, CameraArgs& o) {
+    if (a == "--size") {
+        o.size = parse_size(a, cur.value(a));
+        return true;
+    }
+    if (a == "--eye") {
+        o.eye = parse_vec3(a, cur.value(a));
+    } else if (a == "--target") {
+        o.target = parse_vec3(a, cur.value(a));
+    } else if (a == "--up") {
+        o.up = parse_vec3(a, cur.value(a));
+    } else if (a == "--fov") {
+        o.fov = parse_number(a, cur.value(a));
+    } else if (a == "--near") {
+        o.near = parse_number(a, cur.value(a));
+    } else if (a == "--far") {
+        o.far = parse_number(a, cur.value(a));
+    } else {
+        return false;
+    }
+    o.any_view_option = true;
+    return true;
+}
+
+void validate_camera(const CameraArgs& o) {
+    if (!(o.fov > 0.0 && o.fov < 180.0)) throw UsageError("--fov must be in (0, 180)");
+    if (o.near && *o.near <= 0.0) throw UsageError("--near must be > 0");
+    if (o.near && o.far && *o.far <= *o.near) throw UsageError("--far must be > --near");
+    if (o.eye && o.target && glm::length(*o.eye - *o.target) <= 0.0) {
+        throw UsageError("--eye and --target must differ");
+    }
+    if (glm::length(o.up) <= 0.0) throw UsageError("--up must not be zero");
+}
+
+scene::Camera camera_for(const CameraArgs& o, const geo::Bounds& bounds) {
+    const double aspect = static_cast<double>(o.size.x) / o.size.y;
+    scene::Camera c = render::frame_bounds(bounds, o.fov, aspect);
+    if (o.eye) {
+        c.eye = *o.eye;
+        c.target = o.target.value_or(glm::dvec3(bounds.center()));
+        const double dist = glm::length(c.eye - c.target);
+        const double r = std::max(static_cast<double>(bounds.radius()), 1e-6);
+        c.near = std::max(dist - r * 1.5, dist * 1e-3);
+        c.far = dist + r * 1.5;
+    } else if (o.target) {
+        c.target = *o.target;
+    }
+    c.up = o.up;
+    c.fov_y_deg = o.fov;
+    if (o.near) c.near = *o.near;
+    if (o.far) c.far = *o.far;
+    if (c.far <= c.near) c.far = c.near * 2.0;
+    return c;
+}
+
+}  // namespace bz::app

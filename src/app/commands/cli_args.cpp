@@ -1,0 +1,80 @@
+#include "app/commands/cli_args.h"
+
+#include <charconv>
+#include <cmath>
+#include <string>
+
+#include "core/text/printable.h"
+
+namespace bz::app {
+
+bool looks_like_option(std::string_view word) {
+    if (word.size() < 2 || word[0] != '-') return false;
+    const char c = word[1];
+    return !((c >= '0' && c <= '9') || c == '.');
+}
+
+std::string_view ArgCursor::value(std::string_view option) {
+    if (done()) throw UsageError(std::string(option) + " needs a value");
+    const std::string_view v = args_[index_];
+    if (v.empty()) throw UsageError(std::string(option) + " needs a value, not an empty string");
+    if (looks_like_option(v)) {
+        throw UsageError(std::string(option) + " needs a value, but the next word is the option " +
+                         printable(v) + " (write ./" + printable(v) + " for a file of that name)");
+    }
+    ++index_;
+    return v;
+}
+
+double parse_number(std::string_view option, std::string_view text) {
+    double v = 0.0;
+    const auto* end = text.data() + text.size();
+    const auto r = std::from_chars(text.data(), end, v);
+    if (r.ec != std::errc{} || r.ptr != end || !std::isfinite(v)) {
+        throw UsageError(std::string(option) + ": '" + printable(text) + "' is not a finite number");
+    }
+    return v;
+}
+
+int parse_int(std::string_view option, std::string_view text, int min_value, int max_value) {
+    int v = 0;
+    const auto* end = text.data() + text.size();
+    const auto r = std::from_chars(text.data(), end, v);
+    if (r.ec != std::errc{} || r.ptr != end || v < min_value || v > max_value) {
+        throw UsageError(std::string(option) + ": '" + printable(text) + "' is not an integer in [" +
+                         std::to_string(min_value) + ", " + std::to_string(max_value) + "]");
+    }
+    return v;
+}
+
+scene::Style parse_style(std::string_view option, std::string_view text) {
+    if (const auto s = scene::style_from_name(text)) return *s;
+    throw UsageError(std::string(option) + ": expected " + scene::style_name_list() + ", not '" +
+                     std::string(text) + "'");
+}
+
+glm::dvec3 parse_vec3(std::string_view option, std::string_view text) {
+    glm::dvec3 v(0.0);
+    std::size_t start = 0;
+    for (int i = 0; i < 3; ++i) {
+        const std::size_t comma = text.find(',', start);
+        const bool last = i == 2;
+        if (last != (comma == std::string_view::npos)) {
+            throw UsageError(std::string(option) + ": expected x,y,z but got '" + printable(text) + "'");
+        }
+        const std::string_view part = text.substr(start, last ? std::string_view::npos : comma - start);
+        v[i] = parse_number(option, part);
+        start = comma + 1;
+    }
+    return v;
+}
+
+glm::ivec2 parse_size(std::string_view option, std::string_view text) {
+    const std::size_t x = text.find('x');
+    if (x == std::string_view::npos) {
+        throw UsageError(std::string(option) + ": expected WxH but got '" + printable(text) + "'");
+    }
+    return {parse_int(option, text.substr(0, x), 1, 16384), parse_int(option, text.substr(x + 1), 1, 16384)};
+}
+
+}  // namespace bz::app

@@ -1,0 +1,196 @@
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "core/io/output_path.h"
+#include "core/text/printable.h"
+#include "app/commands/camera_args.h"
+#include "app/commands/cli_args.h"
+#include "app/commands/commands.h"
+#include "app/commands/parse_command.h"
+#include "app/headless_gl.h"
+#include "core/error.h"
+#include "core/image_io.h"
+#include "core/image_stats.h"
+#include "app/model_source.h"
+#include "geometry/line_mesh/line_mesh.h"
+#include "render/renderer.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace bz::app {
+
+namespace {
+
+constexpr const char* kUsage =
+    "usage: beamzone render INPUT [--eye x,y,z] [--target x,y,z] [--up x,y,z] [--fov DEG]\n"
+    "                       [--near N] [--far F] [--size WxH] [--preset fast|balanced|high]\n"
+    "                       [--line-method compute|geometry_shader|image_outline]\n"
+    "                       [--style NAME] [--shading flat|smooth] [--no-smoothing] [--one-sided]\n"
+    "                       [--color r,g,b] [--out frame.png]\n"
+    "                       [--mask mask.png] [--repeat N] [--copies N] [--beam classic|mame]\n"
+    "                       [--lit-share]\n"
+    "Renders a model file (or builtin:cube, builtin:sphere, builtin:grid) headless to PNG. Without --eye the camera frames the model's bounding\n"
+    "box from a 3/4 view. --mask writes the 1-pixel visible-spine mask (255 = line).\n"
+    "--style: vector (default), vector-xray, toon, sketch, pop-art or halo (occluded and arcade\n"
+    "are the old names of vector and vector-xray). --shading: filled styles' normals.\n"
+    "--no-smoothing: the halo style's silhouettes stay polygonal (no cubic smoothing).\n"
+    "--one-sided: toon / pop-art outlines extruded outward and depth-tested, not centred.\n"
+    "--repeat N renders N timed frames and prints the mean milliseconds of each pass.\n"
+    "--copies N draws N instances of the model on a square grid in the xz plane (a scene of a\n"
+    "chosen size for timing; the camera frames them all).\n"
+    "--beam picks the vector beam's look (default classic; `play` defaults to mame).\n"
+    "--lit-share prints the share of the picture's pixels whose brightest channel is above\n"
+    "1/255 (the haze figure; tools/haze measures the seed's hallway with it).\n";
+
+struct RenderOptions {
+    std::string input;
+    CameraArgs camera;  // shared with `reference`, so both place the camera alike
+    std::string preset = "balanced";
+    std::string line_method;  // empty: the preset's
+    scene::Style style = scene::Style::vector;
+    bool smooth = true;  // filled styles: smooth vertex normals (--shading flat: faces)
+    bool smoothing = true;  // halo: cubic silhouette smoothing (--no-smoothing: plain)
+    bool one_sided = false;  // toon / pop-art: one-sided outline quads
+    glm::dvec3 color{0.25, 1.0, 0.35};
+    std::string out = "frame.png";
+    std::string mask;
+    int repeat = 0;
+    int copies = 1;
+    std::string beam = "classic";
+    bool lit_share = false;
+};
+
+RenderOptions parse(Args args) {
+    RenderOptions o;
+    ArgCursor cur(static_cast<int>(args.size()), args.data());
+    while (!cur.done()) {
+        const std::string_view a = cur.next();
+        if (parse_camera_option(a, cur, o.camera)) continue;
+        if (a == "--preset") o.preset = cur.value(a);
+        else if (a == "--line-method") o.line_method = cur.value(a);
+        else if (a == "--color") o.color = parse_vec3(a, cur.value(a));
+        else if (a == "--out") o.out = cur.value(a);
+        else if (a == "--mask") o.mask = cur.value(a);
+        else if (a == "--repeat") o.repeat = parse_int(a, cur.value(a), 1, 100000);
+        else if (a == "--copies") o.copies = parse_int(a, cur.value(a), 1, 100000);
+        else if (a == "--beam") o.beam = cur.value(a);
+        else if (a == "--lit-share") o.lit_share = true;
+        else if (a == "--style") {
+            o.style = parse_style(a, cur.value(a));
+        } else if (a == "--no-smoothing") {
+            o.smoothing = false;
+        } else if (a == "--one-sided") {
+            o.one_sided = true;
+        } else if (a == "--shading") {
+            const std::string_view s = cur.value(a);
+            if (s != "flat" && s != "smooth") throw UsageError("--shading: expected flat or smooth");
+            o.smooth = s == "smooth";
+        } else if (!a.empty() && a[0] == '-') {
+            throw UsageError("unknown option " + printable(a));
+        } else if (o.input.empty()) {
+            o.input = a;
+        } else {
+            throw UsageError("more than one INPUT given");
+        }
+    }
+    if (o.input.empty()) throw UsageError("no INPUT model given");
+    if (o.out == o.mask) throw UsageError("--out and --mask name the same file");
+    validate_camera(o.camera);
+    return o;
+}
+
+void print_timings(const render::Renderer& r, const std::vector<std::vector<gl::PassTime>>& frames) {
+    if (frames.empty()) return;
+    std::fprintf(stdout, "pass        mean ms  (%zu frames, %dx%d, glFinish + CPU clock)\n", frames.size(),
+                 r.width(), r.height());
+    double total = 0.0;
+    for (std::size_t p = 0; p < frames.front().size(); ++p) {
+        double sum = 0.0;
+        for (const auto& f : frames) sum += f[p].ms;
+        const double mean = sum / static_cast<double>(frames.size());
+        total += mean;
+        std::fprintf(stdout, "%-10s %8.2f\n", frames.front()[p].name.c_str(), mean);
+    }
+    std::fprintf(stdout, "%-10s %8.2f\n", "total", total);
+    const auto& s = r.stats();
+    std::fprintf(stdout, "objects %zu, triangles %zu, feature edges %zu\n", s.objects_drawn,
+                 s.triangles_submitted, s.feature_edges);
+}
+
+// Lays out `copies` instances on a square grid in the xz plane; returns their joint bounds.
+geo::Bounds place_copies(scene::FrameList& frame, scene::MeshId id, const geo::Bounds& one, int copies,
+                         glm::vec3 color, bool smooth) {
+    const int side = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(copies))));
+    const glm::dvec3 step = glm::dvec3(one.max - one.min) * 1.2;
+    geo::Bounds all = one;
+    for (int i = 0; i < copies; ++i) {
+        const glm::dvec3 offset(step.x * (i % side), 0.0, -step.z * (i / side));
+        frame.items.push_back({id, glm::translate(glm::dmat4(1.0), offset), color, 1.0f, true, smooth});
+        all.min = glm::min(all.min, one.min + glm::vec3(offset));
+        all.max = glm::max(all.max, one.max + glm::vec3(offset));
+    }
+    return all;
+}
+
+}  // namespace
+
+int cmd_render(Args args) {
+    int exit_code = 0;
+    render::RenderSettings settings;
+    const auto parse_checked = [&settings](Args a) {
+        RenderOptions parsed = parse(a);
+        try {
+            settings = render::preset(parsed.preset);
+            settings.beam = render::beam_look(parsed.beam);
+            if (!parsed.line_method.empty()) settings.method = render::parse_line_method(parsed.line_method);
+        } catch (const UserError& e) {
+            throw UsageError(e.what());  // an unknown preset name is a usage error
+        }
+        return parsed;
+    };
+    const std::optional<RenderOptions> parsed = parse_command("render", args, kUsage, parse_checked, &exit_code);
+    if (!parsed) return exit_code;
+    const RenderOptions& o = *parsed;
+    const std::filesystem::path inputs[] = {o.input};
+    check_output_file("--out", o.out, kPngOutput, inputs);
+    if (!o.mask.empty()) check_output_file("--mask", o.mask, kPngOutput, inputs);
+    geo::MeshReport report;
+    geo::AdjacencyMesh mesh = geo::build_line_mesh(load_model_source(o.input), &report);
+    if (mesh.triangle_count() == 0) throw UserError(o.input + ": no usable triangles");
+
+    auto context = make_headless_context();
+    scene::MeshLibrary meshes;
+    scene::FrameList frame;
+    const geo::Bounds one = geo::compute_bounds(mesh.positions);
+    const scene::MeshId id = meshes.add(o.input, std::move(mesh));
+    const geo::Bounds bounds = place_copies(frame, id, one, o.copies, glm::vec3(o.color), o.smooth);
+    frame.camera = camera_for(o.camera, bounds);
+    frame.style = o.style;
+
+    settings.count_edges = o.repeat > 0;
+    settings.cubic_smoothing = o.smoothing;
+    settings.one_sided_outlines = o.one_sided;
+    render::Renderer renderer(settings, o.camera.size.x, o.camera.size.y,
+                              o.repeat > 0 ? gl::TimingMethod::cpu_finish : gl::TimingMethod::off);
+    std::vector<std::vector<gl::PassTime>> timings;
+    const int frames = std::max(o.repeat, 1) + (o.repeat > 0 ? 2 : 0);  // 2 warm-up frames
+    for (int i = 0; i < frames; ++i) {
+        renderer.render(frame, meshes, render::Renderer::kOffscreen);
+        if (o.repeat > 0 && i >= 2) timings.push_back(renderer.pass_times());
+    }
+    const Image picture{o.camera.size.x, o.camera.size.y, 4, renderer.read_color()};
+    write_png(o.out, picture);
+    if (o.lit_share) {
+        std::fprintf(stdout, "lit share (brightest channel above 1/255): %.2f%%\n", 100.0 * lit_share(picture));
+    }
+    if (!o.mask.empty()) write_png(o.mask, Image{o.camera.size.x, o.camera.size.y, 1, renderer.render_mask(frame, meshes)});
+    print_timings(renderer, timings);
+    if (context->debug().error_count() > 0) {
+        std::fprintf(stderr, "beamzone render: %d OpenGL error(s) reported\n", context->debug().error_count());
+        return 1;
+    }
+    return 0;
+}
+
+}  // namespace bz::app

@@ -1,0 +1,507 @@
+#include "app/play/menu/play_menus.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+
+namespace bz::app::menu {
+
+namespace {
+
+using platform::Action;
+using platform::MenuKey;
+
+enum TitleRow : std::size_t { t_start, t_level, t_options, t_controls, t_scores, t_quit };
+enum PauseRow : std::size_t { p_resume, p_options, p_controls, p_quit_to_title };
+enum OptionRow : std::size_t {
+    o_preset,
+    o_style,
+    o_volume,
+    o_fullscreen,
+    o_vsync,
+    o_gamepad,
+    o_fps,
+    o_keys,
+    o_reset_keys,
+    o_back
+};
+
+constexpr float kVolumeStep = 0.1f;
+const std::string kStyles[] = {"occluded", "arcade"};
+
+std::string upper(std::string s) {
+    for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    return s;
+}
+
+std::string on_off(bool b) {
+    return b ? "ON" : "OFF";
+}
+
+// The next of `values` after `current`, `by` steps on, wrapping.
+std::string cycle(const std::vector<std::string>& values, const std::string& current, int by) {
+    if (values.empty()) return current;
+    const auto it = std::find(values.begin(), values.end(), current);
+    const auto n = static_cast<int>(values.size());
+    const int i = it == values.end() ? 0 : static_cast<int>(it - values.begin());
+    return values[static_cast<std::size_t>(((i + by) % n + n) % n)];
+}
+
+std::string level_label(const Env& env) {
+    if (env.current_level.empty()) return "BUILT-IN";
+    for (const LevelChoice& l : env.levels) {
+        if (l.file == env.current_level) return l.name;
+    }
+    return upper(env.current_level.stem().string());
+}
+
+std::string hint_keys(const platform::Bindings& b, Action a) {
+    return platform::keys_label(b, a, 1);
+}
+
+}  // namespace
+
+std::string action_label(Action a) {
+    switch (a) {
+        case Action::left_tread_forward:
+            return "LEFT TREAD FORWARD";
+        case Action::left_tread_back:
+            return "LEFT TREAD BACK";
+        case Action::right_tread_forward:
+            return "RIGHT TREAD FORWARD";
+        case Action::right_tread_back:
+            return "RIGHT TREAD BACK";
+        case Action::drive_forward:
+            return "DRIVE FORWARD";
+        case Action::drive_back:
+            return "DRIVE BACK";
+        case Action::turn_left:
+            return "TURN LEFT";
+        case Action::turn_right:
+            return "TURN RIGHT";
+        case Action::fire:
+            return "FIRE";
+        case Action::pause:
+            return "PAUSE";
+        case Action::fullscreen:
+            return "FULLSCREEN";
+        case Action::screenshot:
+            return "SCREENSHOT";
+        case Action::reload_shaders:
+            return "RELOAD SHADERS";
+        case Action::mute:
+            return "MUTE";
+        case Action::volume_up:
+            return "VOLUME UP";
+        case Action::volume_down:
+            return "VOLUME DOWN";
+        case Action::quit:
+            return "QUIT";
+        case Action::start:
+            return "START / SELECT";
+        case Action::back:
+            return "BACK / ERASE";
+        default:
+            break;
+    }
+    // Actions added later still get a readable name: their settings-file name.
+    return upper(std::string(platform::action_name(a)));
+}
+
+std::string pad_label(Action a, platform::GamepadMode mode) {
+    const bool tank = mode == platform::GamepadMode::tank;
+    switch (a) {
+        case Action::left_tread_forward:
+        case Action::left_tread_back:
+            return tank ? "LEFT STICK" : "";
+        case Action::right_tread_forward:
+        case Action::right_tread_back:
+            return tank ? "RIGHT STICK" : "";
+        case Action::drive_forward:
+        case Action::drive_back:
+            return tank ? "D-PAD (MENUS)" : "LEFT STICK";
+        case Action::turn_left:
+        case Action::turn_right:
+            return tank ? "D-PAD (MENUS)" : "LEFT STICK";
+        case Action::fire:
+            return "A, R1, TRIGGERS";
+        case Action::pause:
+            return "START";
+        case Action::start:
+            return "A, START";
+        case Action::back:
+            return "B, BACK";
+        default:
+            return "";
+    }
+}
+
+PlayMenus::PlayMenus(Env env) : env_(std::move(env)) {}
+
+void PlayMenus::set_context(Context c) {
+    if (c == context_) return;
+    context_ = c;
+    capturing_ = false;
+    status_.clear();
+    stack_.clear();
+    if (c == Context::title) stack_.push_back({Screen::title});
+    if (c == Context::paused) stack_.push_back({Screen::paused});
+}
+
+void PlayMenus::open_page(Screen s) {
+    if (!stack_.empty() && stack_.back().screen == s) return;
+    stack_.push_back({s});
+    const Page p = page();  // start on the first row that can be chosen
+    if (!p.rows.empty() && !p.rows.front().selectable) move(1);
+}
+
+std::string PlayMenus::hint(Screen s) const {
+    const platform::Bindings& b = env_.settings->keys;
+    const std::string choose =
+        hint_keys(b, Action::drive_forward) + " / " + hint_keys(b, Action::drive_back) + " CHOOSE";
+    const std::string select = hint_keys(b, Action::start) + " SELECT";
+    const std::string back = hint_keys(b, Action::back) + " BACK";
+    const std::string pad = "   PAD: D-PAD, A, B";
+    switch (s) {
+        case Screen::title:
+            return choose + "   " + select + "   " + hint_keys(b, Action::quit) + " QUIT" + pad;
+        case Screen::paused:
+            return platform::keys_label(b, Action::pause) + " RESUME   " + choose + "   " + select +
+                   pad;
+        case Screen::options:
+            return choose + "   " + hint_keys(b, Action::turn_left) + " / " +
+                   hint_keys(b, Action::turn_right) + " CHANGE   " + back + pad;
+        case Screen::keys:
+            return capturing_ ? std::string("PRESS THE NEW KEY   ESCAPE CANCELS")
+                              : choose + "   " + select + " TO REBIND   " + back;
+        default:
+            return choose + "   " + select + "   " + back + pad;
+    }
+}
+
+Page PlayMenus::build(Screen s) const {
+    const platform::Settings& st = *env_.settings;
+    Page p;
+    p.hint = hint(s);
+    switch (s) {
+        case Screen::title:
+            p.title = "BEAMZONE";
+            p.big_title = true;
+            p.rows = {item("START"),       choice("LEVEL", level_label(env_)),
+                      item("OPTIONS"),     item("CONTROLS"),
+                      item("HIGH SCORES"), item("QUIT")};
+            break;
+        case Screen::paused:
+            p.title = "PAUSED";
+            p.under_band = true;
+            p.rows = {item("RESUME"), item("OPTIONS"), item("CONTROLS"), item("QUIT TO TITLE")};
+            break;
+        case Screen::levels:
+            p.title = "LEVEL";
+            p.columns = true;
+            for (const LevelChoice& l : env_.levels) {
+                Row r = item(l.name, l.user ? "YOUR LEVEL" : "");
+                if (l.file == env_.current_level) r.note = "PLAYING";
+                p.rows.push_back(r);
+            }
+            p.rows.push_back(item("BACK"));
+            break;
+        case Screen::options: {
+            p.title = "OPTIONS";
+            p.columns = true;
+            const int volume = static_cast<int>(std::lround(st.volume * 100.0f));
+            const bool tank = st.gamepad == platform::GamepadMode::tank;
+            p.rows = {
+                choice("PRESET", upper(st.preset)),
+                choice("STYLE", upper(st.style)),
+                choice("VOLUME", std::to_string(volume) + "%", st.mute ? "MUTED" : ""),
+                choice("FULLSCREEN", on_off(st.fullscreen)),
+                choice("VSYNC", upper(std::string(platform::vsync_name(st.vsync)))),
+                choice("GAMEPAD LAYOUT", tank ? "TANK" : "DRIVE",
+                       tank ? "STICK PER TREAD" : "LEFT STICK"),
+                choice("SHOW FPS", on_off(st.show_fps)),
+                item("KEYS"),
+                item("RESET KEYS TO DEFAULTS"),
+                item("BACK"),
+            };
+            if (!env_.save_status.empty()) p.lines.push_back(env_.save_status);
+            break;
+        }
+        case Screen::keys: {
+            p.title = "KEYS";
+            p.columns = true;
+            for (std::size_t i = 0; i < platform::kActionCount; ++i) {
+                const auto a = static_cast<Action>(i);
+                Row r = item(action_label(a), platform::keys_label(st.keys, a, 3));
+                for (const platform::KeyBinding& k : st.keys[i]) {
+                    if (const auto other = platform::conflicting_action(st.keys, a, k)) {
+                        r.warn = true;
+                        r.note = "ALSO " + action_label(*other);
+                        break;
+                    }
+                }
+                p.rows.push_back(r);
+            }
+            p.rows.push_back(item("BACK"));
+            if (capturing_) {
+                p.lines.push_back("PRESS A KEY FOR " +
+                                  action_label(static_cast<Action>(selected())));
+            } else if (!status_.empty()) {
+                p.lines.push_back(status_);
+            }
+            break;
+        }
+        case Screen::controls: {
+            p.title = "CONTROLS";
+            p.columns = true;
+            for (std::size_t i = 0; i < platform::kActionCount; ++i) {
+                const auto a = static_cast<Action>(i);
+                p.rows.push_back(item(action_label(a), platform::keys_label(st.keys, a, 3),
+                                      pad_label(a, st.gamepad)));
+            }
+            p.rows.push_back(item("BACK"));
+            break;
+        }
+        case Screen::high_scores: {
+            p.title = "HIGH SCORES";
+            p.columns = true;
+            if (!env_.high_scores_level.empty()) p.rows.push_back(info(env_.high_scores_level, ""));
+            if (env_.high_scores) {
+                int rank = 1;
+                for (const game::HighScore& e : env_.high_scores->entries()) {
+                    p.rows.push_back(
+                        info(std::to_string(rank++) + ".  " + e.initials, std::to_string(e.score)));
+                }
+            }
+            p.rows.push_back(item("BACK"));
+            break;
+        }
+    }
+    return p;
+}
+
+Page PlayMenus::page() const {
+    if (stack_.empty()) return {};
+    return build(stack_.back().screen);
+}
+
+void PlayMenus::move(int by) {
+    if (stack_.empty()) return;
+    const Page p = page();
+    if (p.rows.empty()) return;
+    const auto n = static_cast<int>(p.rows.size());
+    int i = static_cast<int>(stack_.back().selected);
+    for (int step = 0; step < n; ++step) {  // skip rows that cannot be chosen
+        i = ((i + by) % n + n) % n;
+        if (p.rows[static_cast<std::size_t>(i)].selectable) break;
+    }
+    stack_.back().selected = static_cast<std::size_t>(i);
+}
+
+void PlayMenus::back(std::vector<Request>& out) {
+    if (stack_.size() > 1) {
+        stack_.pop_back();
+        status_.clear();
+    } else if (context_ == Context::paused) {
+        out.push_back({Request::Kind::resume});  // the pause key resumes, as the hint says
+    } else if (context_ == Context::title && !stack_.empty()) {
+        stack_.back().selected = t_quit;  // one more BACK-then-SELECT to leave, not one key
+    }
+}
+
+std::vector<Request> PlayMenus::change(int by) {
+    std::vector<Request> out;
+    platform::Settings& st = *env_.settings;
+    const std::size_t row = selected();
+    if (screen() == Screen::title && row == t_level) {
+        if (env_.levels.empty()) return out;
+        std::vector<std::string> files;
+        for (const auto& l : env_.levels) files.push_back(l.file.string());
+        out.push_back({Request::Kind::choose_level, cycle(files, env_.current_level.string(), by)});
+        return out;
+    }
+    if (screen() != Screen::options) return out;
+    switch (row) {
+        case o_preset:
+            st.preset = cycle(env_.presets, st.preset, by);
+            break;
+        case o_style:
+            st.style = cycle({std::begin(kStyles), std::end(kStyles)}, st.style, by);
+            break;
+        case o_volume: {
+            const float v =
+                std::round((st.volume + static_cast<float>(by) * kVolumeStep) / kVolumeStep) *
+                kVolumeStep;
+            st.volume = v > 1.0f + 1e-3f ? 0.0f : (v < -1e-3f ? 1.0f : std::clamp(v, 0.0f, 1.0f));
+            break;
+        }
+        case o_fullscreen:
+            st.fullscreen = !st.fullscreen;
+            break;
+        case o_vsync: {
+            const std::vector<std::string> modes = {"off", "on", "adaptive"};
+            platform::parse_vsync(cycle(modes, std::string(platform::vsync_name(st.vsync)), by),
+                                  &st.vsync);
+            break;
+        }
+        case o_gamepad:
+            st.gamepad = st.gamepad == platform::GamepadMode::tank ? platform::GamepadMode::drive
+                                                                   : platform::GamepadMode::tank;
+            break;
+        case o_fps:
+            st.show_fps = !st.show_fps;
+            break;
+        default:
+            return out;
+    }
+    out.push_back({Request::Kind::settings_changed});
+    return out;
+}
+
+std::vector<Request> PlayMenus::confirm() {
+    std::vector<Request> out;
+    const std::size_t row = selected();
+    const Page p = page();
+    const bool is_back = row < p.rows.size() && p.rows[row].label == "BACK";
+    if (is_back) {
+        back(out);
+        return out;
+    }
+    switch (screen()) {
+        case Screen::title:
+            switch (row) {
+                case t_start:
+                    out.push_back({Request::Kind::start_game});
+                    break;
+                case t_level:
+                    open_page(Screen::levels);
+                    break;
+                case t_options:
+                    open_page(Screen::options);
+                    break;
+                case t_controls:
+                    open_page(Screen::controls);
+                    break;
+                case t_scores:
+                    open_page(Screen::high_scores);
+                    break;
+                case t_quit:
+                    out.push_back({Request::Kind::quit});
+                    break;
+                default:
+                    break;
+            }
+            break;
+        case Screen::paused:
+            switch (row) {
+                case p_resume:
+                    out.push_back({Request::Kind::resume});
+                    break;
+                case p_options:
+                    open_page(Screen::options);
+                    break;
+                case p_controls:
+                    open_page(Screen::controls);
+                    break;
+                case p_quit_to_title:
+                    out.push_back({Request::Kind::quit_to_title});
+                    break;
+                default:
+                    break;
+            }
+            break;
+        case Screen::levels:
+            if (row < env_.levels.size()) {
+                out.push_back({Request::Kind::choose_level, env_.levels[row].file});
+                stack_.pop_back();
+            }
+            break;
+        case Screen::options:
+            if (row == o_keys) {
+                open_page(Screen::keys);
+            } else if (row == o_reset_keys) {
+                env_.settings->keys = platform::default_bindings();
+                out.push_back({Request::Kind::settings_changed});
+            } else {
+                out = change(1);
+            }
+            break;
+        case Screen::keys:
+            if (row < platform::kActionCount) {
+                capturing_ = true;
+                out.push_back({Request::Kind::begin_capture});
+            }
+            break;
+        default:
+            break;
+    }
+    return out;
+}
+
+std::vector<Request> PlayMenus::handle(MenuKey key) {
+    std::vector<Request> out;
+    if (!open() || capturing_) return out;
+    switch (key) {
+        case MenuKey::up:
+            move(-1);
+            break;
+        case MenuKey::down:
+            move(1);
+            break;
+        case MenuKey::left:
+            out = change(-1);
+            break;
+        case MenuKey::right:
+            out = change(1);
+            break;
+        case MenuKey::confirm:
+            out = confirm();
+            break;
+        case MenuKey::back:
+            back(out);
+            break;
+    }
+    return out;
+}
+
+std::vector<Request> PlayMenus::captured(const platform::KeyBinding& key) {
+    std::vector<Request> out;
+    if (!capturing_) return out;
+    capturing_ = false;
+    const auto action = static_cast<Action>(selected());
+    if (key == platform::Input::kCaptureCancelled || selected() >= platform::kActionCount) {
+        status_ = "NOT CHANGED";
+        return out;
+    }
+    env_.settings->keys[selected()] = {key};
+    status_ = action_label(action) + " IS NOW " + upper(platform::key_name(key));
+    if (const auto other = platform::conflicting_action(env_.settings->keys, action, key)) {
+        status_ += " - ALSO BOUND TO " + action_label(*other);
+    }
+    out.push_back({Request::Kind::settings_changed});
+    return out;
+}
+
+float PlayMenus::scene_intensity() const {
+    if (!open()) return 1.0f;
+    switch (screen()) {
+        case Screen::title:
+            return 0.45f;  // on top of the game's own dimming of the demo
+        case Screen::paused:
+            return 0.6f;
+        default:
+            return 0.15f;  // lists of text: the scene only as a faint backdrop
+    }
+}
+
+bool PlayMenus::keeps_game_hud() const {
+    return !open() || screen() == Screen::paused || screen() == Screen::title;
+}
+
+void PlayMenus::draw(std::vector<scene::HudLine>& out, const scene::VectorFont& font, double aspect,
+                     std::uint64_t tick) const {
+    if (!open() || stack_.empty()) return;
+    menu::draw(out, font, page(), selected(), aspect, tick);
+}
+
+}  // namespace bz::app::menu

@@ -1,0 +1,111 @@
+#include "core/io/output_path.h"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <random>
+#include <string>
+
+#include "core/error.h"
+#include "core/text/printable.h"
+
+namespace bz {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path folder_of(const fs::path& p) {
+    return p.has_parent_path() ? p.parent_path() : fs::path(".");
+}
+
+std::string quote(const fs::path& p) {
+    return "'" + printable(p.string()) + "'";
+}
+
+[[noreturn]] void refuse(std::string_view option, const fs::path& out, const std::string& why) {
+    throw UserError(std::string(option) + " " + quote(out) + ": " + why);
+}
+
+void require_folder(std::string_view option, const fs::path& out) {
+    const fs::path dir = folder_of(out);
+    std::error_code ec;
+    if (!fs::is_directory(dir, ec)) {
+        refuse(option, out,
+               "the folder " + quote(dir) + " does not exist (create it first; it is not " +
+                   "created for you)");
+    }
+}
+
+// Creates and removes a file in the folder: the one sure test that a write will be allowed
+// (permissions, read-only mounts, /proc and /sys all answer here rather than at the end).
+void probe_writable(std::string_view option, const fs::path& out) {
+    const fs::path dir = folder_of(out);
+    std::random_device rd;
+    const fs::path probe = dir / (".beamzone-write-test-" + std::to_string(rd()));
+    const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
+    if (fd < 0) {
+        refuse(option, out, "cannot create files in " + quote(dir) + ": " + std::strerror(errno));
+    }
+    ::close(fd);
+    ::unlink(probe.c_str());
+}
+
+// The first bytes of a regular file (at most `n`); opened only after stat said it is regular,
+// so a FIFO or device at the path is never opened.
+std::string head_of(const fs::path& p, std::size_t n) {
+    std::string out(n, '\0');
+    const int fd = ::open(p.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
+    if (fd < 0) return {};
+    std::size_t got = 0;
+    while (got < n) {
+        const ssize_t r = ::read(fd, out.data() + got, n - got);
+        if (r < 0 && errno == EINTR) continue;
+        if (r <= 0) break;
+        got += static_cast<std::size_t>(r);
+    }
+    ::close(fd);
+    out.resize(got);
+    return out;
+}
+
+}  // namespace
+
+void check_output_file(std::string_view option, const fs::path& out, const OutputKind& kind,
+                       std::span<const fs::path> inputs) {
+    if (out.empty()) refuse(option, out, "an empty path");
+    require_folder(option, out);
+    std::error_code ec;
+    const fs::file_status st = fs::status(out, ec);
+    if (fs::exists(st)) {
+        for (const fs::path& in : inputs) {
+            std::error_code eq;
+            if (!in.empty() && fs::equivalent(out, in, eq)) {
+                refuse(option, out, "that is an input of this command (" + quote(in) + ")");
+            }
+        }
+        if (fs::is_directory(st)) refuse(option, out, "that is a folder");
+        if (!fs::is_regular_file(st)) refuse(option, out, "that is not a regular file");
+        const std::string head = head_of(out, kind.magic.size());
+        if (!head.empty() && head != kind.magic) {
+            refuse(option, out,
+                   "an existing file that is not a " + std::string(kind.name) +
+                       " is there; it is not replaced (remove it first)");
+        }
+    }
+    probe_writable(option, out);
+}
+
+void check_output_dir(std::string_view option, const fs::path& out) {
+    if (out.empty()) refuse(option, out, "an empty path");
+    require_folder(option, out);
+    std::error_code ec;
+    const fs::file_status st = fs::status(out, ec);
+    if (fs::exists(st) && !fs::is_directory(st)) {
+        refuse(option, out, "an existing file that is not a folder is there");
+    }
+}
+
+}  // namespace bz

@@ -1,0 +1,85 @@
+#include "game/records/replay.h"
+
+#include <system_error>
+
+#include "core/io/file_io.h"
+#include "core/hash.h"
+#include "game/assets/assets.h"
+#include "game/difficulty/difficulty.h"
+#include "game/records/level_rules.h"
+
+namespace bz::game::replay {
+
+std::uint64_t level_hash(const level::Level& lv) {
+    std::error_code ec;
+    if (!lv.file.empty() && std::filesystem::is_regular_file(lv.file, ec)) {
+        return hash_bytes(read_file(lv.file));
+    }
+    // The built-in level has no file: its name and rules stand for it.
+    Hasher h;
+    h.text(lv.name);
+    h.value(level_rules_hash(lv));
+    return h.digest();
+}
+
+Recorder::Recorder(Header header) {
+    replay_.header = std::move(header);
+}
+
+void Recorder::record(const TickCommand& command, const World& after) {
+    replay_.commands.push_back(pack(command));
+    const std::uint64_t tick = after.state().tick;
+    if (tick % static_cast<std::uint64_t>(replay_.header.hash_interval) == 0) {
+        replay_.checks.push_back({tick, after.state_hash()});
+    }
+}
+
+Replay Recorder::finish(const World& world) const {
+    Replay r = replay_;
+    const std::uint64_t tick = world.state().tick;
+    if (tick > 0 && (r.checks.empty() || r.checks.back().tick < tick)) {
+        r.checks.push_back({tick, world.state_hash()});
+    }
+    return r;
+}
+
+Player::Player(Replay replay) : replay_(std::move(replay)) {}
+
+TickCommand Player::next() {
+    if (done()) return TickCommand{};
+    return unpack(replay_.commands[next_++]);
+}
+
+std::optional<Mismatch> Player::check(const World& world) {
+    const std::uint64_t tick = world.state().tick;
+    while (next_check_ < replay_.checks.size() && replay_.checks[next_check_].tick < tick)
+        ++next_check_;
+    if (next_check_ >= replay_.checks.size() || replay_.checks[next_check_].tick != tick)
+        return std::nullopt;
+    const StateCheck& c = replay_.checks[next_check_++];
+    const std::uint64_t actual = world.state_hash();
+    if (actual != c.hash) return Mismatch{tick, c.hash, actual};
+    ++checks_passed_;
+    return std::nullopt;
+}
+
+VerifyResult verify(const Replay& replay, const level::Level& level, const Assets& assets) {
+    World world(level_for(level, replay.header.difficulty), replay.header.seed, assets.factories(),
+                assets.models(), replay.header.lives);
+    Player player(replay);
+    VerifyResult result;
+    while (!player.done()) {
+        world.step(player.next());
+        ++result.ticks;
+        if (auto m = player.check(world)) {
+            result.mismatch = m;
+            result.checks_passed = player.checks_passed();
+            return result;
+        }
+    }
+    result.checks_passed = player.checks_passed();
+    result.ok = true;
+    return result;
+}
+
+}  // namespace bz::game::replay

@@ -1,0 +1,279 @@
+// The replay file format (see replay.h): writing it, and reading it back from untrusted bytes.
+// Every count is checked against what the file declared before anything is allocated, and
+// every message names the file, line and column, with the offending text escaped and cut.
+#include <charconv>
+#include <cinttypes>
+#include <cstdio>
+#include <system_error>
+
+#include "core/error.h"
+#include "core/io/file_io.h"
+#include "core/text/line_reader.h"
+#include "core/text/printable.h"
+#include "game/difficulty/difficulty.h"
+#include "game/records/replay.h"
+
+namespace bz::game::replay {
+
+namespace {
+
+constexpr std::string_view kMagic = "beamzone-replay";
+// A build version such as "0.1.0-dirty" and a level path: generous, but bounded, so a
+// hostile file cannot make every later message carry megabytes.
+constexpr std::size_t kMaxVersionBytes = 64;
+constexpr std::size_t kMaxLevelPathBytes = 4096;
+// A replay of kMaxTicks with a new command every tick is about 20 bytes a line.
+constexpr std::size_t kMaxReplayBytes = 256u << 20;
+
+std::string hex(std::uint64_t v) {
+    char buf[20];
+    std::snprintf(buf, sizeof buf, "%016" PRIx64, v);
+    return buf;
+}
+
+// Splits a line into whitespace-separated fields (views into the line, so a field's column
+// is its offset).
+std::vector<std::string_view> fields(std::string_view line) {
+    std::vector<std::string_view> out;
+    std::size_t i = 0;
+    while (i < line.size()) {
+        while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
+        std::size_t j = i;
+        while (j < line.size() && line[j] != ' ' && line[j] != '\t') ++j;
+        if (j > i) out.push_back(line.substr(i, j - i));
+        i = j;
+    }
+    return out;
+}
+
+bool has_control_character(std::string_view s) {
+    for (const char c : s) {
+        if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) return true;
+    }
+    return false;
+}
+
+// Reports errors at NAME:LINE:COL, the column of the field (or text) at fault.
+class LineError {
+  public:
+    LineError(const std::string& name, int line, std::string_view text)
+        : name_(name), line_(std::max(line, 1)), text_(text) {}
+    [[noreturn]] void fail(const std::string& what) const { fail_column(1, what); }
+    [[noreturn]] void fail_at(std::string_view part, const std::string& what) const {
+        std::size_t column = 1;
+        if (part.data() >= text_.data() && part.data() <= text_.data() + text_.size()) {
+            column = static_cast<std::size_t>(part.data() - text_.data()) + 1;
+        }
+        fail_column(column, what);
+    }
+    template <class T>
+    T number(std::string_view s, const char* what, int base = 10) const {
+        T v{};
+        const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v, base);
+        if (ec != std::errc() || end != s.data() + s.size()) {
+            fail_at(s, std::string(what) + " '" + printable(s) + "' is not a valid number" +
+                           (ec == std::errc::result_out_of_range ? " in range" : ""));
+        }
+        return v;
+    }
+
+  private:
+    [[noreturn]] void fail_column(std::size_t column, const std::string& what) const {
+        throw UserError(name_ + ":" + std::to_string(line_) + ":" + std::to_string(column) +
+                        ": error: " + what);
+    }
+    const std::string& name_;
+    int line_;
+    std::string_view text_;
+};
+
+// A free-text value (version, level path): bounded and free of control characters.
+std::string text_value(const LineError& err, std::string_view value, std::size_t max_bytes,
+                       const char* what) {
+    if (value.size() > max_bytes) {
+        err.fail_at(value, std::string(what) + " is " + std::to_string(value.size()) +
+                               " bytes long, over the limit of " + std::to_string(max_bytes));
+    }
+    if (has_control_character(value)) {
+        err.fail_at(value, std::string(what) + " '" + printable(value) +
+                               "' holds a control character");
+    }
+    return std::string(value);
+}
+
+}  // namespace
+
+std::string serialise(const Replay& r) {
+    std::string out;
+    out += std::string(kMagic) + " " + std::to_string(kFormatVersion) + "\n";
+    out += "version " + r.header.version + "\n";
+    out += "seed " + std::to_string(r.header.seed) + "\n";
+    out += "level " + r.header.level + "\n";
+    out += "level-hash " + hex(r.header.level_hash) + "\n";
+    out += "lives " + std::to_string(r.header.lives) + "\n";
+    out += "difficulty " + std::string(difficulty_name(r.header.difficulty)) + "\n";
+    out += "hash-interval " + std::to_string(r.header.hash_interval) + "\n";
+    out += "ticks " + std::to_string(r.commands.size()) + "\n";
+    for (std::size_t i = 0; i < r.commands.size();) {
+        std::size_t j = i + 1;
+        while (j < r.commands.size() && r.commands[j] == r.commands[i]) ++j;
+        const PackedCommand& c = r.commands[i];
+        char buf[64];
+        std::snprintf(buf, sizeof buf, "c %zu %d %d %02x\n", j - i, c.left, c.right, c.buttons);
+        out += buf;
+        i = j;
+    }
+    for (const StateCheck& s : r.checks)
+        out += "h " + std::to_string(s.tick) + " " + hex(s.hash) + "\n";
+    out += "end\n";
+    return out;
+}
+
+Replay parse(std::string_view text, const std::string& name) {
+    Replay r;
+    bool magic = false, have_seed = false, have_level = false, have_hash = false, ended = false;
+    std::optional<std::uint64_t> declared_ticks;
+    LineReader lines(text);
+    std::string_view line;
+    while (lines.next(line)) {
+        const LineError err(name, lines.line_number(), line);
+        const auto f = fields(line);
+        if (f.empty() || f[0].front() == '#') continue;
+        if (ended) err.fail_at(f[0], "text after 'end'");
+        const std::string_view key = f[0];
+        if (!magic) {
+            if (key != kMagic)
+                err.fail_at(key, "not a beamzone replay (expected '" + std::string(kMagic) +
+                                     " 1')");
+            if (f.size() != 2) err.fail_at(key, "expected '" + std::string(kMagic) + " VERSION'");
+            const int v = err.number<int>(f[1], "format version");
+            if (v != kFormatVersion) {
+                err.fail_at(f[1], "replay format " + std::to_string(v) +
+                                      " is not supported (this build reads " +
+                                      std::to_string(kFormatVersion) + ")");
+            }
+            magic = true;
+            continue;
+        }
+        auto want = [&](std::size_t n) {
+            if (f.size() != n) {
+                err.fail_at(key, "'" + std::string(key) + "' takes " + std::to_string(n - 1) +
+                                     " value(s)");
+            }
+        };
+        if (key == "version") {
+            want(2);
+            r.header.version = text_value(err, f[1], kMaxVersionBytes, "the version");
+        } else if (key == "seed") {
+            want(2);
+            r.header.seed = err.number<std::uint64_t>(f[1], "seed");
+            have_seed = true;
+        } else if (key == "level") {
+            // The rest of the line: a path may contain spaces.
+            std::string_view rest = line.substr(static_cast<std::size_t>(key.data() - line.data()) +
+                                                key.size());
+            while (!rest.empty() && (rest.front() == ' ' || rest.front() == '\t'))
+                rest.remove_prefix(1);
+            if (rest.empty()) err.fail_at(key, "'level' needs a path");
+            r.header.level = text_value(err, rest, kMaxLevelPathBytes, "the level path");
+            have_level = true;
+        } else if (key == "level-hash") {
+            want(2);
+            r.header.level_hash = err.number<std::uint64_t>(f[1], "level hash", 16);
+            have_hash = true;
+        } else if (key == "lives") {
+            want(2);
+            r.header.lives = err.number<int>(f[1], "lives");
+            if (r.header.lives < 1 || r.header.lives > 9) err.fail_at(f[1], "lives must be 1..9");
+        } else if (key == "difficulty") {
+            want(2);
+            const auto d = parse_difficulty(f[1]);
+            if (!d) {
+                err.fail_at(f[1], "unknown difficulty '" + printable(f[1]) + "' (one of " +
+                                      std::string(kDifficultyNames) + ")");
+            }
+            r.header.difficulty = *d;
+        } else if (key == "hash-interval") {
+            want(2);
+            r.header.hash_interval = err.number<int>(f[1], "hash interval");
+            if (r.header.hash_interval < 1) err.fail_at(f[1], "hash-interval must be at least 1");
+        } else if (key == "ticks") {
+            want(2);
+            if (declared_ticks) err.fail_at(key, "'ticks' given twice");
+            declared_ticks = err.number<std::uint64_t>(f[1], "tick count");
+            if (*declared_ticks > kMaxTicks) {
+                err.fail_at(f[1], "tick count " + std::to_string(*declared_ticks) +
+                                      " is over the limit of " + std::to_string(kMaxTicks));
+            }
+            r.commands.reserve(static_cast<std::size_t>(*declared_ticks));
+        } else if (key == "c") {
+            want(5);
+            if (!declared_ticks) err.fail_at(key, "'c' before 'ticks'");
+            const auto count = err.number<std::uint64_t>(f[1], "run length");
+            const int left = err.number<int>(f[2], "left tread");
+            const int right = err.number<int>(f[3], "right tread");
+            const auto buttons = err.number<unsigned>(f[4], "buttons", 16);
+            if (count == 0) err.fail_at(f[1], "run length must be at least 1");
+            if (left < -127 || left > 127) err.fail_at(f[2], "tread values must lie in -127..127");
+            if (right < -127 || right > 127) err.fail_at(f[3], "tread values must lie in -127..127");
+            if (buttons > 0xff) err.fail_at(f[4], "buttons must be two hex digits");
+            // Compared as what is left, so a count near 2^64 cannot wrap the sum around.
+            const std::uint64_t room = *declared_ticks - r.commands.size();
+            if (count > room) {
+                err.fail_at(f[1], "run length " + std::to_string(count) +
+                                      " makes more commands than the declared " +
+                                      std::to_string(*declared_ticks) + " ticks (" +
+                                      std::to_string(room) + " left)");
+            }
+            const PackedCommand c{static_cast<std::int8_t>(left), static_cast<std::int8_t>(right),
+                                  static_cast<std::uint8_t>(buttons)};
+            r.commands.insert(r.commands.end(), static_cast<std::size_t>(count), c);
+        } else if (key == "h") {
+            want(3);
+            if (!declared_ticks) err.fail_at(key, "'h' before 'ticks'");
+            StateCheck s;
+            s.tick = err.number<std::uint64_t>(f[1], "tick");
+            s.hash = err.number<std::uint64_t>(f[2], "state hash", 16);
+            if (s.tick == 0) err.fail_at(f[1], "state hashes start at tick 1");
+            // Checked here, not only at the end: it also bounds how many hashes are kept.
+            if (s.tick > *declared_ticks) {
+                err.fail_at(f[1], "a state hash at tick " + std::to_string(s.tick) +
+                                      " lies past the declared " +
+                                      std::to_string(*declared_ticks) + " ticks");
+            }
+            if (!r.checks.empty() && s.tick <= r.checks.back().tick) {
+                err.fail_at(f[1], "state hash ticks must increase (tick " +
+                                      std::to_string(s.tick) + " after " +
+                                      std::to_string(r.checks.back().tick) + ")");
+            }
+            r.checks.push_back(s);
+        } else if (key == "end") {
+            want(1);
+            ended = true;
+        } else {
+            err.fail_at(key, "unknown record '" + printable(key) + "'");
+        }
+    }
+    const LineError at_end(name, lines.line_number(), {});
+    if (!magic) at_end.fail("empty file, not a beamzone replay");
+    if (!ended) at_end.fail("the replay is cut short (no 'end' line)");
+    if (!have_seed) at_end.fail("missing 'seed'");
+    if (!have_level) at_end.fail("missing 'level'");
+    if (!have_hash) at_end.fail("missing 'level-hash'");
+    if (!declared_ticks) at_end.fail("missing 'ticks'");
+    if (r.commands.size() != *declared_ticks) {
+        at_end.fail("'ticks' says " + std::to_string(*declared_ticks) + " but the file holds " +
+                    std::to_string(r.commands.size()) + " commands");
+    }
+    return r;
+}
+
+Replay load(const std::filesystem::path& file) {
+    return parse(read_file(file, kMaxReplayBytes), file.string());
+}
+
+void save(const std::filesystem::path& file, const Replay& replay) {
+    write_file_atomic(file, serialise(replay));
+}
+
+}  // namespace bz::game::replay

@@ -1,0 +1,72 @@
+#pragma once
+// Game constants after the 1980 arcade game, in world units (about a metre), seconds and
+// ticks of 1/60 s. Changing one changes replays: they are part of the simulation.
+namespace bz::game::tuning {
+
+inline constexpr double kDt = 1.0 / 60.0;
+inline constexpr int kTicksPerSecond = 60;
+
+// The player's tank.
+inline constexpr double kPlayerSpeed = 7.0;     // units/s, both treads full forward
+inline constexpr double kPlayerTurnDeg = 50.0;  // deg/s, treads fully opposed
+inline constexpr double kPlayerRadius = 1.6;
+inline constexpr double kEyeHeight = 1.4;
+inline constexpr int kMaxLives = 9;
+// Lives, bonus tanks, points, score thresholds, aggression, fire rate and where enemies
+// appear are the level's (level::EnemyRules, with the 1980 operator defaults), scaled by the
+// difficulty (game/difficulty/difficulty.h).
+
+// Shells. One player shell may be in flight at a time.
+inline constexpr double kShellSpeed = 45.0;
+inline constexpr double kShellRange = 110.0;
+inline constexpr double kEnemyShellSpeed = 34.0;
+inline constexpr double kEnemyShellRange = 90.0;
+inline constexpr double kShellRadius = 0.3;
+inline constexpr double kShellHeight = 1.0;
+inline constexpr double kMuzzleOffset = 2.4;  // ahead of the tank's centre
+
+// Enemy tanks.
+inline constexpr double kTankSpeed = 4.5;
+inline constexpr double kTankTurnDeg = 40.0;
+inline constexpr double kSuperTankSpeed = 9.0;  // twice the slow tank
+inline constexpr double kSuperTankTurnDeg = 80.0;
+inline constexpr double kTankRadius = 1.8;
+inline constexpr double kTankHeight = 1.6;
+inline constexpr double kEngageDistance = 55.0;  // starts aiming and firing from here
+inline constexpr double kAimToleranceDeg = 2.5;  // fires when its gun points this close
+
+// The guided missile.
+inline constexpr double kMissileSpeed = 16.0;
+inline constexpr double kMissileTurnDeg = 150.0;
+inline constexpr double kMissileRadius = 1.2;
+inline constexpr double kMissileCruise = 0.8;     // altitude of its base over open ground
+inline constexpr double kMissileClimb = 12.0;     // vertical speed, units/s
+inline constexpr double kMissileLookAhead = 9.0;  // looks this far ahead for obstacles to hop
+inline constexpr double kMissileWeaveDeg = 40.0;  // zig-zag amplitude
+inline constexpr double kMissileWeaveHz = 0.9;
+inline constexpr double kMissileStraightDistance = 14.0;  // stops weaving this close
+
+// The flying saucer: harmless, not on radar.
+inline constexpr double kSaucerSpeed = 5.0;
+inline constexpr double kSaucerRadius = 1.8;
+inline constexpr double kSaucerAltitude = 0.6;
+inline constexpr int kSaucerLifeTicks = 20 * kTicksPerSecond;
+inline constexpr int kSaucerMinDelayTicks = 25 * kTicksPerSecond;
+inline constexpr int kSaucerMaxDelayTicks = 50 * kTicksPerSecond;
+
+// Pacing.
+inline constexpr int kFirstSpawnTicks = 90;
+inline constexpr int kRespawnTicks = 150;
+inline constexpr int kDyingTicks = 180;  // the cracked screen before the next tank
+inline constexpr int kBlockedMessageTicks = 45;
+
+// Debris.
+inline constexpr double kGravity = 14.0;
+inline constexpr int kDebrisTicks = 4 * kTicksPerSecond;
+
+// What the tank's crew sees: enemies outside this half-angle are "to left/right/rear".
+inline constexpr double kViewHalfAngleDeg = 30.0;
+inline constexpr double kRearAngleDeg = 135.0;
+inline constexpr double kRadarSweepSeconds = 2.0;
+
+}  // namespace bz::game::tuning

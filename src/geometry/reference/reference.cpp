@@ -1,0 +1,159 @@
+#include "geometry/reference/reference.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "geometry/reference/reference_bvh.h"
+#include "geometry/reference/reference_edges.h"
+#include "geometry/reference/reference_raster.h"
+
+namespace bz::geo {
+
+namespace {
+
+using detail::ClippedEdge;
+using detail::FeatureEdge;
+
+void check_inputs(std::span<const ReferenceInstance> instances, const ReferenceView& v,
+                  const ReferenceOptions& o) {
+    if (v.width < 1 || v.height < 1)
+        throw std::invalid_argument("reference: image size must be >= 1x1");
+    if (!(v.fov_y_deg > 0.0 && v.fov_y_deg < 180.0))
+        throw std::invalid_argument("reference: fov must be in (0, 180)");
+    if (!(v.near > 0.0 && v.far > v.near && std::isfinite(v.far))) {
+        throw std::invalid_argument("reference: need 0 < near < far < inf");
+    }
+    if (!(o.samples_per_pixel > 0.0) || o.refine_steps < 0 || !(o.relative_epsilon >= 0.0)) {
+        throw std::invalid_argument("reference: bad sampling options");
+    }
+    for (const ReferenceInstance& i : instances) {
+        if (!i.mesh) throw std::invalid_argument("reference: instance without a mesh");
+    }
+}
+
+std::vector<glm::dvec3> view_positions(const ReferenceInstance& inst) {
+    std::vector<glm::dvec3> out;
+    out.reserve(inst.mesh->positions.size());
+    for (const glm::vec3& p : inst.mesh->positions) {
+        out.push_back(glm::dvec3(inst.model_view * glm::dvec4(glm::dvec3(p), 1.0)));
+    }
+    return out;
+}
+
+void add_occluders(const ReferenceInstance& inst, std::uint32_t index,
+                   const std::vector<glm::dvec3>& vp, std::vector<detail::BvhTriangle>& out) {
+    const std::vector<std::uint32_t>& t = inst.mesh->triangles;
+    for (std::size_t i = 0; i + 2 < t.size(); i += 3) {
+        out.push_back({vp[t[i]], vp[t[i + 1]], vp[t[i + 2]], index, t[i], t[i + 1], t[i + 2]});
+    }
+}
+
+class Visibility {
+  public:
+    Visibility(const detail::TriangleBvh& bvh, const detail::Projection& p,
+               const ReferenceOptions& o, ReferenceStats& stats)
+        : bvh_(bvh), proj_(p), options_(o), stats_(stats) {}
+
+    // Is the point of `e` at window parameter u visible from the eye?
+    bool operator()(const ClippedEdge& e, const FeatureEdge& f, double u) const {
+        if (!options_.occlusion) return true;
+        ++stats_.rays;
+        const glm::dvec3 point = e.at(u);
+        const double depth = -point.z;
+        if (!(depth > 0.0)) return true;
+        // Only what lies at or beyond the near plane is in the depth buffer the GPU tests.
+        const double t_min = proj_.near / depth;
+        const double t_max = 1.0 - options_.relative_epsilon;
+        return !bvh_.any_hit(glm::dvec3(0.0), point, t_min, t_max, {f.instance, f.va, f.vb});
+    }
+
+  private:
+    const detail::TriangleBvh& bvh_;
+    detail::Projection proj_;
+    const ReferenceOptions& options_;
+    ReferenceStats& stats_;
+};
+
+// Samples visibility along the on-screen part of the edge and marks the pixels crossed by each
+// visible stretch; where visibility changes between two samples, bisection finds the switch.
+void draw_edge(const ClippedEdge& e, const FeatureEdge& f, const Visibility& visible,
+               const detail::Projection& p, const ReferenceOptions& o,
+               std::vector<std::uint8_t>& mask, ReferenceStats& stats) {
+    const auto range =
+        detail::clip_to_rect(e.sa, e.sb, {-1.0, -1.0}, {p.width + 1.0, p.height + 1.0});
+    if (!range) return;
+    ++stats.drawn_edges;
+    const double u0 = (*range)[0], u1 = (*range)[1];
+    const double len_px = glm::length(e.sb - e.sa) * (u1 - u0);
+    const int n = std::max(1, static_cast<int>(std::ceil(len_px * o.samples_per_pixel)));
+    auto window = [&](double u) { return e.sa + (e.sb - e.sa) * u; };
+    auto param = [&](int i) { return u0 + (u1 - u0) * (static_cast<double>(i) / n); };
+
+    double run_start = 0.0;
+    bool in_run = false;
+    bool prev = false;
+    double prev_u = u0;
+    for (int i = 0; i <= n; ++i) {
+        const double u = param(i);
+        const bool vis = visible(e, f, u);
+        if (i > 0 && vis != prev) {
+            // Bisect for the switch between prev_u (prev) and u (vis).
+            double lo = prev_u, hi = u;
+            for (int s = 0; s < o.refine_steps; ++s) {
+                const double mid = 0.5 * (lo + hi);
+                (visible(e, f, mid) == prev ? lo : hi) = mid;
+            }
+            if (prev) {
+                stats.lit_pixels +=
+                    detail::mark_segment(mask, p.width, p.height, window(run_start), window(lo));
+                in_run = false;
+            } else {
+                run_start = hi;
+                in_run = true;
+            }
+        } else if (i == 0 && vis) {
+            run_start = u;
+            in_run = true;
+        }
+        prev = vis;
+        prev_u = u;
+    }
+    if (in_run)
+        stats.lit_pixels +=
+            detail::mark_segment(mask, p.width, p.height, window(run_start), window(u1));
+}
+
+}  // namespace
+
+std::vector<std::uint8_t> reference_mask(std::span<const ReferenceInstance> instances,
+                                         const ReferenceView& view, const ReferenceOptions& options,
+                                         ReferenceStats* stats_out) {
+    check_inputs(instances, view, options);
+    ReferenceStats stats;
+    std::vector<FeatureEdge> edges;
+    std::vector<detail::BvhTriangle> occluders;
+    for (std::size_t i = 0; i < instances.size(); ++i) {
+        const ReferenceInstance& inst = instances[i];
+        const std::vector<glm::dvec3> vp = view_positions(inst);
+        const auto index = static_cast<std::uint32_t>(i);
+        detail::find_feature_edges(inst, index, vp, edges);
+        if (inst.occluder && options.occlusion) add_occluders(inst, index, vp, occluders);
+    }
+    stats.feature_edges = edges.size();
+    stats.occluder_triangles = occluders.size();
+    const detail::TriangleBvh bvh(std::move(occluders));
+    const detail::Projection proj = detail::Projection::of(view);
+    const Visibility visible(bvh, proj, options, stats);
+
+    std::vector<std::uint8_t> mask(
+        static_cast<std::size_t>(view.width) * static_cast<std::size_t>(view.height), 0);
+    for (const FeatureEdge& f : edges) {
+        const auto clipped = detail::clip_edge(f.a, f.b, proj);
+        if (clipped) draw_edge(*clipped, f, visible, proj, options, mask, stats);
+    }
+    if (stats_out) *stats_out = stats;
+    return mask;
+}
+
+}  // namespace bz::geo

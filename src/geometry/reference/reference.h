@@ -1,0 +1,65 @@
+#pragma once
+// The exact CPU reference for the line renderer's visible-spine mask, in double precision.
+// It applies the geometry shader's own definitions (feature edges, near/far then guard-band
+// clipping, the pixel-crossing rule) but decides visibility by casting rays against every
+// occluder triangle instead of reading a depth buffer, so it has no depth precision to lose.
+//
+// Definitions (see shaders/lines.geom):
+//  - A face is front-facing iff dot(n_view, -p0_view) > 0, n = cross(p1 - p0, p2 - p0).
+//  - An edge whose neighbour slot marks it non-interior (a_i == v_i) is always a feature edge.
+//  - Otherwise, with neighbour U = (v_i, a_i, v_{i+1}): a silhouette iff T is front and U is
+//    not; nothing if their facing differs the other way; else a crease iff the object-space unit
+//    normals have dot < cos_crease (emitted once, by the face that sees the edge low -> high).
+//  - A point of an edge is visible iff the segment eye -> point hits no occluder triangle,
+//    other than the faces on that edge, whose hit lies at or beyond the near plane and before
+//    the point by more than a relative epsilon.
+//  - A pixel is lit iff a visible part of an edge crosses its unit square.
+#include <cstddef>
+#include <cstdint>
+#include <glm/glm.hpp>
+#include <span>
+#include <vector>
+
+#include "geometry/mesh.h"
+
+namespace bz::geo {
+
+struct ReferenceInstance {
+    const AdjacencyMesh* mesh = nullptr;
+    glm::dmat4 model_view{1.0};  // object -> view space: eye at the origin, looking down -z, y up
+    double cos_crease = 0.5;     // cos(60 deg), the renderer's default
+    bool occluder = true;        // hides what lies behind it (DrawItem::occluder)
+};
+
+struct ReferenceView {
+    int width = 0;
+    int height = 0;
+    double fov_y_deg = 60.0;  // vertical; the aspect ratio is width / height
+    double near = 0.1;
+    double far = 1000.0;
+};
+
+struct ReferenceOptions {
+    bool occlusion = true;           // false: every feature edge shows (the arcade style)
+    double samples_per_pixel = 4.0;  // visibility samples along each edge, per pixel of length
+    int refine_steps = 8;            // bisection steps where visibility changes between samples
+    double relative_epsilon = 1e-7;  // a hit at t >= 1 - eps (t = 1 at the point) does not hide
+};
+
+struct ReferenceStats {
+    std::size_t feature_edges = 0;  // edges found, before clipping
+    std::size_t drawn_edges = 0;    // edges left after clipping that touch the viewport
+    std::size_t occluder_triangles = 0;
+    std::size_t rays = 0;  // visibility queries
+    std::size_t lit_pixels = 0;
+};
+
+// The 8-bit mask (255 = lit), row 0 at the top, width * height bytes. Pixel (x, y) in OpenGL
+// window coordinates has its centre at (x + 0.5, y + 0.5) from the bottom-left.
+// Throws std::invalid_argument for a null mesh, a size below 1 or a bad view.
+std::vector<std::uint8_t> reference_mask(std::span<const ReferenceInstance> instances,
+                                         const ReferenceView& view,
+                                         const ReferenceOptions& options = {},
+                                         ReferenceStats* stats = nullptr);
+
+}  // namespace bz::geo

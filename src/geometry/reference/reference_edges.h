@@ -1,0 +1,29 @@
+#pragma once
+// Feature-edge finding for the CPU reference: the geometry shader's rules (lines.geom) in
+// double precision, per instance.
+#include <cstdint>
+#include <vector>
+
+#include "geometry/reference/reference.h"
+
+namespace bz::geo::detail {
+
+enum class FeatureKind : std::uint8_t { crease, silhouette, boundary };
+
+struct FeatureEdge {
+    glm::dvec3 a{0.0};  // view space
+    glm::dvec3 b{0.0};
+    std::uint32_t instance = 0;
+    std::uint32_t va = 0;  // welded vertex ids: the faces holding both are the edge's own
+    std::uint32_t vb = 0;
+    FeatureKind kind = FeatureKind::crease;
+};
+
+// Appends the feature edges of one instance. `view_positions` are the mesh's positions
+// transformed by the instance's model-view matrix. Non-interior edges shared by several faces
+// are reported once.
+void find_feature_edges(const ReferenceInstance& instance, std::uint32_t instance_index,
+                        const std::vector<glm::dvec3>& view_positions,
+                        std::vector<FeatureEdge>& out);
+
+}  // namespace bz::geo::detail

@@ -1,0 +1,108 @@
+#include "app/play/play_overlay.h"
+
+#include <gtest/gtest.h>
+
+#include "game/hud/hud_layout.h"
+
+namespace bz::app {
+namespace {
+
+namespace hud = game::hud;
+
+const scene::VectorFont& font() {
+    static const scene::VectorFont f = scene::VectorFont::load_default();
+    return f;
+}
+
+bool all_in(const std::vector<scene::HudLine>& lines, const hud::Box& box) {
+    for (const scene::HudLine& l : lines) {
+        if (!box.contains(l.a) || !box.contains(l.b)) {
+            ADD_FAILURE() << "line (" << l.a.x << ", " << l.a.y << ") - (" << l.b.x << ", " << l.b.y
+                          << ") outside [" << box.min.x << ", " << box.min.y << "] - [" << box.max.x
+                          << ", " << box.max.y << "]";
+            return false;
+        }
+    }
+    return true;
+}
+
+const std::string kLongModelError =
+    "levels/classic.toml:42:11: error: model 'data/models/broken_tank_with_a_long_name.obj' "
+    "cannot be used: Assimp: OBJ: vertex index out of range on line 1234 of the file, and "
+    "the rest of this sentence is here only to make it wrap over several lines of the box";
+
+TEST(PlayOverlay, ErrorsWrapInsideTheirBoxAndSayTheirKind) {
+    for (const double aspect : {4.0 / 3.0, 16.0 / 9.0}) {
+        PlayOverlay o(font());
+        o.set_errors(ErrorKind::model, {kLongModelError});
+        const auto lines = o.error_box_lines(aspect);
+        ASSERT_GE(lines.size(), 3u);
+        EXPECT_TRUE(lines[0].title);
+        EXPECT_EQ(lines[0].text.rfind("MODEL ERROR", 0), 0u);
+        std::vector<scene::HudLine> out;
+        o.draw(out, aspect);
+        ASSERT_FALSE(out.empty());
+        EXPECT_TRUE(all_in(out, hud::error_box(static_cast<float>(aspect))));
+    }
+}
+
+TEST(PlayOverlay, EachKindIsNamed) {
+    PlayOverlay o(font());
+    o.set_errors(ErrorKind::shader, {"shaders/lines.frag:3:1: error: syntax"});
+    o.set_errors(ErrorKind::settings, {"settings.toml:1:10: error: volume must be ..."});
+    const auto lines = o.error_box_lines(16.0 / 9.0);
+    std::vector<std::string> titles;
+    for (const auto& l : lines) {
+        if (l.title) titles.push_back(l.text.substr(0, l.text.find(" - ")));
+    }
+    EXPECT_EQ(titles, (std::vector<std::string>{"SHADER ERROR", "SETTINGS ERROR"}));
+    o.set_errors(ErrorKind::level, {"a.toml:1:1: error: x"});
+    EXPECT_EQ(o.error_box_lines(16.0 / 9.0).front().text.rfind("LEVEL ERROR", 0), 0u);
+    EXPECT_EQ(o.errors().size(), 3u);
+}
+
+TEST(PlayOverlay, ManyErrorsKeepTheFirstLinesAndCountTheRest) {
+    PlayOverlay o(font());
+    std::vector<std::string> errors;
+    for (int i = 1; i <= 30; ++i) {
+        errors.push_back("level.toml:" + std::to_string(i) + ":1: error: number " +
+                         std::to_string(i));
+    }
+    o.set_errors(ErrorKind::level, errors);
+    const auto lines = o.error_box_lines(16.0 / 9.0);
+    ASSERT_GE(lines.size(), 3u);
+    EXPECT_LT(lines.size(), 12u);
+    EXPECT_EQ(lines[1].text, "level.toml:1:1: error: number 1");  // the first is kept
+    EXPECT_EQ(lines.back().text.rfind("... ", 0), 0u);
+    EXPECT_NE(lines.back().text.find("more lines in beamzone.log"), std::string::npos);
+    std::vector<scene::HudLine> out;
+    o.draw(out, 16.0 / 9.0);
+    EXPECT_TRUE(all_in(out, hud::error_box(16.0f / 9.0f)));
+}
+
+TEST(PlayOverlay, TimedErrorsGoAway) {
+    PlayOverlay o(font());
+    o.set_errors(ErrorKind::settings, {"bad"}, 1.0);
+    o.advance(0.5);
+    EXPECT_EQ(o.errors(ErrorKind::settings).size(), 1u);
+    o.advance(0.6);
+    EXPECT_TRUE(o.errors(ErrorKind::settings).empty());
+}
+
+TEST(PlayOverlay, NoticesAndFooterStayInTheirRegions) {
+    PlayOverlay o(font());
+    for (int i = 0; i < 6; ++i) o.notify("screenshot screenshot-000" + std::to_string(i) + ".png");
+    o.set_footer("60 FPS  16.7 MS  WORST 18.0 MS");
+    std::vector<scene::HudLine> out;
+    o.draw(out, 16.0 / 9.0);
+    ASSERT_FALSE(out.empty());
+    const float a = 16.0f / 9.0f;
+    for (const scene::HudLine& l : out) {
+        const bool ok = (hud::notice_box(a).contains(l.a) && hud::notice_box(a).contains(l.b)) ||
+                        (hud::footer_box(a).contains(l.a) && hud::footer_box(a).contains(l.b));
+        EXPECT_TRUE(ok) << l.a.x << "," << l.a.y;
+    }
+}
+
+}  // namespace
+}  // namespace bz::app

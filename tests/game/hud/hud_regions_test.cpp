@@ -1,0 +1,153 @@
+// Every piece of the play HUD stays in the region the layout reserves for it, the regions do
+// not overlap, and the scene is kept under the band (issue 13: text drawn over the radar, the
+// moon inside the radar).
+#include <gtest/gtest.h>
+
+#include "game/default_level.h"
+#include "game/game.h"
+#include "game/hud/hud.h"
+#include "game/hud/hud_layout.h"
+#include "game/test_world.h"
+
+namespace bz::game {
+namespace {
+
+const scene::VectorFont& font() {
+    static const scene::VectorFont f = scene::VectorFont::load_default();
+    return f;
+}
+
+bool in_box(const std::vector<scene::HudLine>& lines, const hud::Box& box) {
+    for (const scene::HudLine& l : lines) {
+        if (!box.contains(l.a) || !box.contains(l.b)) return false;
+    }
+    return true;
+}
+
+bool overlap(const hud::Box& a, const hud::Box& b) {
+    return a.min.x < b.max.x && b.min.x < a.max.x && a.min.y < b.max.y && b.min.y < a.max.y;
+}
+
+TEST(HudRegions, RegionsDoNotOverlapAtCommonAspects) {
+    for (const float aspect : {4.0f / 3.0f, 16.0f / 10.0f, 16.0f / 9.0f, 21.0f / 9.0f}) {
+        const std::vector<hud::Box> boxes = {hud::radar_box(),       hud::messages_box(aspect),
+                                             hud::score_box(aspect), hud::lives_box(aspect),
+                                             hud::error_box(aspect), hud::notice_box(aspect),
+                                             hud::footer_box(aspect)};
+        for (std::size_t i = 0; i < boxes.size(); ++i) {
+            EXPECT_GT(boxes[i].width(), 0.0f) << i;
+            EXPECT_GT(boxes[i].height(), 0.0f) << i;
+            EXPECT_GE(boxes[i].min.x, -aspect) << i;
+            EXPECT_LE(boxes[i].max.x, aspect) << i;
+            for (std::size_t j = i + 1; j < boxes.size(); ++j) {
+                EXPECT_FALSE(overlap(boxes[i], boxes[j])) << i << " and " << j << " at " << aspect;
+            }
+        }
+        // The band's regions are above its bottom edge; the rest below.
+        for (const hud::Box& b : {hud::radar_box(), hud::messages_box(aspect),
+                                  hud::score_box(aspect), hud::lives_box(aspect)}) {
+            EXPECT_GE(b.min.y, hud::kBandBottom);
+        }
+        EXPECT_LE(hud::error_box(aspect).max.y, hud::kBandBottom);
+        // The reticle sits between the error box and the notices.
+        EXPECT_GT(hud::error_box(aspect).min.y, hud::kReticleHalfHeight);
+        EXPECT_LT(hud::notice_box(aspect).max.y, -hud::kReticleHalfHeight);
+    }
+}
+
+TEST(HudRegions, EachPartDrawsOnlyInItsRegion) {
+    for (const double aspect : {4.0 / 3.0, 16.0 / 9.0}) {
+        const auto a = static_cast<float>(aspect);
+        hud::View v;
+        v.aspect = aspect;
+        v.font = &font();
+        v.high_score = 987650;
+        // A world with everything showing: an enemy in range to the rear, a big score, a
+        // blocked tank.
+        level::Level lv = test::empty_level();
+        lv.obstacles.push_back(test::object("cube", 0, -6));
+        World w = test::make_world(lv);
+        for (int i = 0; i < 30; ++i) w.step(test::drive(1, 1));
+        w.spawn_hostile(HostileKind::slow_tank, {2, 30});
+        for (int i = 0; i < 25; ++i) w.step(TickCommand{});
+
+        std::vector<scene::HudLine> radar, status;
+        hud::radar(radar, w, v);
+        hud::status(status, w, v);
+        ASSERT_FALSE(radar.empty());
+        ASSERT_FALSE(status.empty());
+        EXPECT_TRUE(in_box(radar, hud::radar_box()));
+        // status = messages (left), score (right top), lives (right below): each line in one.
+        int messages = 0, score = 0, lives = 0;
+        for (const scene::HudLine& l : status) {
+            const std::vector<scene::HudLine> one{l};
+            if (in_box(one, hud::messages_box(a))) {
+                ++messages;
+            } else if (in_box(one, hud::score_box(a))) {
+                ++score;
+            } else if (in_box(one, hud::lives_box(a))) {
+                ++lives;
+            } else {
+                ADD_FAILURE() << "a status line outside every region: (" << l.a.x << ", " << l.a.y
+                              << ") - (" << l.b.x << ", " << l.b.y << ") at aspect " << aspect;
+            }
+        }
+        EXPECT_GT(messages, 0);
+        EXPECT_GT(score, 0);
+        EXPECT_GT(lives, 0);
+    }
+}
+
+TEST(HudRegions, TheSceneStaysUnderTheBandInPlayOnly) {
+    GameOptions o;
+    o.attract = true;
+    Game g(default_level(), o, &font());
+    EXPECT_EQ(g.frame(1.0, 16.0 / 9.0).view_top, 1.0f);  // the title: the whole screen
+    g.start_game();
+    g.tick(TickCommand{});
+    EXPECT_EQ(g.frame(1.0, 16.0 / 9.0).view_top, hud::kBandBottom);
+}
+
+TEST(HudRegions, AppMenusLeaveTitleAndPauseTextToTheApp) {
+    GameOptions o;
+    o.app_menus = true;
+    Game g(default_level(), o, &font());
+    GameOptions plain;
+    Game h(default_level(), plain, &font());
+    for (int i = 0; i < 5; ++i) {
+        g.tick(TickCommand{});
+        h.tick(TickCommand{});
+    }
+    // The same demo world under both; only the plain one adds the title text.
+    EXPECT_LT(g.frame(1.0, 16.0 / 9.0).hud.size(), h.frame(1.0, 16.0 / 9.0).hud.size());
+    g.start_game();
+    TickCommand pause;
+    pause.pause = true;
+    g.tick(pause);
+    ASSERT_EQ(g.screen(), Screen::paused);
+    g.resume();
+    EXPECT_EQ(g.screen(), Screen::playing);
+    g.quit_to_title();
+    EXPECT_EQ(g.screen(), Screen::attract);
+}
+
+TEST(HudRegions, HintsNameTheKeysGiven) {
+    GameOptions o;
+    o.hints.paused = "F9 RESUME";
+    Game g(default_level(), o, &font());
+    g.start_game();
+    TickCommand pause;
+    pause.pause = true;
+    g.tick(pause);
+    ASSERT_EQ(g.screen(), Screen::paused);
+    std::vector<scene::HudLine> want;
+    font().draw(want, "F9 RESUME", {0.0f, -0.5f}, 0.045f, hud::kWhite, scene::TextAlign::center);
+    const auto got = g.frame(1.0, 16.0 / 9.0).hud;
+    const auto it = std::search(
+        got.begin(), got.end(), want.begin(), want.end(),
+        [](const scene::HudLine& x, const scene::HudLine& y) { return x.a == y.a && x.b == y.b; });
+    EXPECT_NE(it, got.end());
+}
+
+}  // namespace
+}  // namespace bz::game

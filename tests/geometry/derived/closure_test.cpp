@@ -1,0 +1,45 @@
+// is_outward_closed decides whether the renderer may cull back faces: only for watertight
+// meshes every piece of which encloses a positive volume.
+#include <gtest/gtest.h>
+
+#include "geometry/derived/closure.h"
+#include "geometry/line_mesh/line_mesh.h"
+#include "geometry/generated/primitives.h"
+
+namespace {
+
+using namespace bz::geo;
+
+// Appends `b` to `a`, each vertex moved by `offset`, optionally wound inside out.
+TriMesh joined(TriMesh a, const TriMesh& b, glm::vec3 offset, bool flip_b) {
+    const auto base = static_cast<std::uint32_t>(a.positions.size());
+    for (const glm::vec3& p : b.positions) a.positions.push_back(p + offset);
+    for (std::size_t i = 0; i + 2 < b.indices.size(); i += 3) {
+        a.indices.push_back(base + b.indices[i]);
+        a.indices.push_back(base + b.indices[flip_b ? i + 2 : i + 1]);
+        a.indices.push_back(base + b.indices[flip_b ? i + 1 : i + 2]);
+    }
+    return a;
+}
+
+TEST(Closure, ClosedBoxIsOutwardClosed) {
+    EXPECT_TRUE(is_outward_closed(build_line_mesh(box(glm::vec3(1.0f)))));
+}
+
+TEST(Closure, OpenBoxIsNot) {
+    EXPECT_FALSE(is_outward_closed(build_line_mesh(open_box(glm::vec3(1.0f)))));
+}
+
+TEST(Closure, TwoOutwardBoxesAre) {
+    const TriMesh m = joined(box(glm::vec3(1.0f)), box(glm::vec3(0.5f)), {5.0f, 0.0f, 0.0f}, false);
+    EXPECT_TRUE(is_outward_closed(build_line_mesh(m)));
+}
+
+// A big outward box and a small inside-out one: the total volume is positive, but culling
+// the small box's "back" faces would remove its visible outside (a roof over rafters).
+TEST(Closure, AnInsideOutPieceMakesTheMeshNotOutwardClosed) {
+    const TriMesh m = joined(box(glm::vec3(2.0f)), box(glm::vec3(0.5f)), {6.0f, 0.0f, 0.0f}, true);
+    EXPECT_FALSE(is_outward_closed(build_line_mesh(m)));
+}
+
+}  // namespace
