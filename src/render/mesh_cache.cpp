@@ -2,12 +2,12 @@
 
 #include <memory>
 
-#include "geometry/closure.h"
-#include "geometry/dihedral.h"
-#include "geometry/edge_list.h"
+#include "geometry/derived/closure.h"
+#include "geometry/derived/dihedral.h"
+#include "geometry/derived/edge_list.h"
 
-#include "geometry/simplify.h"
-#include "geometry/edge_list.h"
+#include "geometry/derived/simplify.h"
+#include "geometry/derived/edge_list.h"
 
 namespace bz::render {
 

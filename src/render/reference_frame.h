@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "geometry/reference.h"
+#include "geometry/reference/reference.h"
 #include "render/settings.h"
 #include "scene/frame_list.h"
 #include "scene/mesh_library.h"

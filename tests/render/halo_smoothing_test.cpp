@@ -10,7 +10,7 @@
 #include <filesystem>
 
 #include "core/image_io.h"
-#include "geometry/primitives.h"
+#include "geometry/generated/primitives.h"
 #include "render/render_fixture.h"
 
 namespace {

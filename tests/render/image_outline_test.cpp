@@ -4,8 +4,8 @@
 
 #include <cmath>
 
-#include "geometry/mask_score.h"
-#include "geometry/primitives.h"
+#include "geometry/generated/primitives.h"
+#include "geometry/reference/mask_score.h"
 #include "render/reference_frame.h"
 #include "render/render_fixture.h"
 

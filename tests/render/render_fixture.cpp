@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "core/image_io.h"
-#include "geometry/import.h"
+#include "geometry/import/import.h"
 #include "render/camera_framing.h"
 
 namespace bz::test {

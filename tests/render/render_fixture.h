@@ -4,7 +4,7 @@
 #include <memory>
 #include <string>
 
-#include "geometry/line_mesh.h"
+#include "geometry/line_mesh/line_mesh.h"
 #include "render/mask_expect.h"
 #include "render/renderer.h"
 #include "support/gl_test.h"

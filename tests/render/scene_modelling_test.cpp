@@ -6,8 +6,8 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "geometry/mask_score.h"
-#include "geometry/primitives.h"
+#include "geometry/generated/primitives.h"
+#include "geometry/reference/mask_score.h"
 #include "render/batches.h"
 #include "render/camera_math.h"
 #include "render/reference_frame.h"

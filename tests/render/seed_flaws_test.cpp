@@ -6,7 +6,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "geometry/primitives.h"
+#include "geometry/generated/primitives.h"
 #include "render/render_fixture.h"
 
 using bz::test::expected_mask;

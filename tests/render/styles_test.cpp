@@ -12,8 +12,8 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "core/image_io.h"
-#include "geometry/import.h"
-#include "geometry/primitives.h"
+#include "geometry/import/import.h"
+#include "geometry/generated/primitives.h"
 #include "render/camera_framing.h"
 #include "render/render_fixture.h"
 #include "render/style_regions.h"

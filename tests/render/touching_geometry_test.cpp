@@ -8,8 +8,8 @@
 #include <cstdio>
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "geometry/mask_score.h"
-#include "geometry/primitives.h"
+#include "geometry/generated/primitives.h"
+#include "geometry/reference/mask_score.h"
 #include "render/reference_frame.h"
 #include "render/render_fixture.h"
 

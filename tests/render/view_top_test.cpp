@@ -2,7 +2,7 @@
 // the rows below draw as before, and the HUD itself still draws there.
 #include <gtest/gtest.h>
 
-#include "geometry/primitives.h"
+#include "geometry/generated/primitives.h"
 #include "render/render_fixture.h"
 
 namespace bz::test {

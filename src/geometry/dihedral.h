@@ -1,4 +1,0 @@
-// Moved to geometry/derived/dihedral.h. This forwarder stays until src/render and
-// tests/render (edited on another branch during the regrouping) include the new path.
-#pragma once
-#include "geometry/derived/dihedral.h"
