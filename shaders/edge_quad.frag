@@ -20,6 +20,7 @@ uniform vec2 u_viewport;
 uniform float u_near;
 uniform float u_far;
 #include "edge_geometry.glsl"
+#include "record_spine_test.glsl"
 
 #ifdef MASK_MODE
 flat in vec4 g_ends;     // spine end points, window pixels
@@ -42,13 +43,7 @@ layout(location = 0) out vec4 o_color;
 // The spine test of a record that got no samples (the sample buffer was full).
 bool tested_here(float t) {
     EdgeRecord r = records[g_samples.w];
-    vec2 spine = mix(r.screen.xy, r.screen.zw, t);
-    vec2 dir, nrm;
-    spine_frame(r.screen.xy, r.screen.zw, dir, nrm);
-    bool silhouette = (r.ids.x & EDGE_KIND_MASK) == EDGE_SILHOUETTE;
-    vec2 nudge = silhouette ? silhouette_nudge(r.edge_plane.xyz, r.screen.xy, nrm) : vec2(0.0);
-    float line_inv = mix(r.depth.x, r.depth.y, t);  // 1/depth is affine on screen
-    return spine_visible(spine, line_inv, r.edge_plane.xyz, r.face_pos.xyz, r.face_neg.xyz, nudge);
+    return record_spine_visible(r, t, record_nudge(r));
 }
 
 // Whether the spine point at parameter t is visible.

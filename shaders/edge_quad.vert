@@ -10,13 +10,7 @@
 layout(std430, binding = EDGE_RECORDS_BINDING) readonly buffer Records { EdgeRecord records[]; };
 layout(std430, binding = 1) readonly buffer Instances { vec4 instance_data[]; };
 layout(std430, binding = SPINE_SPANS_BINDING) readonly buffer Spans { uvec4 spans[]; };
-layout(std430, binding = EDGE_COMMAND_BINDING) readonly buffer Command {
-    uint vertex_count;
-    uint instance_count;
-    uint first_vertex;
-    uint base_instance;
-    uint samples_used;
-};
+layout(std430, binding = EDGE_COMMAND_BINDING) readonly buffer Command { EDGE_COMMAND_MEMBERS; };
 
 uniform uint u_capacity;  // records the buffer holds (the draw count may run past it)
 uniform uint u_sample_capacity;  // spine samples the sample buffer holds

@@ -28,7 +28,14 @@ const uint EDGE_CLIPPED_START = 1u << 9;
 const uint EDGE_CLIPPED_END = 1u << 10;
 
 // The DrawArraysIndirectCommand of the quad draw; vertex_count doubles as the append counter
-// (EDGE_VERTICES per record).
+// (EDGE_VERTICES per record). Then the spine-sample append counter (render::EdgeDrawCommand).
+// A shader declares the block as `buffer Command { EDGE_COMMAND_MEMBERS; };`.
+#define EDGE_COMMAND_MEMBERS \
+    uint vertex_count;       \
+    uint instance_count;     \
+    uint first_vertex;       \
+    uint base_instance;      \
+    uint samples_used
 const uint EDGE_VERTICES = 6u;
 
 #define EDGE_LIST_BINDING 2

@@ -27,13 +27,7 @@ layout(std430, binding = EDGE_RECORDS_BINDING) writeonly buffer Records { EdgeRe
 // Per record, two entries: the sampled stretch and the visible one, then the visible count
 // (spine_samples.glsl).
 layout(std430, binding = SPINE_SPANS_BINDING) writeonly buffer Spans { uvec4 spans[]; };
-layout(std430, binding = EDGE_COMMAND_BINDING) buffer Command {
-    uint vertex_count;  // EDGE_VERTICES per appended record: the append counter
-    uint instance_count;
-    uint first_vertex;
-    uint base_instance;
-    uint samples_used;  // spine samples asked for: the sample append counter
-};
+layout(std430, binding = EDGE_COMMAND_BINDING) buffer Command { EDGE_COMMAND_MEMBERS; };
 
 uniform uint u_edge_base;       // first edge of this dispatch (dispatches are chunked)
 uniform uint u_edge_count;

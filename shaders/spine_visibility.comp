@@ -12,13 +12,7 @@
 layout(local_size_x = 8) in;
 
 layout(std430, binding = EDGE_RECORDS_BINDING) readonly buffer Records { EdgeRecord records[]; };
-layout(std430, binding = EDGE_COMMAND_BINDING) readonly buffer Command {
-    uint vertex_count;
-    uint instance_count;
-    uint first_vertex;
-    uint base_instance;
-    uint samples_used;
-};
+layout(std430, binding = EDGE_COMMAND_BINDING) readonly buffer Command { EDGE_COMMAND_MEMBERS; };
 layout(std430, binding = SPINE_SAMPLES_BINDING) writeonly buffer Samples { uint spine_samples[]; };
 layout(std430, binding = SPINE_SPANS_BINDING) buffer Spans { uvec4 spans[]; };  // from edges.comp
 
@@ -31,6 +25,7 @@ uniform float u_far;
 
 #include "edge_geometry.glsl"
 #include "spine_test.glsl"
+#include "record_spine_test.glsl"
 
 void main() {
     // Too many samples for the buffer: the quads test every record per fragment instead.
@@ -42,17 +37,10 @@ void main() {
         uint first_sample = r.vertices.z, count = r.vertices.w;
         if (count == 0u) continue;  // no room for its samples: the fragments test it
         uvec2 sampled = spans[2u * index].xy;  // the stretch on screen; its first sample is stored first
-        vec2 s0 = r.screen.xy, s1 = r.screen.zw;
-        vec2 dir, nrm;
-        spine_frame(s0, s1, dir, nrm);
-        bool silhouette = (r.ids.x & EDGE_KIND_MASK) == EDGE_SILHOUETTE;
-        vec2 nudge = silhouette ? silhouette_nudge(r.edge_plane.xyz, s0, nrm) : vec2(0.0);
+        vec2 nudge = record_nudge(r);
         uint first = 0xFFFFFFFFu, last = 0u, visible_n = 0u;
         for (uint k = sampled.x + lane; k <= sampled.y; k += gl_WorkGroupSize.x) {
-            float t = spine_sample_t(k, count);
-            vec2 spine = mix(s0, s1, t);
-            float line_inv = mix(r.depth.x, r.depth.y, t);  // 1/depth is affine on screen
-            bool visible = spine_visible(spine, line_inv, r.edge_plane.xyz, r.face_pos.xyz, r.face_neg.xyz, nudge);
+            bool visible = record_spine_visible(r, spine_sample_t(k, count), nudge);
             spine_samples[first_sample + (k - sampled.x)] = visible ? 1u : 0u;
             if (visible) {
                 ++visible_n;
