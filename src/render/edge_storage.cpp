@@ -62,13 +62,17 @@ std::size_t EdgeStorage::samples_used() const {
 
 void EdgeStorage::keep_count() {
     has_previous_ = true;
+    previous_.reset();
     glCopyNamedBufferSubData(command_.id(), kept_count_.id(), 0, 0, sizeof(EdgeDrawCommand));
 }
 
 EdgeDrawCommand EdgeStorage::previous() const {
-    EdgeDrawCommand cmd;
-    glGetNamedBufferSubData(kept_count_.id(), 0, sizeof(cmd), &cmd);
-    return cmd;
+    if (!previous_) {
+        EdgeDrawCommand cmd;
+        glGetNamedBufferSubData(kept_count_.id(), 0, sizeof(cmd), &cmd);
+        previous_ = cmd;
+    }
+    return *previous_;
 }
 
 }  // namespace bz::render

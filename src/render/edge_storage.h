@@ -5,6 +5,7 @@
 // samples than fit is counted in full, so the renderer can grow the buffers.
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 
 #include "gl/buffer.h"
 #include "render/edge_buffer.h"
@@ -28,7 +29,8 @@ public:
     // After a fill: the counters of that fill are copied aside, to be read a frame later
     // without waiting (previous).
     void keep_count();
-    // The counters kept by the last keep_count (records appended = vertex_count / 6).
+    // The counters kept by the last keep_count (records appended = vertex_count / 6). Read
+    // back once per keep_count: the passes of a frame that ask again get the same copy.
     EdgeDrawCommand previous() const;
     // Whether keep_count ran yet: before it, previous() knows nothing of the scene's size.
     bool has_previous() const { return has_previous_; }
@@ -52,6 +54,7 @@ private:
     std::uint32_t sample_capacity_ = 0;
     std::uint32_t max_samples_ = 0;
     bool has_previous_ = false;
+    mutable std::optional<EdgeDrawCommand> previous_;  // kept_count_ as read back
 };
 
 }  // namespace bz::render
