@@ -24,6 +24,17 @@ protected:
         compare_line_methods = false;
         return mask(name + "_" + bz::render::line_method_name(m));
     }
+    // A finely divided sphere at a crease angle of 0, full detail, balanced: every edge is a
+    // crease, about 100k of them face the eye - more records and spine samples than the edge
+    // buffer first holds.
+    void show_dense_creases() {
+        add_item(add_mesh("sphere", bz::geo::uv_sphere(1.0f, 300, 600)));
+        frame.camera.eye = {0.0, 1.0, 3.0};
+        frame.camera.target = {0.0, 0.0, 0.0};
+        settings = bz::render::preset("balanced");
+        settings.crease_angle_deg = 0.0f;
+        settings.lod = false;
+    }
 };
 
 TEST_F(LineMethodsTest, RealModelsSameMaskAndSameReferenceScore) {
@@ -76,13 +87,7 @@ TEST_F(LineMethodsTest, EdgeBufferGrowsPastItsFirstSize) {
     // More visible feature edges than the edge buffer's first size (65536 records, pass_edges):
     // at a crease angle of 0 every edge of a finely divided sphere is a crease, about 100k of
     // them face the eye. The mask must still be complete, and the same as the geometry shader's.
-    const auto sphere = add_mesh("sphere", bz::geo::uv_sphere(1.0f, 300, 600));
-    add_item(sphere);
-    frame.camera.eye = {0.0, 1.0, 3.0};
-    frame.camera.target = {0.0, 0.0, 0.0};
-    settings = bz::render::preset("balanced");
-    settings.crease_angle_deg = 0.0f;
-    settings.lod = false;
+    show_dense_creases();
     settings.count_edges = true;
     const Mask gs = mask_with(LineMethod::geometry_shader, "grow");
     const Mask cs = mask_with(LineMethod::compute, "grow");
@@ -164,14 +169,8 @@ TEST_F(LineMethodsTest, FirstFrameIsTheSameAsLaterOnesWhenTheSamplesOutgrowTheir
     // the test is a tie, and which records those are depends on the order of the atomic
     // appends: the first frame must size the buffers before it draws, so that a frame is the
     // same on every run and the same as the frames after it.
-    const auto sphere = add_mesh("sphere", bz::geo::uv_sphere(1.0f, 300, 600));
-    add_item(sphere);
-    frame.camera.eye = {0.0, 1.0, 3.0};
-    frame.camera.target = {0.0, 0.0, 0.0};
-    settings = bz::render::preset("balanced");
+    show_dense_creases();
     settings.method = LineMethod::compute;
-    settings.crease_angle_deg = 0.0f;
-    settings.lod = false;
     auto draw = [&](bz::render::Renderer& r) {
         r.set_settings(settings);
         r.render(frame, meshes, bz::render::Renderer::kOffscreen);
