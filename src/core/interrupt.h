@@ -3,7 +3,7 @@
 // (exit status 128 + signal, after a one-line note on stderr): most commands have nothing to
 // save, and nothing they do is left half-written (writes are atomic). A command that must
 // save on the way out (play: the recording, changed settings) asks for a graceful stop
-// instead: the signal then only raises a flag its loop polls, and a watchdog still ends the
+// instead: the signal then only raises a flag its loop polls, and a timer still ends the
 // process if it has not finished within a grace period (stuck in a model import, say). A
 // second signal always ends it at once.
 //

@@ -15,8 +15,13 @@ struct ImportLimits {
     // Memory of the import process (the data segment, and its resident size for sanitizer
     // builds): BEAMZONE_MEMORY_LIMIT_MB, default 8192; 0 = no cap.
     std::uint64_t memory_bytes = std::uint64_t{8192} << 20;
-    // Wall-clock time after which an import is abandoned.
+    // CPU time after which an import is abandoned: an importer that spins. CPU time rather
+    // than wall-clock time, so that a busy machine (a parallel build, a test run) does not
+    // refuse a model that imports in milliseconds when the import gets no CPU for a while.
     double seconds = 10.0;
+    // Wall-clock time after which an import that is neither finishing nor using that CPU
+    // time (blocked, or starved) is abandoned all the same.
+    double wall_seconds = 60.0;
     // Sum of the uncompressed sizes of a zip-based file's entries (.3mf, .zae, .pk3, ...).
     std::uint64_t max_unzipped_bytes = std::uint64_t{256} << 20;
     // Node instances reached walking the scene graph from its roots: a node that several

@@ -136,6 +136,34 @@ std::uint64_t resident_bytes(pid_t pid) {
     return resident * static_cast<std::uint64_t>(sysconf(_SC_PAGESIZE));
 }
 
+// CPU time the process has used (user + system), in seconds; 0 when it cannot be read.
+double cpu_seconds(pid_t pid) {
+    char name[64];
+    std::snprintf(name, sizeof name, "/proc/%d/stat", static_cast<int>(pid));
+    std::FILE* f = std::fopen(name, "re");
+    if (!f) return 0.0;
+    char line[1024];
+    const bool got = std::fgets(line, sizeof line, f) != nullptr;
+    std::fclose(f);
+    if (!got) return 0.0;
+    // The command name (field 2) may hold spaces and ')': the fields after it start after
+    // the last ')'. utime and stime are fields 14 and 15, the 12th and 13th after it.
+    const char* rest = std::strrchr(line, ')');
+    if (!rest) return 0.0;
+    unsigned long long utime = 0, stime = 0;
+    if (std::sscanf(rest + 1, " %*c %*d %*d %*d %*d %*d %*u %*u %*u %*u %*u %llu %llu", &utime,
+                    &stime) != 2) {
+        return 0.0;
+    }
+    return static_cast<double>(utime + stime) / static_cast<double>(sysconf(_SC_CLK_TCK));
+}
+
+std::string seconds_text(double seconds) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", seconds);
+    return text;
+}
+
 std::string megabytes(std::uint64_t bytes) { return std::to_string(bytes >> 20) + " MB"; }
 
 // Reads the child's one frame as it arrives: the header, then straight into the mesh.
@@ -304,16 +332,23 @@ TriMesh run_isolated(const fs::path& path, const ImportLimits& limits,
     } in{fds[0]};
 
     const auto start = Clock::now();
-    const auto deadline =
-        start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(limits.seconds));
+    const auto deadline = start + std::chrono::duration_cast<Clock::duration>(
+                                      std::chrono::duration<double>(limits.wall_seconds));
+    const std::string wall_abandoned = "import did not finish within " +
+                                       seconds_text(limits.wall_seconds) +
+                                       " s (blocked, or the machine too busy) and was abandoned";
     Receiver receiver(limits);
     std::vector<char> buf(1 << 16);
-    const std::string seconds_text = std::to_string(static_cast<long long>(std::ceil(limits.seconds)));
     for (;;) {
         const auto now = Clock::now();
         if (now >= deadline) {
             child.kill_now();
-            fail(path, "import took more than " + seconds_text + " s and was abandoned");
+            fail(path, wall_abandoned);
+        }
+        if (cpu_seconds(child.pid()) > limits.seconds) {
+            child.kill_now();
+            fail(path, "import took more than " + seconds_text(limits.seconds) +
+                           " s of CPU time and was abandoned");
         }
         const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - now);
         pollfd p{in.fd, POLLIN, 0};
@@ -340,7 +375,7 @@ TriMesh run_isolated(const fs::path& path, const ImportLimits& limits,
     const std::optional<int> status = child.wait_until(deadline + std::chrono::seconds(1));
     if (!status) {
         child.kill_now();
-        fail(path, "import took more than " + seconds_text + " s and was abandoned");
+        fail(path, wall_abandoned);
     }
     if (WIFSIGNALED(*status)) {
         const int sig = WTERMSIG(*status);
