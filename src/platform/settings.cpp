@@ -280,7 +280,7 @@ SettingsLoad parse_settings(std::string_view text, const std::string& source,
     }
     r.boolean(t, "overlay", s.overlay);
     r.boolean(t, "hold_41hz", s.hold_41hz);
-    const std::string line_methods[] = {"compute", "geometry_shader", "geometry"};
+    const std::string line_methods[] = {"compute", "geometry_shader", "auto", "geometry"};
     if (const int i = r.choice(t, "line_method", line_methods, s.line_method); i >= 0) {
         s.line_method = line_methods[i];
     }

@@ -66,6 +66,11 @@ void EdgeStorage::keep_count() {
     glCopyNamedBufferSubData(command_.id(), kept_count_.id(), 0, 0, sizeof(EdgeDrawCommand));
 }
 
+void EdgeStorage::forget_previous() {
+    has_previous_ = false;
+    previous_ = EdgeDrawCommand{};  // what the counts were before the first fill
+}
+
 EdgeDrawCommand EdgeStorage::previous() const {
     if (!previous_) {
         EdgeDrawCommand cmd;

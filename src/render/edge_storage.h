@@ -34,6 +34,10 @@ public:
     EdgeDrawCommand previous() const;
     // Whether keep_count ran yet: before it, previous() knows nothing of the scene's size.
     bool has_previous() const { return has_previous_; }
+    // The kept counts no longer describe the frame before (it was drawn without the edge
+    // buffer, LineMethod::automatic): back to the first frame's state, so the next fill sizes
+    // itself from its own counts (edges_sized) instead of from an older frame's.
+    void forget_previous();
 
     std::uint32_t capacity() const { return capacity_; }
     std::uint32_t max_capacity() const { return max_capacity_; }

@@ -92,12 +92,17 @@ void outline_mask(const PassContext& ctx) { pass_image_outline(ctx, true); }
 
 namespace {
 
+// LineMethod::automatic may draw any frame with the compute method: its meshes need edge lists.
+bool may_use_edges(LineMethod method) {
+    return method == LineMethod::compute || method == LineMethod::automatic;
+}
+
 bool compute_lines(const StyleDef& style, const RenderSettings& settings) {
-    return style.fill == FillPass::none && settings.method == LineMethod::compute;
+    return style.fill == FillPass::none && may_use_edges(settings.method);
 }
 
 bool exact_mask_from_edges(const StyleDef& style, const RenderSettings& settings) {
-    return settings.method == LineMethod::compute && style.lines != LinePass::sketch;
+    return may_use_edges(settings.method) && style.lines != LinePass::sketch;
 }
 
 }  // namespace

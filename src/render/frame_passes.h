@@ -19,6 +19,10 @@ bool style_needs_edge_buffer(const StyleDef& style, const RenderSettings& settin
 // drawn from the edge buffer, so that it is the vector style's mask to the pixel.
 bool mask_needs_edge_buffer(const StyleDef& style, const RenderSettings& settings);
 
+// With LineMethod::automatic these two say whether a frame may need the edge buffer.
+//
+// frame_passes and mask_passes take the frame's resolved method (resolve_line_method), never
+// LineMethod::automatic.
 std::vector<FramePass> frame_passes(const StyleDef& style, const RenderSettings& settings);
 
 // The passes that draw the 1-pixel accuracy mask into targets.mask (untimed). Styles that draw

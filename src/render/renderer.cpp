@@ -22,6 +22,9 @@ int scene_view_rows(float view_top, int height) {
 
 struct Renderer::Impl {
     RenderSettings settings;
+    // The settings the passes see: `settings` with LineMethod::automatic resolved for the
+    // frame being drawn (resolve_line_method).
+    RenderSettings frame_settings;
     int width;
     int height;
     gl::PassTimer timer;
@@ -41,9 +44,12 @@ struct Renderer::Impl {
     // texture), and when that frame was shown, for phosphor decay and frame holding.
     const gl::Texture2D* last_picture = nullptr;
     double last_time_s = 0.0;
+    // Whether the last frame filled the edge buffer. A frame the geometry shader drew under
+    // LineMethod::automatic leaves it as an older frame filled it: its kept counts are stale.
+    bool edges_filled_last_frame = false;
 
     Impl(const RenderSettings& s, int w, int h, gl::TimingMethod timing)
-        : settings(s), width(std::max(w, 1)), height(std::max(h, 1)), timer(timing) {
+        : settings(s), frame_settings(s), width(std::max(w, 1)), height(std::max(h, 1)), timer(timing) {
         programs = load_programs(settings);
         targets = make_targets(width, height, settings);
         hud_vao.bind_buffer(0, hud_vertices, sizeof(float) * 6);
@@ -63,7 +69,7 @@ struct Renderer::Impl {
                         GLuint target, const scene::FrameList& frame, FramePicture* picture) {
         const int view_rows = scene_view_rows(frame.view_top, height);
         return PassContext{programs,  targets,  gpu_meshes, meshes,
-                           batches,   cam,      settings,   style.hidden_lines_removed,
+                           batches,   cam,      frame_settings, style.hidden_lines_removed,
                            empty_vao, instances, edges,     style,
                            style_textures, hud_vao, hud_count, target,
                            &stats,    edge_query, picture, frame.seed,
@@ -85,6 +91,19 @@ struct Renderer::Impl {
                                            static_cast<std::size_t>(batch.instance_count);
         }
         return b;
+    }
+
+    // Picks the frame's line method (LineMethod::automatic: by the triangles it submits) and
+    // keeps the edge buffer's per-frame state true to it: a frame that fills the buffer after
+    // one that did not must size it from its own counts, not from the last frame that filled it
+    // (which may be many frames and a much smaller scene ago). `fills_edges` says whether the
+    // frame's passes fill the edge buffer (frame_passes.h).
+    void choose_line_method(const FrameBatches& batches, const StyleDef& style,
+                            bool (*fills_edges)(const StyleDef&, const RenderSettings&)) {
+        frame_settings.method = resolve_line_method(settings.method, batches.stats.triangles_submitted);
+        const bool fills = fills_edges(style, frame_settings);
+        if (fills && !edges_filled_last_frame) edges.forget_previous();
+        edges_filled_last_frame = fills;
     }
 
     GLsizei upload_hud(const std::vector<scene::HudLine>& hud) {
@@ -125,6 +144,7 @@ void Renderer::set_settings(const RenderSettings& settings) {
                             settings.bloom_sigma_px != impl_->settings.bloom_sigma_px;
     if (new_kernel) impl_->programs.bloom_blur = load_bloom_blur(settings);
     impl_->settings = settings;
+    impl_->frame_settings = settings;
     if (remake) {
         impl_->targets = make_targets(impl_->width, impl_->height, settings);
         impl_->last_picture = nullptr;
@@ -132,6 +152,7 @@ void Renderer::set_settings(const RenderSettings& settings) {
 }
 
 const RenderSettings& Renderer::settings() const { return impl_->settings; }
+LineMethod Renderer::line_method_drawn() const { return impl_->frame_settings.method; }
 
 namespace {
 
@@ -164,8 +185,10 @@ void Renderer::render(const scene::FrameList& frame, const scene::MeshLibrary& m
     const StyleDef& style = m.style_of(frame);
     m.gpu_meshes.set_edge_lists(style_needs_edge_buffer(style, m.settings));
     const FrameBatches batches = m.prepare(frame, meshes, cam);
+    m.choose_line_method(batches, style, style_needs_edge_buffer);
     const GLsizei hud_count = m.upload_hud(frame.hud);
     m.stats = batches.stats;
+    m.stats.line_method = m.frame_settings.method;
     const GLuint target = target_fbo == kOffscreen ? m.targets.output_fbo.id() : target_fbo;
     m.last_target = target;
     // The first picture after new targets has no past: its history is black either way.
@@ -174,7 +197,7 @@ void Renderer::render(const scene::FrameList& frame, const scene::MeshLibrary& m
 
     // The frame is the style's list of passes (frame_passes.cpp), each timed under its name.
     m.timer.begin_frame();
-    for (const FramePass& pass : frame_passes(style, m.settings)) {
+    for (const FramePass& pass : frame_passes(style, m.frame_settings)) {
         m.timer.begin(pass.name);
         pass.run(ctx);
         m.timer.end();
@@ -192,9 +215,10 @@ std::vector<std::uint8_t> Renderer::render_mask(const scene::FrameList& frame,
     const StyleDef& style = m.style_of(frame);
     m.gpu_meshes.set_edge_lists(mask_needs_edge_buffer(style, m.settings));
     const FrameBatches batches = m.prepare(frame, meshes, cam);
+    m.choose_line_method(batches, style, mask_needs_edge_buffer);
     const PassContext ctx = m.context(meshes, batches, cam, style, 0, m.targets.output_fbo.id(),
                                       frame, nullptr);
-    for (const FramePass& pass : mask_passes(style, m.settings)) pass.run(ctx);
+    for (const FramePass& pass : mask_passes(style, m.frame_settings)) pass.run(ctx);
     std::vector<std::uint8_t> rows(static_cast<std::size_t>(m.width) * m.height);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     glGetTextureImage(m.targets.mask.id(), 0, GL_RED, GL_UNSIGNED_BYTE,

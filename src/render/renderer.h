@@ -19,6 +19,8 @@ struct FrameStats {
     std::size_t objects_culled = 0;
     std::size_t triangles_submitted = 0;
     std::size_t feature_edges = 0;  // counted only when RenderSettings::count_edges is on
+    // The method that drew the frame's lines: LineMethod::automatic's choice for it.
+    LineMethod line_method = kDefaultLineMethod;
 };
 
 class Renderer {
@@ -35,6 +37,9 @@ public:
     void resize(int width, int height);
     void set_settings(const RenderSettings& settings);
     const RenderSettings& settings() const;
+    // The line method the last render() or render_mask() drew with: settings().method, or
+    // with LineMethod::automatic the one it chose for that frame (resolve_line_method).
+    LineMethod line_method_drawn() const;
 
     // Draws the frame into the renderer's own targets and composites it to `target_fbo`
     // (0 = the window, kOffscreen = own image for read_color). Meshes are uploaded on first

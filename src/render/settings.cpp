@@ -12,9 +12,10 @@ const std::vector<std::string>& preset_names() {
 LineMethod parse_line_method(std::string_view name) {
     if (name == "geometry_shader" || name == "geometry") return LineMethod::geometry_shader;
     if (name == "compute") return LineMethod::compute;
+    if (name == "auto") return LineMethod::automatic;
     if (name == "image_outline") return LineMethod::image_outline;
     throw UserError("unknown line method '" + std::string(name) +
-                    "' (use compute, geometry_shader or image_outline)");
+                    "' (use compute, geometry_shader, auto or image_outline)");
 }
 
 const char* line_method_name(LineMethod method) {
@@ -22,6 +23,7 @@ const char* line_method_name(LineMethod method) {
         case LineMethod::geometry_shader: return "geometry_shader";
         case LineMethod::compute: return "compute";
         case LineMethod::image_outline: return "image_outline";
+        case LineMethod::automatic: return "auto";
     }
     return "?";
 }
@@ -29,6 +31,11 @@ const char* line_method_name(LineMethod method) {
 const std::vector<LineMethod>& feature_line_methods() {
     static const std::vector<LineMethod> methods = {LineMethod::compute, LineMethod::geometry_shader};
     return methods;
+}
+
+LineMethod resolve_line_method(LineMethod method, std::size_t triangles_submitted) {
+    if (method != LineMethod::automatic) return method;
+    return triangles_submitted >= kAutoComputeFromTriangles ? LineMethod::compute : LineMethod::geometry_shader;
 }
 
 RenderSettings preset(std::string_view name) {

@@ -1,5 +1,6 @@
 #pragma once
 // Every knob of the line pipeline, and the named presets that set them all.
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -22,14 +23,29 @@ enum class LineMethod {
     compute,          // a compute shader per unique edge fills the edge buffer, then one quad per
                       // edge (pass_edges.cpp, pass_edge_quads.cpp); same lines, same spine test
     image_outline,    // baseline: Sobel edges on the prepass depth and normals (pass_image_outline)
+    automatic,        // "auto": per frame, geometry_shader or compute by what the frame submits
+                      // (resolve_line_method); the renderer draws each frame with one of them
 };
 
-// "geometry_shader" (also "geometry", its old name), "compute" or "image_outline"; throws
-// UserError naming the valid ones otherwise.
+// "geometry_shader" (also "geometry", its old name), "compute", "auto" or "image_outline";
+// throws UserError naming the valid ones otherwise.
 LineMethod parse_line_method(std::string_view name);
 const char* line_method_name(LineMethod method);
-// The two methods that draw the same feature lines (not the image-space baseline).
+// The two methods that draw the same feature lines (not the image-space baseline, not auto,
+// which draws each frame with one of these two).
 const std::vector<LineMethod>& feature_line_methods();
+
+// LineMethod::automatic draws a frame with the compute method from this many submitted
+// triangles (after culling and LOD, FrameStats::triangles_submitted) and with the geometry
+// shader below. The compute path has fixed per-frame costs (dispatches, counters, the
+// visibility pass, an indirect draw) but scales with llvmpipe's threads; the geometry shader
+// runs on one thread at a cost per triangle. Measured on llvmpipe: see the README's "line
+// methods".
+inline constexpr std::size_t kAutoComputeFromTriangles = 6000;
+// The method that draws a frame of `triangles_submitted` triangles: `method` itself unless it
+// is LineMethod::automatic. Depends on the frame's content only, never on timings, so the same
+// frame always gets the same method.
+LineMethod resolve_line_method(LineMethod method, std::size_t triangles_submitted);
 
 // The method presets use; see the README's "line methods" for the measurements behind it.
 inline constexpr LineMethod kDefaultLineMethod = LineMethod::compute;

@@ -296,6 +296,18 @@ TEST(LoaderSchema, WrongVersionStopsFurtherChecks) {
     EXPECT_TRUE(has_one_error(r, 1, 11, "unsupported format version 7"));
 }
 
+TEST(LoaderSchema, LineMethodTakesAutoAndReportsABadOneAtItsPosition) {
+    for (const std::string m : {"compute", "geometry_shader", "auto", "geometry"}) {
+        const auto r = load(level_text("[render]\nline_method = \"" + m + "\"\n"));
+        ASSERT_TRUE(r.ok()) << m << ": " << format(r.errors.at(0));
+        EXPECT_EQ(r.level->render.line_method, m);
+    }
+    EXPECT_TRUE(has_one_error(load(level_text("[render]\nline_method = \"automatic\"\n")), 4, 15,
+                              "'automatic'"));
+    EXPECT_TRUE(has_one_error(load(level_text("[render]\nline_method = \"computer\"\n")), 4, 15,
+                              "did you mean 'compute'"));
+}
+
 TEST(LoaderSchema, ReportsAllErrorsOfAFileInOrder) {
     const auto r =
         load(level_text("[field]\nsize = nan\nwrapp = true\n"

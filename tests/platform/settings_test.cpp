@@ -105,6 +105,25 @@ TEST(Settings, BadValuesReportPositionAndKeepDefaults) {
     for (const auto& e : r.errors) EXPECT_EQ(e.find('\n'), std::string::npos) << e;
 }
 
+TEST(Settings, LineMethodTakesAutoAndReportsABadOneAtItsPosition) {
+    for (const std::string m : {"compute", "geometry_shader", "auto", "geometry"}) {
+        const SettingsLoad r = parse("line_method = \"" + m + "\"\n");
+        EXPECT_TRUE(r.errors.empty()) << m << ": " << (r.errors.empty() ? "" : r.errors.front());
+        EXPECT_EQ(r.settings.line_method, m);
+    }
+    // Saved and read back as written.
+    Settings s;
+    s.line_method = "auto";
+    EXPECT_EQ(parse(format_settings(s)).settings.line_method, "auto");
+
+    const SettingsLoad bad = parse("volume = 0.5\nline_method = \"automatic\"\n");
+    ASSERT_EQ(bad.errors.size(), 1u);
+    EXPECT_EQ(bad.errors.front().rfind("settings.toml:2:15: error: line_method must be one of ", 0), 0u)
+        << bad.errors.front();
+    EXPECT_NE(bad.errors.front().find("\"auto\""), std::string::npos) << bad.errors.front();
+    EXPECT_EQ(bad.settings.line_method, Settings{}.line_method);
+}
+
 TEST(Settings, SyntaxErrorKeepsEverythingDefault) {
     const SettingsLoad r = parse("volume = 0.5\nmute = tru e\n");
     ASSERT_EQ(r.errors.size(), 1u);

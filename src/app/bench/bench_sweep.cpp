@@ -61,6 +61,14 @@ std::vector<SweepConfig> sweep_configs() {
             out.push_back(c);
         }
     }
+    // And with LineMethod::automatic, which draws each frame with one of the two (by the
+    // triangles it submits): its F1 is theirs, its cost should be the lower of theirs.
+    for (const std::string& name : render::preset_names()) {
+        SweepConfig c{name + "-auto", "preset " + name + ", line method auto (per frame by triangles submitted)",
+                      render::preset(name)};
+        c.settings.method = render::LineMethod::automatic;
+        out.push_back(c);
+    }
     SweepConfig per_fragment{"balanced-per-fragment",
                              "balanced, compute line method with the spine test in every line fragment "
                              "instead of once per spine sample",

@@ -31,7 +31,7 @@ namespace fs = std::filesystem;
 constexpr const char* kUsage =
     "usage: beamzone bench LEVEL [--frames N] [--warmup N] [--size WxH]\n"
     "                      [--preset fast|balanced|high] [--style NAME] [--sweep | --scaling]\n"
-    "                      [--line-method compute|geometry_shader|image_outline]\n"
+    "                      [--line-method compute|geometry_shader|auto|image_outline]\n"
     "                      [--out DIR] [--replay FILE] [--samples N] [--rounds N]\n"
     "                      [--timing auto|cpu|gpu] [--beam classic|mame]\n"
     "       beamzone bench --accuracy [--models-dir DIR] [--model FILE]... [--size WxH]\n"

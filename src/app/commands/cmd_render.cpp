@@ -25,7 +25,7 @@ namespace {
 constexpr const char* kUsage =
     "usage: beamzone render INPUT [--eye x,y,z] [--target x,y,z] [--up x,y,z] [--fov DEG]\n"
     "                       [--near N] [--far F] [--size WxH] [--preset fast|balanced|high]\n"
-    "                       [--line-method compute|geometry_shader|image_outline]\n"
+    "                       [--line-method compute|geometry_shader|auto|image_outline]\n"
     "                       [--style NAME] [--shading flat|smooth] [--no-smoothing] [--one-sided]\n"
     "                       [--color r,g,b] [--out frame.png]\n"
     "                       [--mask mask.png] [--repeat N] [--copies N] [--beam classic|mame]\n"

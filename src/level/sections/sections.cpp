@@ -31,7 +31,7 @@ constexpr std::array<std::string_view, 9> kRenderKeys = {"style",          "pres
 // Must match bz::render::beam_look_names().
 constexpr std::array<std::string_view, 2> kBeamLooks = {"classic", "mame"};
 // Must match bz::render::parse_line_method ("geometry" is the old name of geometry_shader).
-constexpr std::array<std::string_view, 3> kLineMethods = {"compute", "geometry_shader", "geometry"};
+constexpr std::array<std::string_view, 4> kLineMethods = {"compute", "geometry_shader", "auto", "geometry"};
 // Must match bz::render::preset_names(); the level module may not link the renderer.
 constexpr std::array<std::string_view, 3> kPresets = {"fast", "balanced", "high"};
 
