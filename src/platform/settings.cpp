@@ -335,8 +335,8 @@ std::string format_settings(const Settings& s) {
       << "         # Battlezone's cabinet overlay: top fifth red, the rest green\n"
       << "hold_41hz = " << (s.hold_41hz ? "true" : "false")
       << "       # the original's ~41 Hz refresh, frames held\n"
-      << (s.line_method.empty() ? "# line_method = \"compute\"" : "line_method = \"" + s.line_method + "\"")
-      << "  # \"compute\" or \"geometry_shader\"; unset: the preset's\n"
+      << (s.line_method.empty() ? "# line_method = \"auto\"" : "line_method = \"" + s.line_method + "\"")
+      << "  # \"auto\" (per frame), \"compute\" or \"geometry_shader\"; unset: the preset's\n"
       << "gamepad = " << quoted(s.gamepad == GamepadMode::tank ? "tank" : "drive")
       << "          # \"tank\" (two sticks, one per tread) or \"drive\" (left stick)\n"
       << "show_fps = " << (s.show_fps ? "true" : "false")

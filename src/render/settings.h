@@ -41,14 +41,16 @@ const std::vector<LineMethod>& feature_line_methods();
 // visibility pass, an indirect draw) but scales with llvmpipe's threads; the geometry shader
 // runs on one thread at a cost per triangle. Measured on llvmpipe: see the README's "line
 // methods".
-inline constexpr std::size_t kAutoComputeFromTriangles = 6000;
+inline constexpr std::size_t kAutoComputeFromTriangles = 4000;
 // The method that draws a frame of `triangles_submitted` triangles: `method` itself unless it
 // is LineMethod::automatic. Depends on the frame's content only, never on timings, so the same
 // frame always gets the same method.
 LineMethod resolve_line_method(LineMethod method, std::size_t triangles_submitted);
 
-// The method presets use; see the README's "line methods" for the measurements behind it.
-inline constexpr LineMethod kDefaultLineMethod = LineMethod::compute;
+// The method presets use: auto, which on llvmpipe is as fast as the geometry shader on small
+// game frames and as the compute method on large scenes; see the README's "line methods" for
+// the measurements behind it.
+inline constexpr LineMethod kDefaultLineMethod = LineMethod::automatic;
 
 // The vector beam: how a line's intensity becomes width and brightness, how lines combine,
 // how the phosphor holds them, and the glow. The `classic` look is the original beamzone beam

@@ -49,7 +49,8 @@ std::vector<SweepConfig> sweep_configs() {
         out.push_back({name, "preset " + name + " (" + render::line_method_name(render::kDefaultLineMethod) + ")",
                        render::preset(name)});
     }
-    // Each preset again with the other line method: same lines, so the same F1, other cost.
+    // Each preset again with each line method given outright (the default, auto, picks one of
+    // them per frame): same lines, so the same F1, other cost.
     for (const render::LineMethod m : render::feature_line_methods()) {
         if (m == render::kDefaultLineMethod) continue;
         std::string suffix = render::line_method_name(m);
@@ -61,18 +62,11 @@ std::vector<SweepConfig> sweep_configs() {
             out.push_back(c);
         }
     }
-    // And with LineMethod::automatic, which draws each frame with one of the two (by the
-    // triangles it submits): its F1 is theirs, its cost should be the lower of theirs.
-    for (const std::string& name : render::preset_names()) {
-        SweepConfig c{name + "-auto", "preset " + name + ", line method auto (per frame by triangles submitted)",
-                      render::preset(name)};
-        c.settings.method = render::LineMethod::automatic;
-        out.push_back(c);
-    }
     SweepConfig per_fragment{"balanced-per-fragment",
                              "balanced, compute line method with the spine test in every line fragment "
                              "instead of once per spine sample",
                              render::preset("balanced")};
+    per_fragment.settings.method = render::LineMethod::compute;
     per_fragment.settings.spine_sample_spacing_px = 0.0f;
     out.push_back(per_fragment);
     SweepConfig outline{"image-outline",
