@@ -8,8 +8,8 @@
 
 #include "gl/state.h"
 #include "gl/vertex_array.h"
-#include "render/batches.h"
-#include "render/edge_storage.h"
+#include "render/gpu_scene/batches.h"
+#include "render/lines/edge_storage.h"
 #include "render/programs.h"
 #include "render/styles/style_def.h"
 #include "render/styles/style_textures.h"
@@ -100,7 +100,7 @@ void pass_hud(const PassContext& ctx);
 // full-screen pass costs per pixel, so the composite computes the new picture where it
 // shades anyway and stores it, and the bloom's first downsample glows from it.
 // phosphor_step sets up one frame's step; set_phosphor_uniforms hands it to a program
-// (shaders/phosphor.glsl); finish_phosphor records the composite's write and returns the
+// (shaders/beam/phosphor.glsl); finish_phosphor records the composite's write and returns the
 // new picture.
 PhosphorStep phosphor_step(const PassContext& ctx, double dt_seconds);
 void set_phosphor_uniforms(const gl::Program& program, const PhosphorStep& step);

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "render/batches.h"
+#include "render/gpu_scene/batches.h"
 
 namespace bz::render {
 

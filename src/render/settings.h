@@ -90,7 +90,7 @@ struct BeamSettings {
     // MAME lengthens every vector by 3/8 of the beam's full width at each end
     // (src/emu/video/vector.cpp, "extend vector line by 3/8 beam_width on both sides"): this
     // share of the width is added past both end points. Visual only: whether an end shows is
-    // still decided at the edge's own end point (shaders/beam_ends.glsl).
+    // still decided at the edge's own end point (shaders/beam/beam_ends.glsl).
     float end_lengthening = 0.0f;
     PhosphorDecay phosphor = PhosphorDecay::off;
     float persistence_ms = 20.0f;  // exponential: tau; power law: the time to half brightness
@@ -111,7 +111,7 @@ struct RenderSettings {
     DepthFormat depth = DepthFormat::reversed_f32;
     // The spine test reads the one prepass texel under the spine point (a 2x2 bilinear filter
     // scored no better, issue 10) and compares it with the exact plane of the edge's face;
-    // these say how far the rasterised depth may sit from it (shaders/spine_test.glsl):
+    // these say how far the rasterised depth may sit from it (shaders/lines/spine_test.glsl):
     float plane_tolerance_rel = 1e-5f;   // relative to the depth: float rounding
     float plane_tolerance_px = 0.0625f;  // pixels of the face's own depth slope: rasterisation
     // Relative bias where no plane is usable (a face seen edge-on), and the most the slope

@@ -8,7 +8,7 @@
 
 namespace bz::render {
 
-// The sparse composite's screen tiles, in pixels (shaders/screen_tiles.glsl gets it too).
+// The sparse composite's screen tiles, in pixels (shaders/beam/screen_tiles.glsl gets it too).
 inline constexpr int kScreenTileSize = 32;
 
 struct Targets {
@@ -18,7 +18,7 @@ struct Targets {
     gl::Texture2D lines;   // HDR lines + HUD, RGBA16F, GL_MAX blended
     gl::Texture2D bloom_a; // bloom ping-pong at the bloom resolution
     gl::Texture2D bloom_b;
-    gl::Texture2D bloom_out; // the finished bloom, RGBA8 sqrt-encoded (shaders/bloom_encoding.glsl)
+    gl::Texture2D bloom_out; // the finished bloom, RGBA8 sqrt-encoded (shaders/beam/bloom_encoding.glsl)
     gl::Texture2D mask;    // R8 visible-spine mask
     gl::Texture2D output;  // RGBA8 composite, for PNGs and screenshots
     gl::Texture2D normals; // RGBA8 face normals, only for LineMethod::image_outline

@@ -16,7 +16,7 @@ cmake --install "$build" --prefix "$work/prefix" >"$work/install.log" 2>"$work/e
   fail "cmake --install exited $?"
 mv "$work/prefix" "$work/moved"
 p=$work/moved
-for f in bin/beamzone share/beamzone/shaders/lines.geom share/beamzone/data/fonts/futural.jhf \
+for f in bin/beamzone share/beamzone/shaders/lines/lines.geom share/beamzone/data/fonts/futural.jhf \
   share/beamzone/data/models/pylon.obj share/beamzone/data/gamecontrollerdb/gamecontrollerdb.txt \
   share/beamzone/levels/classic.toml share/beamzone/levels/README.md \
   share/applications/org.beamzone.Beamzone.desktop share/metainfo/org.beamzone.Beamzone.metainfo.xml \

@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "core/error.h"
+#include "support/scratch_dir.h"
 
 namespace fs = std::filesystem;
 
@@ -14,8 +15,8 @@ void write(const fs::path& p, const std::string& s) { std::ofstream(p) << s; }
 }  // namespace
 
 TEST(ShaderSource, IncludesAndDefinesKeepLineNumbers) {
-    const fs::path dir = fs::temp_directory_path() / "bz_shader_src";
-    fs::create_directories(dir);
+    const bz::test::ScratchDir scratch("bz_shader_src");
+    const fs::path& dir = scratch.path();
     write(dir / "main.frag", "#version 450 core\n#include \"common.glsl\"\nvoid main() {}\n");
     write(dir / "common.glsl", "float f() { return 1.0; }\n");
     const auto src = bz::gl::assemble_shader(dir / "main.frag", {"MASK 1"});
@@ -23,7 +24,6 @@ TEST(ShaderSource, IncludesAndDefinesKeepLineNumbers) {
     EXPECT_NE(src.text.find("#define MASK 1"), std::string::npos);
     EXPECT_NE(src.text.find("#line 1 1\nfloat f()"), std::string::npos);
     EXPECT_NE(src.text.find("#line 3 0\nvoid main"), std::string::npos);
-    fs::remove_all(dir);
 }
 
 TEST(ShaderSource, MapsMesaAndNvidiaLogsToFileLine) {
@@ -36,10 +36,9 @@ TEST(ShaderSource, MapsMesaAndNvidiaLogsToFileLine) {
 
 TEST(ShaderSource, MissingFileAndCycleAreUserErrors) {
     EXPECT_THROW(bz::gl::assemble_shader("/nonexistent.frag"), bz::UserError);
-    const fs::path dir = fs::temp_directory_path() / "bz_shader_cycle";
-    fs::create_directories(dir);
+    const bz::test::ScratchDir scratch("bz_shader_cycle");
+    const fs::path& dir = scratch.path();
     write(dir / "a.frag", "#version 450 core\n#include \"b.glsl\"\n");
     write(dir / "b.glsl", "#include \"b.glsl\"\n");
     EXPECT_THROW(bz::gl::assemble_shader(dir / "a.frag"), bz::UserError);
-    fs::remove_all(dir);
 }

@@ -1,6 +1,6 @@
 // The vector beam (render::BeamSettings): phosphor decay in elapsed time, additive against max
 // blending, beam dwell, overdrive defocus, flicker and MAME's lengthened ends. HUD lines are
-// drawn through the same beam maths as scene lines (shaders/beam_width.glsl) and need no meshes
+// drawn through the same beam maths as scene lines (shaders/beam/beam_width.glsl) and need no meshes
 // or camera, so most tests draw HUD lines and read the HDR picture that bloom and composite
 // see; the lengthening tests also draw scene lines, in both line methods.
 #include <gtest/gtest.h>

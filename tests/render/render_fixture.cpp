@@ -7,7 +7,7 @@
 
 #include "core/image_io.h"
 #include "geometry/import/import.h"
-#include "render/camera_framing.h"
+#include "render/camera/camera_framing.h"
 
 namespace bz::test {
 

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "render/camera_math.h"
+#include "render/camera/camera_math.h"
 
 namespace bz::test {
 

@@ -14,7 +14,7 @@
 #include "core/image_io.h"
 #include "geometry/import/import.h"
 #include "geometry/generated/primitives.h"
-#include "render/camera_framing.h"
+#include "render/camera/camera_framing.h"
 #include "render/render_fixture.h"
 #include "render/style_regions.h"
 #include "render/styles/style_def.h"

@@ -9,7 +9,7 @@ namespace bz::test {
 
 ScratchDir::ScratchDir(std::string_view prefix) {
     static std::atomic<int> serial{0};
-    // Short: messages that quote a path may cut a long one (a model reference at 120 bytes).
+    // Short: messages quote a long path with its middle cut out (a model reference: 120 bytes).
     const std::string name =
         std::string(prefix) + "_" + std::to_string(::getpid()) + "_" + std::to_string(serial++);
     path_ = std::filesystem::temp_directory_path() / name;

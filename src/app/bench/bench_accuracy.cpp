@@ -13,7 +13,7 @@
 #include "core/hash.h"
 #include "core/image_io.h"
 #include "geometry/line_mesh/line_mesh.h"
-#include "render/camera_framing.h"
+#include "render/camera/camera_framing.h"
 #include "render/reference_frame.h"
 
 namespace bz::app {

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <string>
 
-#include "render/camera_framing.h"
+#include "render/camera/camera_framing.h"
 
 namespace bz::app {
 

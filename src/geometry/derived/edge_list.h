@@ -3,7 +3,7 @@
 // (LineMethod::compute): one entry per edge that some frame could draw, with everything about
 // it that does not depend on the view, so the per-frame work is one invocation per edge.
 //
-// The entries reproduce the geometry shader's emission exactly (shaders/lines.geom):
+// The entries reproduce the geometry shader's emission exactly (shaders/lines/lines.geom):
 //  - an interior edge (two consistently wound faces) is one entry, oriented from its lower to
 //    its higher welded vertex; face A is the face that walks it that way, face B the other;
 //  - every other triangle edge (boundary, non-manifold, inconsistently wound) is one entry per
@@ -24,7 +24,7 @@ inline constexpr std::uint32_t kEdgeBoundary = 1u;
 inline constexpr std::uint32_t kEdgeNonManifold = 2u;
 inline constexpr std::uint32_t kEdgeInconsistent = 3u;
 
-// 24 bytes, the std430 layout of shaders/edges.comp's MeshEdge.
+// 24 bytes, the std430 layout of shaders/lines/edges.comp's MeshEdge.
 struct MeshEdge {
     std::uint32_t a = 0, b = 0;  // the edge, in face A's winding
     std::uint32_t opp_a = 0;     // face A's third vertex

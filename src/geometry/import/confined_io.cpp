@@ -51,13 +51,18 @@ bool inside(const fs::path& path, const fs::path& folder) {
     return true;
 }
 
+// A file reference as the message quotes it: printable, and at most 120 bytes, the middle cut
+// out (marked "...") so that both the folder it starts from and the file name still show.
 std::string shown(const char* text) {
+    constexpr std::size_t kMax = 120;
     std::string out;
-    for (const char* c = text; *c && out.size() < 120; ++c) {
+    for (const char* c = text; *c; ++c) {
         const auto u = static_cast<unsigned char>(*c);
         out.push_back(u >= 0x20 && u < 0x7f ? *c : '?');
     }
-    return out;
+    if (out.size() <= kMax) return out;
+    constexpr std::size_t kKeep = (kMax - 3) / 2;
+    return out.substr(0, kKeep) + "..." + out.substr(out.size() - kKeep);
 }
 
 }  // namespace

@@ -4,7 +4,7 @@
 // clipping, the pixel-crossing rule) but decides visibility by casting rays against every
 // occluder triangle instead of reading a depth buffer, so it has no depth precision to lose.
 //
-// Definitions (see shaders/lines.geom):
+// Definitions (see shaders/lines/lines.geom):
 //  - A face is front-facing iff dot(n_view, -p0_view) > 0, n = cross(p1 - p0, p2 - p0).
 //  - An edge whose neighbour slot marks it non-interior (a_i == v_i) is always a feature edge.
 //  - Otherwise, with neighbour U = (v_i, a_i, v_{i+1}): a silhouette iff T is front and U is

@@ -48,7 +48,7 @@ TEST(PlayOverlay, ErrorsWrapInsideTheirBoxAndSayTheirKind) {
 
 TEST(PlayOverlay, EachKindIsNamed) {
     PlayOverlay o(font());
-    o.set_errors(ErrorKind::shader, {"shaders/lines.frag:3:1: error: syntax"});
+    o.set_errors(ErrorKind::shader, {"shaders/lines/lines.frag:3:1: error: syntax"});
     o.set_errors(ErrorKind::settings, {"settings.toml:1:10: error: volume must be ..."});
     const auto lines = o.error_box_lines(16.0 / 9.0);
     std::vector<std::string> titles;

@@ -11,6 +11,7 @@
 #include "game/difficulty/autopilot.h"
 #include "game/records/highscores.h"
 #include "game/test_world.h"
+#include "support/scratch_dir.h"
 
 namespace bz::game {
 namespace {
@@ -93,11 +94,9 @@ TEST(Replay, SerialiseParseRoundTripAndSaveIsAtomic) {
     // Run-length coding keeps held inputs small.
     EXPECT_LT(text.size(), 900u * 8u);
 
-    const fs::path dir = fs::temp_directory_path() / "bz_replay_test";
-    fs::create_directories(dir);
-    replay::save(dir / "a.bzreplay", r);
-    EXPECT_EQ(read_file(dir / "a.bzreplay"), text);
-    fs::remove_all(dir);
+    const bz::test::ScratchDir dir("bz_replay_test");
+    replay::save(dir.path() / "a.bzreplay", r);
+    EXPECT_EQ(read_file(dir.path() / "a.bzreplay"), text);
 }
 
 std::string error_of(const std::string& text) {
@@ -147,12 +146,12 @@ TEST(Replay, LevelHashFollowsTheLevel) {
     b.obstacles[0].position.x += 1.0;
     EXPECT_NE(replay::level_hash(a), replay::level_hash(b));
     // A level from a file hashes the file's bytes.
-    const fs::path f = fs::temp_directory_path() / "bz_level_hash.toml";
+    const bz::test::ScratchDir dir("bz_level_hash");
+    const fs::path f = dir.path() / "level.toml";
     write_file_atomic(f, "version = 1\n");
     level::Level from_file = default_level();
     from_file.file = f;
     EXPECT_EQ(replay::level_hash(from_file), bz::hash_bytes("version = 1\n"));
-    fs::remove(f);
 }
 
 }  // namespace

@@ -39,6 +39,24 @@ TEST(Confinement, MtllibEscapingWithDotDotIsRefused) {
         << m;
 }
 
+// A long reference is quoted with its middle cut out, so the message keeps both ends: where
+// it starts and the file it names.
+TEST(Confinement, LongReferenceIsQuotedWithBothEnds) {
+    Layout l;
+    const std::string deep = "../outside/" + std::string(200, 'd') + "/secret.mtl";
+    const auto p = l.dir.write("level/m.obj", "mtllib " + deep + "\n" + kTriangleObj);
+    const std::string m = import_error(p, l.options());
+    const auto open = m.find("reference '");
+    const auto close = m.find("': leads outside");
+    ASSERT_NE(open, std::string::npos) << m;
+    ASSERT_NE(close, std::string::npos) << m;
+    const std::string quoted = m.substr(open + 11, close - open - 11);
+    EXPECT_LE(quoted.size(), 120u) << quoted;
+    EXPECT_NE(quoted.find("..."), std::string::npos) << quoted;
+    EXPECT_EQ(quoted.substr(quoted.size() - 11), "/secret.mtl") << quoted;
+    EXPECT_EQ(quoted.front(), '/') << quoted;
+}
+
 TEST(Confinement, MtllibNamingEtcPasswdRelativelyIsRefused) {
     Layout l;
     const auto p = l.dir.write("level/m.obj", "mtllib ../../../../../../../../etc/passwd\n" + kTriangleObj);

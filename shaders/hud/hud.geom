@@ -1,0 +1,39 @@
+#version 450 core
+// Extrudes one HUD segment into a quad, exactly as the scene lines are extruded.
+#include "../beam/beam_width.glsl"
+
+layout(lines) in;
+layout(triangle_strip, max_vertices = 4) out;
+
+in vec3 v_color[];
+in float v_intensity[];
+uniform vec2 u_viewport;
+
+noperspective out vec2 g_pixel;
+flat out vec2 g_p0;
+flat out vec2 g_p1;
+flat out vec3 g_color;
+flat out vec3 g_beam;  // half-width (px), gain, softness
+
+void main() {
+    vec2 s0 = gl_in[0].gl_Position.xy, s1 = gl_in[1].gl_Position.xy;
+    vec2 d = s1 - s0;
+    float len = length(d);
+    vec2 dir = len > 1e-6 ? d / len : vec2(1.0, 0.0);
+    vec2 nrm = vec2(-dir.y, dir.x);
+    // HUD keys start high so a HUD line never flickers in step with a scene line.
+    BeamShape beam = beam_shape(v_intensity[0], len, 0x80000000u + uint(gl_PrimitiveIDIn));
+    float h = beam.half_width, r = beam_end_reach(h);  // lengthened ends: beam_ends.glsl
+    vec2 corners[4] = vec2[4](s0 - dir * r - nrm * h, s0 - dir * r + nrm * h,
+                              s1 + dir * r - nrm * h, s1 + dir * r + nrm * h);
+    for (int k = 0; k < 4; ++k) {
+        g_pixel = corners[k];
+        g_p0 = s0;
+        g_p1 = s1;
+        g_color = v_color[0];
+        g_beam = vec3(beam.half_width, beam.gain, beam.softness);
+        gl_Position = vec4(corners[k] / u_viewport * 2.0 - 1.0, 0.0, 1.0);
+        EmitVertex();
+    }
+    EndPrimitive();
+}

@@ -1,0 +1,166 @@
+#version 450 core
+// Edge extraction (LineMethod::compute): one invocation per edge of the mesh's unique edge list
+// (geo::build_edge_list) and instance. It classifies the edge with exactly the geometry
+// shader's definitions (shaders/lines/lines.geom: view-space facing, the crease threshold, back faces
+// skipped for outward-closed meshes seen from outside), clips it with the same code, and
+// appends each visible feature edge to the edge buffer (edge_record.glsl). Unlike the geometry
+// shader, each edge is tested once instead of once from each of its faces, and the work is
+// spread over every thread llvmpipe (or a GPU) has.
+#include "edge_record.glsl"
+#include "spine_samples.glsl"
+
+layout(local_size_x = 64) in;
+
+struct MeshEdge {
+    uint a, b;        // in face A's winding
+    uint opp_a;       // face A's third vertex
+    uint opp_b;       // face B's third vertex, 0xFFFFFFFF without face B
+    float cos_dihedral;
+    uint flags;       // 0 interior, 1 boundary, 2 non-manifold, 3 inconsistent
+};
+layout(std430, binding = EDGE_LIST_BINDING) readonly buffer Edges { MeshEdge edges[]; };
+layout(std430, binding = EDGE_POSITIONS_BINDING) readonly buffer Positions { float positions[]; };
+layout(std430, binding = EDGE_VERTEX_NORMALS_BINDING) readonly buffer VertexNormals { float vertex_normals[]; };
+// render::InstanceData: model-view in vec4 0-3, colour 4, parameters 5 (x: cos(crease angle)).
+layout(std430, binding = 1) readonly buffer Instances { vec4 instance_data[]; };
+layout(std430, binding = EDGE_RECORDS_BINDING) writeonly buffer Records { EdgeRecord records[]; };
+// Per record, two entries: the sampled stretch and the visible one, then the visible count
+// (spine_samples.glsl).
+layout(std430, binding = SPINE_SPANS_BINDING) writeonly buffer Spans { uvec4 spans[]; };
+layout(std430, binding = EDGE_COMMAND_BINDING) buffer Command { EDGE_COMMAND_MEMBERS; };
+
+uniform uint u_edge_base;       // first edge of this dispatch (dispatches are chunked)
+uniform uint u_edge_count;
+uniform uint u_first_instance;  // this batch's first instance, plus the dispatch's y offset
+uniform uint u_capacity;        // records the buffer holds; later appends are counted, not written
+uniform uint u_sample_capacity; // spine samples the sample buffer holds (0: none wanted)
+uniform float u_sample_margin;  // pixels around the viewport that spine samples cover
+uniform float u_sample_spacing; // pixels between spine samples
+uniform uint u_mesh_id;
+uniform bool u_skip_back_faces;
+uniform mat4 u_proj;
+uniform vec2 u_viewport;
+uniform float u_near;
+uniform float u_far;
+
+#include "edge_geometry.glsl"
+
+const uint kNoVertex = 0xFFFFFFFFu;
+
+vec3 position(uint v) { return vec3(positions[3u * v], positions[3u * v + 1u], positions[3u * v + 2u]); }
+vec3 vertex_normal(uint v) {
+    return vec3(vertex_normals[3u * v], vertex_normals[3u * v + 1u], vertex_normals[3u * v + 2u]);
+}
+vec3 unit_or_zero(vec3 v) { float l = length(v); return l > 0.0 ? v / l : vec3(0.0); }
+
+// The stretch (t0, t1) of the spine s0-s1 within the viewport grown by u_sample_margin
+// (Liang-Barsky); t0 > t1 when none of it is. Spine points farther out light no pixel.
+vec2 on_screen_stretch(vec2 s0, vec2 s1) {
+    vec2 lo = vec2(-u_sample_margin), hi = u_viewport + u_sample_margin;
+    vec2 d = s1 - s0;
+    float t0 = 0.0, t1 = 1.0;
+    for (int axis = 0; axis < 2; ++axis) {
+        if (abs(d[axis]) < 1e-6) {
+            if (s0[axis] < lo[axis] || s0[axis] > hi[axis]) return vec2(1.0, 0.0);
+            continue;
+        }
+        float ta = (lo[axis] - s0[axis]) / d[axis], tb = (hi[axis] - s0[axis]) / d[axis];
+        t0 = max(t0, min(ta, tb));
+        t1 = min(t1, max(ta, tb));
+    }
+    return vec2(t0, t1);
+}
+
+void main() {
+    uint e = u_edge_base + gl_GlobalInvocationID.x;
+    if (e >= u_edge_count) return;
+    uint inst = u_first_instance + gl_WorkGroupID.y;
+    MeshEdge me = edges[e];
+    mat4 mv = mat4(instance_data[inst * 6u], instance_data[inst * 6u + 1u], instance_data[inst * 6u + 2u],
+                   instance_data[inst * 6u + 3u]);
+    vec3 a = (mv * vec4(position(me.a), 1.0)).xyz;
+    vec3 b = (mv * vec4(position(me.b), 1.0)).xyz;
+    vec3 oa = (mv * vec4(position(me.opp_a), 1.0)).xyz;
+    vec3 na = face_normal(a, b, oa);
+    bool front_a = faces_eye(na, a);
+
+    // The geometry shader's cases, seen from the edge instead of from each face.
+    uint kind;
+    vec3 p0 = a, p1 = b, opp = oa;  // emitted direction and the emitting face's third vertex
+    vec3 face_pos = plane_of(na, a), face_neg = vec3(0.0);
+    vec3 nb = vec3(0.0);
+    uint flags = front_a ? EDGE_FACE_A_FRONT : 0u;
+    bool has_b = me.opp_b != kNoVertex;
+    if (!has_b) {
+        // Boundary, non-manifold or inconsistent: always a feature edge, one record per face.
+        if (!front_a && u_skip_back_faces) return;
+        kind = EDGE_BOUNDARY;
+        if (me.flags == 2u) flags |= EDGE_NON_MANIFOLD;
+        if (me.flags == 3u) flags |= EDGE_INCONSISTENT;
+    } else {
+        vec3 ob = (mv * vec4(position(me.opp_b), 1.0)).xyz;
+        nb = face_normal(a, ob, b);  // as the geometry shader tests the neighbour of face A
+        bool front_b = faces_eye(nb, a);
+        flags |= EDGE_HAS_FACE_B | (front_b ? EDGE_FACE_B_FRONT : 0u);
+        if (front_a != front_b) {
+            // Silhouette, emitted in the front face's winding with its third vertex.
+            kind = EDGE_SILHOUETTE;
+            if (!front_a) { p0 = b; p1 = a; opp = ob; }
+            face_pos = vec3(0.0);
+        } else {
+            if (!front_a && u_skip_back_faces) return;
+            if (!(me.cos_dihedral < instance_data[inst * 6u + 5u].x)) return;
+            kind = EDGE_CREASE;  // a < b: the face that walks low -> high, as the geometry shader
+            face_neg = plane_of(nb, ob);
+        }
+    }
+
+    vec3 m = eye_edge_plane(p0, p1, opp);
+    ScreenEdge s;
+    if (!project_edge(p0, p1, s)) return;
+
+    uint slot = atomicAdd(vertex_count, EDGE_VERTICES) / EDGE_VERTICES;
+    if (slot >= u_capacity) return;  // counted, so the renderer can grow the buffer
+    bool reversed = kind == EDGE_SILHOUETTE && !front_a;
+    // The record's face A is the emitting face: the front one of a silhouette.
+    if (reversed) flags = (flags & ~EDGE_FACE_B_FRONT) | EDGE_FACE_A_FRONT;
+    if (s.t.x > 0.0) flags |= EDGE_CLIPPED_START;
+    if (s.t.y < 1.0) flags |= EDGE_CLIPPED_END;
+    // Normals to view space with the cofactor matrix (right for any invertible model-view).
+    mat3 l = mat3(mv);
+    mat3 cof = mat3(cross(l[1], l[2]), cross(l[2], l[0]), cross(l[0], l[1]));
+    uint va = reversed ? me.b : me.a, vb = reversed ? me.a : me.b;
+    // Room for the spine-visibility samples of the stretch on screen; an edge that finds no
+    // room is tested per fragment (samples = 0).
+    uint first_sample = 0u, samples = 0u;
+    uvec2 sampled = uvec2(1u, 0u);
+    if (u_sample_capacity > 0u) {
+        uint n = spine_sample_count(s.s0, s.s1, u_sample_spacing);
+        vec2 stretch = on_screen_stretch(s.s0, s.s1);
+        uint want = 0u;
+        if (stretch.x <= stretch.y) {
+            sampled = uvec2(uint(floor(stretch.x * float(n - 1u))), min(uint(ceil(stretch.y * float(n - 1u))), n - 1u));
+            want = sampled.y - sampled.x + 1u;
+            first_sample = atomicAdd(samples_used, want);
+        }
+        if (want == 0u || (want <= u_sample_capacity && first_sample <= u_sample_capacity - want)) samples = n;
+    }
+
+    EdgeRecord r;
+    r.screen = vec4(s.s0, s.s1);
+    r.depth = vec4(1.0 / s.w, s.t);
+    r.edge_plane = vec4(m, me.cos_dihedral);
+    r.face_pos = vec4(face_pos, 0.0);
+    r.face_neg = vec4(face_neg, 0.0);
+    r.normal_a = vec4(unit_or_zero(reversed ? nb : na), 0.0);
+    r.normal_b = vec4(unit_or_zero(reversed ? na : nb), 0.0);
+    r.vertex_normal_a = vec4(unit_or_zero(cof * vertex_normal(va)), 0.0);
+    r.vertex_normal_b = vec4(unit_or_zero(cof * vertex_normal(vb)), 0.0);
+    r.ids = uvec4(kind | flags, inst, e, u_mesh_id);
+    r.vertices = uvec4(va, vb, first_sample, samples);
+    records[slot] = r;
+    if (samples > 0u) {  // none visible yet
+        spans[2u * slot] = uvec4(sampled, 0xFFFFFFFFu, 0u);
+        spans[2u * slot + 1u] = uvec4(0u);
+    }
+}

@@ -1,0 +1,53 @@
+#include <algorithm>
+#include <cmath>
+
+#include "render/passes.h"
+
+namespace bz::render {
+
+namespace {
+
+// MAME's BGFX path caps the frame time its phosphor decays by; so does this one, so a stall
+// (a breakpoint, a slow level load) fades the picture rather than jumping.
+constexpr double kMaxDtSeconds = 0.25;
+
+}  // namespace
+
+// Phosphor persistence (shaders/beam/phosphor.glsl): the composite reads this frame's beam image
+// and the previous picture and writes the new picture into the other history texture, which
+// is then the picture (held frames show it, tests read it).
+PhosphorStep phosphor_step(const PassContext& ctx, double dt_seconds) {
+    const Targets& t = ctx.targets;
+    const BeamSettings& b = ctx.settings.beam;
+    // Time running backwards (a replay restarted) or a new target: start from black.
+    const double dt = dt_seconds < 0.0 ? kMaxDtSeconds : std::min(dt_seconds, kMaxDtSeconds);
+    const double tau = std::max(static_cast<double>(b.persistence_ms), 1e-3) * 1e-3;
+    const double p = std::max(static_cast<double>(b.power_law_exponent), 0.1);
+    // Power law: (1 + t/t0)^-p is half at t = persistence, so t0 = persistence / (2^(1/p) - 1).
+    const double t0 = tau / (std::pow(2.0, 1.0 / p) - 1.0);
+    PhosphorStep s;
+    s.history = &t.phosphor[t.phosphor_front];
+    s.to = 1 - t.phosphor_front;
+    s.power_law = b.phosphor == PhosphorDecay::power_law;
+    s.dt = static_cast<float>(dt);
+    s.exp_factor = static_cast<float>(std::exp(-dt / tau));
+    s.t0_inv = static_cast<float>(1.0 / t0);
+    s.exponent = static_cast<float>(p);
+    return s;
+}
+
+void set_phosphor_uniforms(const gl::Program& program, const PhosphorStep& step) {
+    program.set("u_dt", step.dt);
+    program.set("u_power_law", step.power_law ? 1 : 0);
+    program.set("u_exp_factor", step.exp_factor);
+    program.set("u_t0_inv", step.t0_inv);
+    program.set("u_exponent", step.exponent);
+}
+
+const gl::Texture2D& finish_phosphor(const PassContext& ctx, const PhosphorStep& step) {
+    Targets& t = ctx.targets;
+    t.phosphor_front = step.to;
+    return t.phosphor[static_cast<std::size_t>(step.to)];
+}
+
+}  // namespace bz::render

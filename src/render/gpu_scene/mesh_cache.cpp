@@ -1,0 +1,98 @@
+#include "render/gpu_scene/mesh_cache.h"
+
+#include <memory>
+
+#include "geometry/derived/closure.h"
+#include "geometry/derived/dihedral.h"
+#include "geometry/derived/edge_list.h"
+
+#include "geometry/derived/simplify.h"
+#include "geometry/derived/edge_list.h"
+
+namespace bz::render {
+
+namespace {
+
+void instance_attributes(gl::VertexArray& vao, const gl::Buffer& instances, bool with_color) {
+    vao.bind_buffer(1, instances, sizeof(InstanceData), 0, 1);
+    for (GLuint col = 0; col < 4; ++col) {
+        vao.float_attribute(1 + col, 1, 4, static_cast<GLuint>(offsetof(InstanceData, model_view) +
+                                                               col * sizeof(glm::vec4)));
+    }
+    if (with_color) {
+        vao.float_attribute(5, 1, 4, offsetof(InstanceData, color));
+        vao.float_attribute(6, 1, 4, offsetof(InstanceData, params));
+    }
+}
+
+}  // namespace
+
+const GpuMesh& MeshCache::get(const scene::MeshLibrary& library, scene::MeshId id, int lod) {
+    if (id >= meshes_.size()) meshes_.resize(id + 1);
+    Slot& slot = meshes_[id];
+    const std::uint32_t version = library.version(id);
+    if (!slot.full || slot.full->version != version) {
+        slot = Slot{};
+        slot.full = std::make_unique<GpuMesh>();
+        upload(*slot.full, library.mesh(id));
+        slot.full->version = version;
+    }
+    // A mesh uploaded before the compute line method was chosen gets its edge list now.
+    if (edge_lists_ && !slot.full->has_edge_list) upload_edges(*slot.full, library.mesh(id));
+    if (lod <= 0) return *slot.full;
+    if (!slot.simplify_tried) {
+        slot.simplify_tried = true;
+        if (auto reduced = geo::simplify_line_mesh(library.mesh(id))) {
+            slot.simplified = std::make_unique<GpuMesh>();
+            upload(*slot.simplified, *reduced);
+            slot.simplified->version = version;
+        }
+    }
+    if (slot.simplified && edge_lists_ && !slot.simplified->has_edge_list) {
+        if (auto reduced = geo::simplify_line_mesh(library.mesh(id))) upload_edges(*slot.simplified, *reduced);
+    }
+    return slot.simplified ? *slot.simplified : *slot.full;
+}
+
+void MeshCache::set_edge_lists(bool on) { edge_lists_ = on; }
+
+void MeshCache::upload_edges(GpuMesh& gpu, const geo::AdjacencyMesh& mesh) {
+    const std::vector<geo::MeshEdge> edges = geo::build_edge_list(mesh);
+    gpu.edge_list.set(std::span<const geo::MeshEdge>(edges), GL_STATIC_DRAW);
+    gpu.edge_count = static_cast<GLuint>(edges.size());
+    gpu.has_edge_list = true;
+}
+
+void MeshCache::upload(GpuMesh& gpu, const geo::AdjacencyMesh& mesh) {
+    ++uploads_;
+    gpu.positions.set(std::span<const glm::vec3>(mesh.positions), GL_STATIC_DRAW);
+    const std::vector<glm::vec3> normals = geo::vertex_normals(mesh);
+    gpu.vertex_normals.set(std::span<const glm::vec3>(normals), GL_STATIC_DRAW);
+    gpu.adjacency.set(std::span<const std::uint32_t>(mesh.adjacency), GL_STATIC_DRAW);
+    gpu.triangles.set(std::span<const std::uint32_t>(mesh.triangles), GL_STATIC_DRAW);
+    gpu.outward_closed = geo::is_outward_closed(mesh);
+    const std::vector<float> cosines = geo::edge_dihedral_cosines(mesh);
+    gpu.edge_cosines.set(std::span<const float>(cosines), GL_STATIC_DRAW);
+    if (edge_lists_) upload_edges(gpu, mesh);
+    gpu.adjacency_count = static_cast<GLsizei>(mesh.adjacency.size());
+    gpu.triangle_index_count = static_cast<GLsizei>(mesh.triangles.size());
+
+    gpu.lines_vao.bind_buffer(0, gpu.positions, sizeof(glm::vec3));
+    gpu.lines_vao.float_attribute(0, 0, 3, 0);
+    instance_attributes(gpu.lines_vao, *instances_, true);
+    gpu.lines_vao.element_buffer(gpu.adjacency);
+
+    gpu.prepass_vao.bind_buffer(0, gpu.positions, sizeof(glm::vec3));
+    gpu.prepass_vao.float_attribute(0, 0, 3, 0);
+    instance_attributes(gpu.prepass_vao, *instances_, false);
+    gpu.prepass_vao.element_buffer(gpu.triangles);
+
+    gpu.fill_vao.bind_buffer(0, gpu.positions, sizeof(glm::vec3));
+    gpu.fill_vao.float_attribute(0, 0, 3, 0);
+    instance_attributes(gpu.fill_vao, *instances_, true);
+    gpu.fill_vao.bind_buffer(2, gpu.vertex_normals, sizeof(glm::vec3));
+    gpu.fill_vao.float_attribute(7, 2, 3, 0);
+    gpu.fill_vao.element_buffer(gpu.triangles);
+}
+
+}  // namespace bz::render

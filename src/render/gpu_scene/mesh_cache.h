@@ -1,0 +1,74 @@
+#pragma once
+// One GPU mesh per scene::MeshId, shared by all its instances: welded positions and smooth
+// vertex normals, the adjacency index buffer for the line pass and a plain triangle index
+// buffer for the prepass and the fills.
+// Both vertex arrays read per-instance data from one shared instance buffer (binding 1).
+// Distance LOD: a mesh may also have a simplified GPU mesh (geo::simplify_line_mesh), built
+// the first time a far instance asks for it.
+#include <memory>
+#include <vector>
+
+#include "gl/buffer.h"
+#include "gl/vertex_array.h"
+#include "scene/mesh_library.h"
+
+namespace bz::render {
+
+// Per-instance data, 96 bytes: locations 1-4 model-view, 5 colour, 6 parameters. Vertex
+// normals are location 7 (binding 2).
+struct InstanceData {
+    glm::mat4 model_view;
+    glm::vec4 color;
+    glm::vec4 params;  // x: cos(crease angle), y: this instance's index in the buffer,
+                       // z: intensity (the beam's width follows it: shaders/beam/beam_width.glsl),
+                       // w: 1 = smooth shading (filled styles)
+};
+
+struct GpuMesh {
+    gl::Buffer positions;
+    gl::Buffer vertex_normals;  // smooth vertex normals (geo::vertex_normals)
+    // Styles with strokes and LineMethod::compute (MeshCache::set_edge_lists): the unique edge
+    // list (geo::MeshEdge, binding kEdgeListBinding) the edge extraction reads.
+    gl::Buffer edge_list;
+    GLuint edge_count = 0;
+    gl::Buffer adjacency;
+    gl::Buffer triangles;
+    gl::Buffer edge_cosines;  // 3 per triangle, read by the geometry shader (binding 0)
+    bool has_edge_list = false;  // edge_list is filled (uploaded on first use with edge lists on)
+    gl::VertexArray lines_vao;
+    gl::VertexArray prepass_vao;
+    gl::VertexArray fill_vao;  // triangles with normals, colour and parameters
+    std::uint32_t version = 0;
+    bool outward_closed = false;  // geo::is_outward_closed: back faces hidden from outside
+    GLsizei adjacency_count = 0;
+    GLsizei triangle_index_count = 0;
+    std::size_t triangle_count() const { return static_cast<std::size_t>(triangle_index_count) / 3; }
+};
+
+class MeshCache {
+public:
+    explicit MeshCache(const gl::Buffer& instances) : instances_(&instances) {}
+    // Uploads on first use and when the library's version for `id` changed. lod 1 is the
+    // simplified mesh when the mesh has one, else the mesh itself.
+    const GpuMesh& get(const scene::MeshLibrary& library, scene::MeshId id, int lod = 0);
+    // Build each mesh's edge list too (the compute line method); meshes uploaded without one
+    // get it on their next use (not counted as an upload).
+    void set_edge_lists(bool on);
+    // GPU meshes uploaded so far (each model once, plus its simplified version if used).
+    std::size_t uploads() const { return uploads_; }
+
+private:
+    struct Slot {
+        std::unique_ptr<GpuMesh> full;
+        std::unique_ptr<GpuMesh> simplified;  // null: none built yet, or none possible
+        bool simplify_tried = false;
+    };
+    void upload(GpuMesh& gpu, const geo::AdjacencyMesh& mesh);
+    void upload_edges(GpuMesh& gpu, const geo::AdjacencyMesh& mesh);
+    const gl::Buffer* instances_;
+    std::vector<Slot> meshes_;
+    std::size_t uploads_ = 0;
+    bool edge_lists_ = false;
+};
+
+}  // namespace bz::render

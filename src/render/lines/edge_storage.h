@@ -1,0 +1,64 @@
+#pragma once
+// The GPU side of the edge buffer (edge_buffer.h): the records, the indirect draw command
+// whose vertex count is the append counter, and the spine-visibility samples of the records
+// (spine_samples.glsl). The buffers grow, never shrink; a frame that appends more records or
+// samples than fit is counted in full, so the renderer can grow the buffers.
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+
+#include "gl/buffer.h"
+#include "render/lines/edge_buffer.h"
+
+namespace bz::render {
+
+class EdgeStorage {
+public:
+    EdgeStorage();
+    // Room for at least `records` (capped at what one shader storage block may hold).
+    void reserve(std::size_t records);
+    // Room for at least `samples` spine samples (same cap).
+    void reserve_samples(std::size_t samples);
+    // Sets the counters to zero before a fill.
+    void reset();
+    // Records the last fill appended, including any past capacity(). Reads the counter back:
+    // waits for the fill.
+    std::size_t appended() const;
+    // Spine samples the last fill asked for, including any past sample_capacity(). Waits too.
+    std::size_t samples_used() const;
+    // After a fill: the counters of that fill are copied aside, to be read a frame later
+    // without waiting (previous).
+    void keep_count();
+    // The counters kept by the last keep_count (records appended = vertex_count / 6). Read
+    // back once per keep_count: the passes of a frame that ask again get the same copy.
+    EdgeDrawCommand previous() const;
+    // Whether keep_count ran yet: before it, previous() knows nothing of the scene's size.
+    bool has_previous() const { return has_previous_; }
+    // The kept counts no longer describe the frame before (it was drawn without the edge
+    // buffer, LineMethod::automatic): back to the first frame's state, so the next fill sizes
+    // itself from its own counts (edges_sized) instead of from an older frame's.
+    void forget_previous();
+
+    std::uint32_t capacity() const { return capacity_; }
+    std::uint32_t max_capacity() const { return max_capacity_; }
+    std::uint32_t sample_capacity() const { return sample_capacity_; }
+    const gl::Buffer& records() const { return records_; }
+    const gl::Buffer& command() const { return command_; }
+    const gl::Buffer& samples() const { return samples_; }
+    const gl::Buffer& spans() const { return spans_; }
+
+private:
+    gl::Buffer records_;
+    gl::Buffer command_;
+    gl::Buffer kept_count_;
+    gl::Buffer samples_;  // one uint per spine sample: 1 visible, 0 hidden
+    gl::Buffer spans_;    // per record: 2 uvec4, sampled stretch, first and last visible sample, count
+    std::uint32_t capacity_ = 0;
+    std::uint32_t max_capacity_ = 0;
+    std::uint32_t sample_capacity_ = 0;
+    std::uint32_t max_samples_ = 0;
+    bool has_previous_ = false;
+    mutable std::optional<EdgeDrawCommand> previous_;  // kept_count_ as read back
+};
+
+}  // namespace bz::render
