@@ -49,7 +49,11 @@ struct Renderer::Impl {
     bool edges_filled_last_frame = false;
 
     Impl(const RenderSettings& s, int w, int h, gl::TimingMethod timing)
-        : settings(s), frame_settings(s), width(std::max(w, 1)), height(std::max(h, 1)), timer(timing) {
+        : settings(s),
+          frame_settings(s),
+          width(std::max(w, 1)),
+          height(std::max(h, 1)),
+          timer(timing) {
         programs = load_programs(settings);
         targets = make_targets(width, height, settings);
         hud_vao.bind_buffer(0, hud_vertices, sizeof(float) * 6);
@@ -100,7 +104,8 @@ struct Renderer::Impl {
     // frame's passes fill the edge buffer (frame_passes.h).
     void choose_line_method(const FrameBatches& batches, const StyleDef& style,
                             bool (*fills_edges)(const StyleDef&, const RenderSettings&)) {
-        frame_settings.method = resolve_line_method(settings.method, batches.stats.triangles_submitted);
+        frame_settings.method =
+            resolve_line_method(settings.method, batches.stats.triangles_submitted);
         const bool fills = fills_edges(style, frame_settings);
         if (fills && !edges_filled_last_frame) edges.forget_previous();
         edges_filled_last_frame = fills;

@@ -35,7 +35,8 @@ const std::vector<LineMethod>& feature_line_methods() {
 
 LineMethod resolve_line_method(LineMethod method, std::size_t triangles_submitted) {
     if (method != LineMethod::automatic) return method;
-    return triangles_submitted >= kAutoComputeFromTriangles ? LineMethod::compute : LineMethod::geometry_shader;
+    return triangles_submitted >= kAutoComputeFromTriangles ? LineMethod::compute
+                                                            : LineMethod::geometry_shader;
 }
 
 RenderSettings preset(std::string_view name) {

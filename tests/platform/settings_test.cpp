@@ -118,8 +118,8 @@ TEST(Settings, LineMethodTakesAutoAndReportsABadOneAtItsPosition) {
 
     const SettingsLoad bad = parse("volume = 0.5\nline_method = \"automatic\"\n");
     ASSERT_EQ(bad.errors.size(), 1u);
-    EXPECT_EQ(bad.errors.front().rfind("settings.toml:2:15: error: line_method must be one of ", 0), 0u)
-        << bad.errors.front();
+    const std::string& e = bad.errors.front();
+    EXPECT_EQ(e.rfind("settings.toml:2:15: error: line_method must be one of ", 0), 0u) << e;
     EXPECT_NE(bad.errors.front().find("\"auto\""), std::string::npos) << bad.errors.front();
     EXPECT_EQ(bad.settings.line_method, Settings{}.line_method);
 }

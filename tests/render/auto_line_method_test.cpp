@@ -6,10 +6,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
 #include <string>
 #include <vector>
-
-#include <glm/gtc/matrix_transform.hpp>
 
 #include "core/error.h"
 #include "geometry/generated/primitives.h"
@@ -23,11 +22,15 @@ TEST(AutoLineMethod, ResolvesByTheTrianglesAFrameSubmits) {
     using bz::render::kAutoComputeFromTriangles;
     using bz::render::resolve_line_method;
     EXPECT_EQ(resolve_line_method(LineMethod::automatic, 0), LineMethod::geometry_shader);
-    EXPECT_EQ(resolve_line_method(LineMethod::automatic, kAutoComputeFromTriangles - 1), LineMethod::geometry_shader);
-    EXPECT_EQ(resolve_line_method(LineMethod::automatic, kAutoComputeFromTriangles), LineMethod::compute);
-    EXPECT_EQ(resolve_line_method(LineMethod::automatic, 10 * kAutoComputeFromTriangles), LineMethod::compute);
+    EXPECT_EQ(resolve_line_method(LineMethod::automatic, kAutoComputeFromTriangles - 1),
+              LineMethod::geometry_shader);
+    EXPECT_EQ(resolve_line_method(LineMethod::automatic, kAutoComputeFromTriangles),
+              LineMethod::compute);
+    EXPECT_EQ(resolve_line_method(LineMethod::automatic, 10 * kAutoComputeFromTriangles),
+              LineMethod::compute);
     // A method given outright stays, whatever the frame.
-    for (const LineMethod m : {LineMethod::compute, LineMethod::geometry_shader, LineMethod::image_outline}) {
+    for (const LineMethod m :
+         {LineMethod::compute, LineMethod::geometry_shader, LineMethod::image_outline}) {
         EXPECT_EQ(resolve_line_method(m, 0), m);
         EXPECT_EQ(resolve_line_method(m, 10 * kAutoComputeFromTriangles), m);
     }
@@ -40,7 +43,8 @@ TEST(AutoLineMethod, ParsesAutoAndNamesIt) {
         bz::render::parse_line_method("automatic");
         ADD_FAILURE() << "no error for 'automatic'";
     } catch (const bz::UserError& e) {
-        EXPECT_NE(std::string(e.what()).find("unknown line method 'automatic'"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("unknown line method 'automatic'"), std::string::npos)
+            << e.what();
         EXPECT_NE(std::string(e.what()).find("auto"), std::string::npos) << e.what();
     }
     // auto is no third set of lines: the feature-line methods stay the two it picks from.
@@ -51,7 +55,7 @@ TEST(AutoLineMethod, ParsesAutoAndNamesIt) {
 namespace {
 
 class AutoLineMethodTest : public RenderTest {
-protected:
+  protected:
     void SetUp() override {
         RenderTest::SetUp();
         settings = bz::render::preset("balanced");
@@ -82,8 +86,10 @@ protected:
         for (int i = 0; i < side * side; ++i) {
             bz::scene::DrawItem item;
             item.mesh = sphere_;
-            const glm::dvec3 at((i % side - (side - 1) * 0.5) * 1.0, 0.0, (i / side - (side - 1) * 0.5) * 1.0);
-            item.model = glm::rotate(glm::translate(glm::dmat4(1.0), at), turn + i, glm::dvec3(0.0, 1.0, 0.0));
+            const glm::dvec3 at((i % side - (side - 1) * 0.5) * 1.0, 0.0,
+                                (i / side - (side - 1) * 0.5) * 1.0);
+            item.model = glm::rotate(glm::translate(glm::dmat4(1.0), at), turn + i,
+                                     glm::dvec3(0.0, 1.0, 0.0));
             f.items.push_back(item);
         }
         f.camera.eye = {0.0, 1.2 * side, 1.6 * side};
@@ -145,9 +151,9 @@ TEST_F(AutoLineMethodTest, PicksTheGeometryShaderBelowTheThresholdAndComputeFrom
 TEST_F(AutoLineMethodTest, FramesCrossingTheThresholdLookAsTheMethodItPickedDrawsThem) {
     // Small and large frames in turn: auto switches method every frame. Each frame must be the
     // picture of the method it picked, drawn by a renderer that used that method all along.
-    const std::vector<bz::scene::FrameList> frames = {small_frame(0.0), large_frame(0.0), small_frame(0.3),
-                                                      large_frame(0.5), large_frame(0.9), small_frame(0.6),
-                                                      small_frame(0.7), large_frame(1.3)};
+    const std::vector<bz::scene::FrameList> frames = {
+        small_frame(0.0), large_frame(0.0), small_frame(0.3), large_frame(0.5),
+        large_frame(0.9), small_frame(0.6), small_frame(0.7), large_frame(1.3)};
     bz::render::RenderSettings s = settings;
     s.method = LineMethod::automatic;
     Renderer automatic(s, kWidth, kHeight, bz::gl::TimingMethod::off);
@@ -164,11 +170,12 @@ TEST_F(AutoLineMethodTest, FramesCrossingTheThresholdLookAsTheMethodItPickedDraw
         const std::vector<std::uint8_t> c = draw(compute, frames[i], meshes);
         const std::vector<std::uint8_t> g = draw(geometry, frames[i], meshes);
         const bool large = i == 1 || i == 3 || i == 4 || i == 7;
-        ASSERT_EQ(automatic.line_method_drawn(), large ? LineMethod::compute : LineMethod::geometry_shader);
+        ASSERT_EQ(automatic.line_method_drawn(),
+                  large ? LineMethod::compute : LineMethod::geometry_shader);
         const std::vector<std::uint8_t>& expected = large ? c : g;
         (large ? picked_compute : picked_geometry) += 1;
-        EXPECT_TRUE(a == expected) << "auto's frame differs from " << (large ? "compute" : "geometry_shader")
-                                   << "'s";
+        EXPECT_TRUE(a == expected)
+            << "auto's frame differs from " << (large ? "compute" : "geometry_shader") << "'s";
         const auto lit = std::count_if(a.begin(), a.end(), [](std::uint8_t v) { return v > 64; });
         EXPECT_GT(lit, 100) << "the frame shows no lines";
     }
@@ -176,7 +183,8 @@ TEST_F(AutoLineMethodTest, FramesCrossingTheThresholdLookAsTheMethodItPickedDraw
     EXPECT_EQ(picked_geometry, 4);
 }
 
-TEST_F(AutoLineMethodTest, AComputeFrameAfterGeometryShaderFramesSizesTheEdgeBufferFromItsOwnCounts) {
+TEST_F(AutoLineMethodTest,
+       AComputeFrameAfterGeometryShaderFramesSizesTheEdgeBufferFromItsOwnCounts) {
     // The edge buffer sizes a frame's records and spine samples from the frame before. After
     // frames the geometry shader drew, the counts it kept belong to an older, smaller frame:
     // a large frame sized from them would outgrow its spine samples and test the records left
@@ -205,6 +213,7 @@ TEST_F(AutoLineMethodTest, AComputeFrameAfterGeometryShaderFramesSizesTheEdgeBuf
     s.method = LineMethod::compute;
     Renderer fresh(s, kWidth, kHeight, bz::gl::TimingMethod::off);
     const std::vector<std::uint8_t> first = draw(fresh, dense, meshes);
-    EXPECT_TRUE(a == first) << "the dense frame after a geometry-shader frame differs from a compute "
-                               "renderer's first frame of it";
+    EXPECT_TRUE(a == first)
+        << "the dense frame after a geometry-shader frame differs from a compute "
+           "renderer's first frame of it";
 }

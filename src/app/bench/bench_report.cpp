@@ -167,8 +167,9 @@ Json run_json(const RunResult& r) {
     scene["triangles_submitted_max"] =
         max_of(r.frames, [](const FrameRecord& f) { return f.stats.triangles_submitted; });
     // Under LineMethod::automatic: the share of frames it drew with the compute method.
-    scene["compute_line_method_share"] = mean_of(
-        r.frames, [](const FrameRecord& f) { return f.stats.line_method == render::LineMethod::compute ? 1 : 0; });
+    scene["compute_line_method_share"] = mean_of(r.frames, [](const FrameRecord& f) {
+        return f.stats.line_method == render::LineMethod::compute ? 1 : 0;
+    });
     scene["feature_edges_mean"] =
         mean_of(r.frames, [](const FrameRecord& f) { return f.stats.feature_edges; });
     scene["feature_edges_max"] =
@@ -210,7 +211,8 @@ void print_summary_table(std::FILE* out, const BenchMeta& m, const std::vector<R
             mean_of(r.frames, [](const FrameRecord& f) { return f.stats.objects_culled; });
         const double edges =
             mean_of(r.frames, [](const FrameRecord& f) { return f.stats.feature_edges; });
-        std::fprintf(out, " | objects %.0f drawn %.0f culled, %.0f feature edges", drawn, culled, edges);
+        std::fprintf(out, " | objects %.0f drawn %.0f culled, %.0f feature edges", drawn, culled,
+                     edges);
         if (r.settings.method == render::LineMethod::automatic) {
             const double compute = mean_of(r.frames, [](const FrameRecord& f) {
                 return f.stats.line_method == render::LineMethod::compute ? 1 : 0;
