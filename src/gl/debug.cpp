@@ -41,7 +41,8 @@ void DebugSink::on_message(GLenum, GLenum type, GLuint id, GLenum severity, cons
     if (echo_ && (is_error || severity != GL_DEBUG_SEVERITY_LOW)) {
         std::fprintf(stderr, "beamzone: %s\n", line.c_str());
     }
-    if (messages_.size() < 256) messages_.push_back(std::move(line));
+    std::vector<std::string>& kept = type == GL_DEBUG_TYPE_PERFORMANCE && !is_error ? hints_ : messages_;
+    if (kept.size() < 256) kept.push_back(std::move(line));
 }
 
 }  // namespace bz::gl

@@ -6,6 +6,7 @@
 #include <cstring>
 
 #include "core/error.h"
+#include "gl/driver.h"
 #include "gl/gl.h"
 
 namespace bz::platform {
@@ -66,10 +67,7 @@ GlContext::~GlContext() {
     if (window_) SDL_DestroyWindow(window_);
 }
 
-std::string GlContext::renderer_name() const {
-    const auto* r = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-    return r ? r : "unknown";
-}
+std::string GlContext::renderer_name() const { return gl::renderer_name(); }
 
 std::string start_video() {
     init_video();
@@ -81,11 +79,7 @@ bool is_invisible_driver(const std::string& driver) {
     return driver == "offscreen" || driver == "dummy" || driver == "evdev";
 }
 
-bool GlContext::is_software() const {
-    const std::string r = renderer_name();
-    return r.find("llvmpipe") != std::string::npos || r.find("softpipe") != std::string::npos ||
-           r.find("Software") != std::string::npos;
-}
+bool GlContext::is_software() const { return gl::is_software_renderer(); }
 
 void GlContext::drawable_size(int& w, int& h) const {
     SDL_GL_GetDrawableSize(window_, &w, &h);

@@ -4,18 +4,20 @@ namespace bz::render {
 
 namespace {
 
-// The beam line pass; with count_edges it also counts the emitted feature edges.
+bool counting_edges(const PassContext& ctx) {
+    return ctx.settings.count_edges && ctx.stats && ctx.edge_counter;
+}
+
+// The beam line pass; with count_edges it also counts the emitted feature edges (read back
+// late, EdgeCounter).
 void lines_counted(const PassContext& ctx) {
-    if (!ctx.settings.count_edges || !ctx.stats) {
+    if (!counting_edges(ctx)) {
         pass_lines(ctx, false);
         return;
     }
-    glBeginQuery(GL_PRIMITIVES_GENERATED, ctx.edge_query);
+    ctx.edge_counter->begin_primitives();
     pass_lines(ctx, false);
-    glEndQuery(GL_PRIMITIVES_GENERATED);
-    GLuint64 prims = 0;
-    glGetQueryObjectui64v(ctx.edge_query, GL_QUERY_RESULT, &prims);
-    ctx.stats->feature_edges = static_cast<std::size_t>(prims / 2);  // two triangles per quad
+    ctx.edge_counter->end_primitives();
 }
 
 // The edge buffer filled completely: grown and filled again when a frame appended more
@@ -44,17 +46,17 @@ void edges_sized(const PassContext& ctx) {
     }
 }
 
-// The edge extraction; with count_edges it also reads back how many records it appended.
+// The edge extraction; with count_edges it also counts the records it appended.
 void edges_counted(const PassContext& ctx) {
     pass_edges(ctx);
-    if (ctx.settings.count_edges && ctx.stats) ctx.stats->feature_edges = ctx.edges.appended();
+    if (counting_edges(ctx)) ctx.edge_counter->count_records(ctx.edges.command());
 }
 
 // LineMethod::compute's line pass: one quad per edge-buffer record; with count_edges it also
-// reads back how many records the edges pass appended (waits for it, so only on request).
+// counts the records the edges pass appended.
 void edge_quads_counted(const PassContext& ctx) {
     pass_edge_quads(ctx, false);
-    if (ctx.settings.count_edges && ctx.stats) ctx.stats->feature_edges = ctx.edges.appended();
+    if (counting_edges(ctx)) ctx.edge_counter->count_records(ctx.edges.command());
 }
 
 void edge_quads_mask(const PassContext& ctx) { pass_edge_quads(ctx, true); }

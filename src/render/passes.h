@@ -9,6 +9,7 @@
 #include "gl/state.h"
 #include "gl/vertex_array.h"
 #include "render/gpu_scene/batches.h"
+#include "render/lines/edge_counter.h"
 #include "render/lines/edge_storage.h"
 #include "render/programs.h"
 #include "render/styles/style_def.h"
@@ -57,7 +58,7 @@ struct PassContext {
     GLsizei hud_vertex_count = 0;
     GLuint target_fbo = 0;                // where composite writes
     FrameStats* stats = nullptr;          // passes that count something add it here
-    GLuint edge_query = 0;                // GL_PRIMITIVES_GENERATED query for count_edges
+    EdgeCounter* edge_counter = nullptr;  // feature edges, when count_edges is on (edge_counter.h)
     FramePicture* picture = nullptr;      // the picture phosphor, bloom and composite pass on
     std::uint32_t seed = 0;               // the frame's beam flicker seed (FrameList::seed)
     // Pixel rows from the bottom that the scene's lines may light (FrameList::view_top); the

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "gl/driver.h"
 #include "render/frame_passes.h"
 
 namespace bz::render {
@@ -39,7 +40,8 @@ struct Renderer::Impl {
     gl::VertexArray hud_vao;
     FrameStats stats;
     GLuint last_target = 0;
-    GLuint edge_query = 0;
+    // Feature edges per frame, read back as late as the pass times (no mid-frame wait).
+    EdgeCounter edge_counter;
     // The picture bloom and composite read last frame (the lines target, or a phosphor
     // texture), and when that frame was shown, for phosphor decay and frame holding.
     const gl::Texture2D* last_picture = nullptr;
@@ -47,22 +49,23 @@ struct Renderer::Impl {
     // Whether the last frame filled the edge buffer. A frame the geometry shader drew under
     // LineMethod::automatic leaves it as an older frame filled it: its kept counts are stale.
     bool edges_filled_last_frame = false;
+    // Software rasteriser (llvmpipe) or hardware GPU: LineMethod::automatic picks by it.
+    const bool software = gl::is_software_renderer();
 
     Impl(const RenderSettings& s, int w, int h, gl::TimingMethod timing)
         : settings(s),
           frame_settings(s),
           width(std::max(w, 1)),
           height(std::max(h, 1)),
-          timer(timing) {
+          timer(timing),
+          edge_counter(timer.latency()) {
         programs = load_programs(settings);
         targets = make_targets(width, height, settings);
         hud_vao.bind_buffer(0, hud_vertices, sizeof(float) * 6);
         hud_vao.float_attribute(0, 0, 2, 0);
         hud_vao.float_attribute(1, 0, 3, sizeof(float) * 2);
         hud_vao.float_attribute(2, 0, 1, sizeof(float) * 5);
-        glGenQueries(1, &edge_query);
     }
-    ~Impl() { glDeleteQueries(1, &edge_query); }
 
     const StyleDef& style_of(const scene::FrameList& frame) const {
         return style_def(settings.style ? *settings.style : frame.style);
@@ -76,7 +79,7 @@ struct Renderer::Impl {
                            batches,   cam,      frame_settings, style.hidden_lines_removed,
                            empty_vao, instances, edges,     style,
                            style_textures, hud_vao, hud_count, target,
-                           &stats,    edge_query, picture, frame.seed,
+                           &stats,    &edge_counter, picture, frame.seed,
                            view_rows};
     }
 
@@ -105,7 +108,7 @@ struct Renderer::Impl {
     void choose_line_method(const FrameBatches& batches, const StyleDef& style,
                             bool (*fills_edges)(const StyleDef&, const RenderSettings&)) {
         frame_settings.method =
-            resolve_line_method(settings.method, batches.stats.triangles_submitted);
+            resolve_line_method(settings.method, batches.stats.triangles_submitted, software);
         const bool fills = fills_edges(style, frame_settings);
         if (fills && !edges_filled_last_frame) edges.forget_previous();
         edges_filled_last_frame = fills;
@@ -180,10 +183,12 @@ void Renderer::render(const scene::FrameList& frame, const scene::MeshLibrary& m
         const FrameBatches none;
         const PassContext ctx = m.context(meshes, none, cam, m.style_of(frame), 0, held_target, frame, nullptr);
         m.timer.begin_frame();
+        m.edge_counter.begin_frame();
         m.timer.begin("composite");
         pass_composite(ctx, *m.last_picture, m.settings.bloom_strength > 0.0f, held_target, m.width, m.height);
         m.timer.end();
         m.timer.end_frame();
+        m.stats.feature_edges = m.edge_counter.end_frame();  // a held frame draws none itself
         return;
     }
     const CameraMatrices cam = m.camera(frame);
@@ -202,12 +207,14 @@ void Renderer::render(const scene::FrameList& frame, const scene::MeshLibrary& m
 
     // The frame is the style's list of passes (frame_passes.cpp), each timed under its name.
     m.timer.begin_frame();
+    m.edge_counter.begin_frame();
     for (const FramePass& pass : frame_passes(style, m.frame_settings)) {
         m.timer.begin(pass.name);
         pass.run(ctx);
         m.timer.end();
     }
     m.timer.end_frame();
+    m.stats.feature_edges = m.edge_counter.end_frame();
     // Only the beam styles' pictures can be held and shown again (pass_composite).
     m.last_picture = style.fill == FillPass::none ? picture.texture : nullptr;
     m.last_time_s = frame.time_s;

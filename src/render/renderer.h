@@ -18,7 +18,10 @@ struct FrameStats {
     std::size_t objects_drawn = 0;
     std::size_t objects_culled = 0;
     std::size_t triangles_submitted = 0;
-    std::size_t feature_edges = 0;  // counted only when RenderSettings::count_edges is on
+    // Counted only when RenderSettings::count_edges is on, and read back as late as the pass
+    // times (EdgeCounter): after render(), the count of the frame pass_times_latency() frames
+    // ago (the frame itself with cpu_finish timing or none).
+    std::size_t feature_edges = 0;
     // The method that drew the frame's lines: LineMethod::automatic's choice for it.
     LineMethod line_method = kDefaultLineMethod;
 };

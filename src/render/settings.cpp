@@ -33,8 +33,10 @@ const std::vector<LineMethod>& feature_line_methods() {
     return methods;
 }
 
-LineMethod resolve_line_method(LineMethod method, std::size_t triangles_submitted) {
+LineMethod resolve_line_method(LineMethod method, std::size_t triangles_submitted,
+                               bool software_rasteriser) {
     if (method != LineMethod::automatic) return method;
+    if (!software_rasteriser) return LineMethod::compute;
     return triangles_submitted >= kAutoComputeFromTriangles ? LineMethod::compute
                                                             : LineMethod::geometry_shader;
 }

@@ -35,21 +35,24 @@ const char* line_method_name(LineMethod method);
 // which draws each frame with one of these two).
 const std::vector<LineMethod>& feature_line_methods();
 
-// LineMethod::automatic draws a frame with the compute method from this many submitted
-// triangles (after culling and LOD, FrameStats::triangles_submitted) and with the geometry
-// shader below. The compute path has fixed per-frame costs (dispatches, counters, the
-// visibility pass, an indirect draw) but scales with llvmpipe's threads; the geometry shader
-// runs on one thread at a cost per triangle. Measured on llvmpipe: see the README's "line
-// methods".
+// LineMethod::automatic on a software rasteriser (llvmpipe) draws a frame with the compute
+// method from this many submitted triangles (after culling and LOD,
+// FrameStats::triangles_submitted) and with the geometry shader below. The compute path has
+// fixed per-frame costs (dispatches, counters, the visibility pass, an indirect draw) but
+// scales with llvmpipe's threads; the geometry shader runs on one thread at a cost per
+// triangle. On a hardware GPU auto always draws with compute: on an NVIDIA H100 it was the
+// faster method at every size measured, the 468-triangle classic level included. Measured:
+// see the README's "line methods".
 inline constexpr std::size_t kAutoComputeFromTriangles = 4000;
 // The method that draws a frame of `triangles_submitted` triangles: `method` itself unless it
-// is LineMethod::automatic. Depends on the frame's content only, never on timings, so the same
-// frame always gets the same method.
-LineMethod resolve_line_method(LineMethod method, std::size_t triangles_submitted);
+// is LineMethod::automatic. Depends on the frame's content and the renderer only, never on
+// timings, so the same frame on the same machine always gets the same method.
+LineMethod resolve_line_method(LineMethod method, std::size_t triangles_submitted,
+                               bool software_rasteriser);
 
 // The method presets use: auto, which on llvmpipe is as fast as the geometry shader on small
-// game frames and as the compute method on large scenes; see the README's "line methods" for
-// the measurements behind it.
+// game frames and as the compute method on large scenes, and on a hardware GPU is the compute
+// method; see the README's "line methods" for the measurements behind it.
 inline constexpr LineMethod kDefaultLineMethod = LineMethod::automatic;
 
 // The vector beam: how a line's intensity becomes width and brightness, how lines combine,

@@ -12,27 +12,45 @@
 
 #include "core/error.h"
 #include "geometry/generated/primitives.h"
+#include "gl/driver.h"
 #include "render/render_fixture.h"
 
 using bz::render::LineMethod;
 using bz::render::Renderer;
 using bz::test::RenderTest;
 
-TEST(AutoLineMethod, ResolvesByTheTrianglesAFrameSubmits) {
+TEST(AutoLineMethod, ResolvesByTheTrianglesAFrameSubmitsOnASoftwareRasteriser) {
     using bz::render::kAutoComputeFromTriangles;
     using bz::render::resolve_line_method;
-    EXPECT_EQ(resolve_line_method(LineMethod::automatic, 0), LineMethod::geometry_shader);
-    EXPECT_EQ(resolve_line_method(LineMethod::automatic, kAutoComputeFromTriangles - 1),
+    constexpr bool kSoftware = true;
+    EXPECT_EQ(resolve_line_method(LineMethod::automatic, 0, kSoftware),
               LineMethod::geometry_shader);
-    EXPECT_EQ(resolve_line_method(LineMethod::automatic, kAutoComputeFromTriangles),
+    EXPECT_EQ(resolve_line_method(LineMethod::automatic, kAutoComputeFromTriangles - 1, kSoftware),
+              LineMethod::geometry_shader);
+    EXPECT_EQ(resolve_line_method(LineMethod::automatic, kAutoComputeFromTriangles, kSoftware),
               LineMethod::compute);
-    EXPECT_EQ(resolve_line_method(LineMethod::automatic, 10 * kAutoComputeFromTriangles),
+    EXPECT_EQ(resolve_line_method(LineMethod::automatic, 10 * kAutoComputeFromTriangles, kSoftware),
               LineMethod::compute);
-    // A method given outright stays, whatever the frame.
+    // A method given outright stays, whatever the frame and the machine.
     for (const LineMethod m :
          {LineMethod::compute, LineMethod::geometry_shader, LineMethod::image_outline}) {
-        EXPECT_EQ(resolve_line_method(m, 0), m);
-        EXPECT_EQ(resolve_line_method(m, 10 * kAutoComputeFromTriangles), m);
+        for (const bool software : {true, false}) {
+            EXPECT_EQ(resolve_line_method(m, 0, software), m);
+            EXPECT_EQ(resolve_line_method(m, 10 * kAutoComputeFromTriangles, software), m);
+        }
+    }
+}
+
+TEST(AutoLineMethod, DrawsWithComputeAtEverySizeOnAHardwareGpu) {
+    using bz::render::kAutoComputeFromTriangles;
+    using bz::render::resolve_line_method;
+    constexpr bool kHardware = false;
+    for (const std::size_t triangles :
+         {std::size_t{0}, std::size_t{12}, kAutoComputeFromTriangles - 1, kAutoComputeFromTriangles,
+          10 * kAutoComputeFromTriangles}) {
+        EXPECT_EQ(resolve_line_method(LineMethod::automatic, triangles, kHardware),
+                  LineMethod::compute)
+            << triangles << " triangles";
     }
 }
 
@@ -124,14 +142,17 @@ TEST_F(AutoLineMethodTest, PicksTheGeometryShaderBelowTheThresholdAndComputeFrom
     settings.method = LineMethod::automatic;
     Renderer r(settings, kWidth, kHeight, bz::gl::TimingMethod::cpu_finish);
 
+    // On a hardware GPU auto draws every frame with compute (resolve_line_method).
+    const LineMethod small_method =
+        bz::gl::is_software_renderer() ? LineMethod::geometry_shader : LineMethod::compute;
     r.render(small_frame(0.0), meshes, Renderer::kOffscreen);
     EXPECT_LT(r.stats().triangles_submitted, bz::render::kAutoComputeFromTriangles);
-    EXPECT_EQ(r.line_method_drawn(), LineMethod::geometry_shader);
+    EXPECT_EQ(r.line_method_drawn(), small_method);
     EXPECT_EQ(r.settings().method, LineMethod::automatic);  // the setting stays auto
     std::vector<std::string> names = pass_names(r);
     EXPECT_TRUE(has(names, "lines"));
-    EXPECT_FALSE(has(names, "edges"));
-    EXPECT_FALSE(has(names, "visibility"));
+    EXPECT_EQ(has(names, "edges"), small_method == LineMethod::compute);
+    EXPECT_EQ(has(names, "visibility"), small_method == LineMethod::compute);
 
     r.render(large_frame(0.0), meshes, Renderer::kOffscreen);
     EXPECT_GE(r.stats().triangles_submitted, bz::render::kAutoComputeFromTriangles);
@@ -143,7 +164,7 @@ TEST_F(AutoLineMethodTest, PicksTheGeometryShaderBelowTheThresholdAndComputeFrom
 
     // The mask picks the same way.
     r.render_mask(small_frame(0.0), meshes);
-    EXPECT_EQ(r.line_method_drawn(), LineMethod::geometry_shader);
+    EXPECT_EQ(r.line_method_drawn(), small_method);
     r.render_mask(large_frame(0.0), meshes);
     EXPECT_EQ(r.line_method_drawn(), LineMethod::compute);
 }
@@ -151,6 +172,11 @@ TEST_F(AutoLineMethodTest, PicksTheGeometryShaderBelowTheThresholdAndComputeFrom
 TEST_F(AutoLineMethodTest, FramesCrossingTheThresholdLookAsTheMethodItPickedDrawsThem) {
     // Small and large frames in turn: auto switches method every frame. Each frame must be the
     // picture of the method it picked, drawn by a renderer that used that method all along.
+    if (!bz::gl::is_software_renderer()) {
+        GTEST_SKIP()
+            << "auto switches methods only on a software rasteriser; on a hardware GPU "
+               "it draws every frame with compute (DrawsWithComputeAtEverySizeOnAHardwareGpu)";
+    }
     const std::vector<bz::scene::FrameList> frames = {
         small_frame(0.0), large_frame(0.0), small_frame(0.3), large_frame(0.5),
         large_frame(0.9), small_frame(0.6), small_frame(0.7), large_frame(1.3)};
@@ -191,6 +217,11 @@ TEST_F(AutoLineMethodTest,
     // without samples per fragment, which differs from the samples where the spine test is a
     // tie. It must be drawn as a compute renderer's first frame of it is: sized from its own
     // counts.
+    if (!bz::gl::is_software_renderer()) {
+        GTEST_SKIP()
+            << "auto switches methods only on a software rasteriser; on a hardware GPU "
+               "it draws every frame with compute (DrawsWithComputeAtEverySizeOnAHardwareGpu)";
+    }
     bz::scene::FrameList dense = frame;
     dense.items.clear();
     bz::scene::DrawItem item;

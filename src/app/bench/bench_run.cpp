@@ -69,6 +69,8 @@ void run_chunk(render::Renderer& r, const BenchFrames& bf, const scene::MeshLibr
         const int reported = k - latency;  // the timed frame whose pass times just arrived
         if (i - latency >= bf.warmup + first && i - latency < end) {
             FrameRecord& rec = run.frames[static_cast<std::size_t>(reported)];
+            // Its feature-edge count arrives with them (render::EdgeCounter, same latency).
+            rec.stats.feature_edges = r.stats().feature_edges;
             for (const gl::PassTime& p : r.pass_times()) {
                 const std::size_t c = column(run.pass_names, p.name);
                 if (rec.pass_ms.size() <= c) rec.pass_ms.resize(c + 1, -1.0);

@@ -462,8 +462,9 @@ class Loop {
 
     void collect_gl_messages() {
         auto& sink = p_.context.debug();
-        if (sink.messages().empty() && sink.error_count() == 0) return;
+        if (sink.messages().empty() && sink.performance_hints().empty() && sink.error_count() == 0) return;
         for (const auto& m : sink.messages()) p_.log.warn("GL: " + m);
+        for (const auto& m : sink.performance_hints()) p_.log.info("GL: " + m);
         result_.gl_errors += sink.error_count();
         sink.clear();
     }

@@ -24,6 +24,7 @@ EdgeStorage::EdgeStorage() {
     const EdgeDrawCommand cmd;
     command_.set_data(&cmd, sizeof(cmd), GL_DYNAMIC_DRAW);
     kept_count_.set_data(&cmd, sizeof(cmd), GL_DYNAMIC_READ);
+    readback_.set_data(&cmd, sizeof(cmd), GL_DYNAMIC_READ);
     reserve(1024);
     reserve_samples(std::size_t{1} << 18);
 }
@@ -48,17 +49,19 @@ void EdgeStorage::reset() {
     glNamedBufferSubData(command_.id(), 0, sizeof(cmd), &cmd);
 }
 
-std::size_t EdgeStorage::appended() const {
-    std::uint32_t vertices = 0;
-    glGetNamedBufferSubData(command_.id(), 0, sizeof(vertices), &vertices);
-    return vertices / kVerticesPerEdge;
+// The counts are copied into a small buffer meant for reading and read from there: reading
+// the draw command itself makes a hardware driver move it, and the shader atomics on it, out of
+// video memory into host memory (NVIDIA says so in a KHR_debug performance message).
+EdgeDrawCommand EdgeStorage::read_now() const {
+    glCopyNamedBufferSubData(command_.id(), readback_.id(), 0, 0, sizeof(EdgeDrawCommand));
+    EdgeDrawCommand cmd;
+    glGetNamedBufferSubData(readback_.id(), 0, sizeof(cmd), &cmd);
+    return cmd;
 }
 
-std::size_t EdgeStorage::samples_used() const {
-    std::uint32_t used = 0;
-    glGetNamedBufferSubData(command_.id(), offsetof(EdgeDrawCommand, samples_used), sizeof(used), &used);
-    return used;
-}
+std::size_t EdgeStorage::appended() const { return read_now().vertex_count / kVerticesPerEdge; }
+
+std::size_t EdgeStorage::samples_used() const { return read_now().samples_used; }
 
 void EdgeStorage::keep_count() {
     has_previous_ = true;

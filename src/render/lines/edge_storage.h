@@ -48,9 +48,12 @@ public:
     const gl::Buffer& spans() const { return spans_; }
 
 private:
+    EdgeDrawCommand read_now() const;
+
     gl::Buffer records_;
     gl::Buffer command_;
     gl::Buffer kept_count_;
+    gl::Buffer readback_;  // appended() and samples_used() read the counters from here
     gl::Buffer samples_;  // one uint per spine sample: 1 visible, 0 hidden
     gl::Buffer spans_;    // per record: 2 uvec4, sampled stretch, first and last visible sample, count
     std::uint32_t capacity_ = 0;
