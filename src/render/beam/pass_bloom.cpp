@@ -12,7 +12,9 @@ void first_downsample(const PassContext& ctx, const gl::Texture2D& source,
     (phosphor ? t.first_down_phosphor_fbo[static_cast<std::size_t>(phosphor->block_to)]
               : t.first_down_fbo)
         .bind();
-    const gl::Program& down = phosphor ? ctx.programs.bloom_down_phosphor : ctx.programs.bloom_down;
+    const gl::Program& down = phosphor
+                                  ? ctx.programs.bloom_down_phosphor[phosphor->power_law ? 1 : 0]
+                                  : ctx.programs.bloom_down;
     down.use();
     down.set("u_source", 0);
     down.set("u_factor", static_cast<int>(ctx.settings.bloom_resolution));

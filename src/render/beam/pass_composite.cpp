@@ -18,9 +18,10 @@ void pass_composite(const PassContext& ctx, const gl::Texture2D& picture, bool b
     glViewport(0, 0, width, height);
     gl::apply(gl::PipelineState{});
     const Programs& programs = ctx.programs;
+    const std::size_t decay = phosphor && phosphor->power_law ? 1 : 0;
     const gl::Program& p =
-        sparse ? (phosphor ? programs.composite_tiles_phosphor : programs.composite_tiles)
-               : (phosphor ? programs.composite_phosphor : programs.composite);
+        sparse ? (phosphor ? programs.composite_tiles_phosphor[decay] : programs.composite_tiles)
+               : (phosphor ? programs.composite_phosphor[decay] : programs.composite);
     p.use();
     p.set("u_lines", 0);
     p.set("u_bloom", 1);

@@ -37,7 +37,6 @@ PhosphorStep phosphor_step(const PassContext& ctx, double dt_seconds) {
 
 void set_phosphor_uniforms(const gl::Program& program, const PhosphorStep& step) {
     program.set("u_dt", step.dt);
-    program.set("u_power_law", step.power_law ? 1 : 0);
     program.set("u_exp_factor", step.exp_factor);
     program.set("u_t0_inv", step.t0_inv);
     program.set("u_exponent", step.exponent);
