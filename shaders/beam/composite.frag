@@ -7,15 +7,16 @@
 // It draws either one full-screen triangle or, sparse, one quad per lit screen tile
 // (composite_tiles.vert); positions come from gl_FragCoord so both give the same pixels.
 // With PHOSPHOR it also advances the phosphor: u_lines is this frame's beam image, the
-// picture is max(beam, decayed history) (phosphor.glsl), stored for the next frame.
+// picture is max(beam, decayed history) (phosphor.glsl), updated in place for the next frame.
 #include "bloom_encoding.glsl"
 #ifdef PHOSPHOR
 #include "phosphor.glsl"
 #include "screen_tiles.glsl"
-uniform sampler2D u_history;  // the previous picture
-layout(rgba16f, binding = 0) uniform writeonly image2D u_picture_out;
-// Per screen tile: the stored picture holds light there (cleared before; the sparse
-// composite's tiles.comp reads it for the next two frames).
+// The picture, last frame's on entry. Each invocation reads and writes only its own pixel's
+// texel (one fragment per pixel), so in place is free of hazards.
+layout(rgba16f, binding = 0) uniform image2D u_picture;
+// Per screen tile: the new picture holds light there (cleared before; the sparse composite's
+// tiles.comp reads it next frame).
 layout(r8ui, binding = 1) uniform writeonly uimage2D u_picture_lit;
 #endif
 
@@ -46,8 +47,10 @@ void main() {
     ivec2 px = ivec2(gl_FragCoord.xy);
     vec3 hdr = texelFetch(u_lines, px, 0).rgb;
 #ifdef PHOSPHOR
-    vec4 picture = phosphor_picture(hdr, texelFetch(u_history, px, 0));
-    imageStore(u_picture_out, px, picture);
+    vec4 history = imageLoad(u_picture, px);
+    vec4 picture = phosphor_picture(hdr, history);
+    // A still dark pixel, or a still line, stores nothing.
+    if (picture != history) imageStore(u_picture, px, picture);
     if (phosphor_peak(picture.rgb) > 0.0) imageStore(u_picture_lit, px / kTileSize, uvec4(1u));
     hdr = picture.rgb;
 #endif

@@ -7,7 +7,7 @@
 //   power law:   (1 + t / t0)^-p, which depends on how long ago the pixel was lit: alpha keeps
 //                that age in seconds, and a frame scales by decay(age + dt) / decay(age).
 uniform float u_dt;           // seconds since the previous picture (0: the same instant)
-uniform int u_power_law;      // 0 exponential, 1 power law
+// POWER_LAW (defined by the program, 0 or 1) picks the decay at compile time.
 uniform float u_exp_factor;   // exponential: exp(-dt / tau), computed once on the CPU
 uniform float u_t0_inv;       // power law: 1 / t0
 uniform float u_exponent;     // power law: p
@@ -21,13 +21,13 @@ float phosphor_peak(vec3 c) { return max(c.r, max(c.g, c.b)); }
 vec4 phosphor_picture(vec3 beam, vec4 history) {
     vec3 held;
     float age = history.a + u_dt;
-    if (u_power_law == 0) {
+    if (POWER_LAW == 0) {
         held = history.rgb * u_exp_factor;
     } else {
         held = history.rgb * pow((1.0 + history.a * u_t0_inv) / (1.0 + age * u_t0_inv), u_exponent);
     }
     if (phosphor_peak(held) < kDark) held = vec3(0.0);
-    if (u_power_law == 0) return vec4(max(beam, held), 0.0);
+    if (POWER_LAW == 0) return vec4(max(beam, held), 0.0);
     // The age belongs to one excitation, so the brighter one wins whole.
     return phosphor_peak(beam) >= phosphor_peak(held) ? vec4(beam, 0.0) : vec4(held, age);
 }

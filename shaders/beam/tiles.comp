@@ -4,9 +4,9 @@
 // second output: exact, it averages every picture texel of its block) or when the bilinear
 // footprint of its pixels in the finished bloom holds a non-zero texel. Everything else
 // composites to exact black, which the clear writes for free.
-// With the phosphor, a tile is also shaded where the previous picture is lit (it may still
-// glow) and where the history texture the composite writes now holds a lit picture from the
-// frame before last (it must be overwritten): the composite marks both as it stores them.
+// With the phosphor, a tile is also shaded where the picture held light last frame (it must
+// be decayed, in place): the composite marks those as it stores them, and every other tile
+// of the picture is exactly black, which an unshaded tile leaves as it is.
 #include "screen_tiles.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -14,8 +14,7 @@ uniform sampler2D u_occupancy;  // bloom resolution: > 0 where the block holds l
 uniform sampler2D u_bloom;      // the finished bloom, encoded (bloom_encoding.glsl)
 uniform ivec2 u_screen;         // target size in pixels
 uniform bool u_phosphor;
-uniform usampler2D u_history_lit;  // per tile: the previous picture holds light
-uniform usampler2D u_stale_lit;    // per tile: the history texture written now holds light
+uniform usampler2D u_picture_lit;  // per tile: the picture held light last frame
 layout(r8ui, binding = 0) uniform writeonly uimage2D u_tiles;
 
 // Texels of a `size`-texel image stretched over the screen that pixels [lo, hi] read:
@@ -43,7 +42,7 @@ void main() {
     if (any(greaterThanEqual(tile, imageSize(u_tiles)))) return;
     ivec2 lo = tile * kTileSize;
     ivec2 hi = min(lo + kTileSize, u_screen) - 1;
-    bool lit = (u_phosphor && (texelFetch(u_history_lit, tile, 0).r | texelFetch(u_stale_lit, tile, 0).r) != 0u) ||
+    bool lit = (u_phosphor && texelFetch(u_picture_lit, tile, 0).r != 0u) ||
                any_lit(u_occupancy, texel_span(lo, hi, textureSize(u_occupancy, 0), false)) ||
                any_lit(u_bloom, texel_span(lo, hi, textureSize(u_bloom, 0), true));
     imageStore(u_tiles, tile, uvec4(lit ? 1u : 0u));

@@ -21,8 +21,7 @@ namespace bz::render {
 // One frame's step of phosphor persistence (pass_phosphor.cpp): the bloom's first downsample
 // glows from it and the composite computes and stores the new picture.
 struct PhosphorStep {
-    const gl::Texture2D* history = nullptr;  // the previous picture
-    int to = 0;                              // the history texture the new picture goes into
+    int block_to = 0;  // the block picture (Targets::block_picture) the bloom writes now
     bool power_law = false;
     float dt = 0.0f;          // seconds, capped
     float exp_factor = 1.0f;  // exponential: exp(-dt / tau)
@@ -101,22 +100,24 @@ void pass_hud(const PassContext& ctx);
 // full-screen pass costs per pixel, so the composite computes the new picture where it
 // shades anyway and stores it, and the bloom's first downsample glows from it.
 // phosphor_step sets up one frame's step; set_phosphor_uniforms hands it to a program
-// (shaders/beam/phosphor.glsl); finish_phosphor records the composite's write and returns the
-// new picture.
+// (shaders/beam/phosphor.glsl); finish_phosphor records the bloom's block picture and returns
+// the picture the composite updated in place.
 PhosphorStep phosphor_step(const PassContext& ctx, double dt_seconds);
 void set_phosphor_uniforms(const gl::Program& program, const PhosphorStep& step);
 const gl::Texture2D& finish_phosphor(const PassContext& ctx, const PhosphorStep& step);
-void pass_bloom(const PassContext& ctx, const gl::Texture2D& source, const PhosphorStep* phosphor = nullptr);
+void pass_bloom(const PassContext& ctx, const gl::Texture2D& source,
+                const PhosphorStep* phosphor = nullptr);
 // The weight of one level of the bloom chain (never zero: the chain divides by it).
 float mip_weight(const std::vector<float>& weights, std::size_t level);
 // The screen tiles the sparse composite shades (after bloom; needs Targets::tiles).
 void pass_tiles(const PassContext& ctx);
 // `bloom`: false draws the picture without glow (bloom_out is not read). With bloom and the
 // tiles of pass_tiles it shades only the lit tiles (RenderSettings::sparse_composite).
-// With `phosphor`, `picture` is this frame's beam image and the composite also stores the new
-// phosphor picture.
-void pass_composite(const PassContext& ctx, const gl::Texture2D& picture, bool bloom, GLuint target_fbo,
-                    int width, int height, const PhosphorStep* phosphor = nullptr);
+// With `phosphor`, `picture` is this frame's beam image and the composite also updates the
+// phosphor picture (Targets::phosphor) in place.
+void pass_composite(const PassContext& ctx, const gl::Texture2D& picture, bool bloom,
+                    GLuint target_fbo, int width, int height,
+                    const PhosphorStep* phosphor = nullptr);
 // The image-space outline baseline (LineMethod::image_outline), in place of prepass + lines.
 void pass_outline_prepass(const PassContext& ctx);
 void pass_image_outline(const PassContext& ctx, bool mask_mode);

@@ -24,9 +24,11 @@ std::string glsl_array(const std::vector<float>& v) {
 gl::Program load_bloom_blur(const RenderSettings& settings) {
     const BloomKernel k = bloom_kernel(settings.bloom_taps, settings.bloom_sigma_px);
     const auto dir = shaders_dir();
-    return gl::Program({{GL_VERTEX_SHADER, dir / "fullscreen.vert"}, {GL_FRAGMENT_SHADER, dir / "beam/bloom_blur.frag"}},
-                       {"BLOOM_FETCHES " + std::to_string(k.weights.size()),
-                        "BLOOM_OFFSETS " + glsl_array(k.offsets), "BLOOM_WEIGHTS " + glsl_array(k.weights)});
+    return gl::Program(
+        {{GL_VERTEX_SHADER, dir / "fullscreen.vert"},
+         {GL_FRAGMENT_SHADER, dir / "beam/bloom_blur.frag"}},
+        {"BLOOM_FETCHES " + std::to_string(k.weights.size()),
+         "BLOOM_OFFSETS " + glsl_array(k.offsets), "BLOOM_WEIGHTS " + glsl_array(k.weights)});
 }
 
 Programs load_programs(const RenderSettings& settings) {
@@ -34,17 +36,22 @@ Programs load_programs(const RenderSettings& settings) {
     auto stage = [&](GLenum type, const char* file) { return gl::StageFile{type, dir / file}; };
     Programs p;
     p.prepass = gl::Program({stage(GL_VERTEX_SHADER, "lines/prepass.vert")});
-    p.lines = gl::Program({stage(GL_VERTEX_SHADER, "lines/lines.vert"), stage(GL_GEOMETRY_SHADER, "lines/lines.geom"),
+    p.lines = gl::Program({stage(GL_VERTEX_SHADER, "lines/lines.vert"),
+                           stage(GL_GEOMETRY_SHADER, "lines/lines.geom"),
                            stage(GL_FRAGMENT_SHADER, "lines/lines.frag")});
-    p.mask = gl::Program({stage(GL_VERTEX_SHADER, "lines/lines.vert"), stage(GL_GEOMETRY_SHADER, "lines/lines.geom"),
-                          stage(GL_FRAGMENT_SHADER, "lines/lines.frag")},
-                         {"MASK_MODE 1"});
+    p.mask = gl::Program(
+        {stage(GL_VERTEX_SHADER, "lines/lines.vert"), stage(GL_GEOMETRY_SHADER, "lines/lines.geom"),
+         stage(GL_FRAGMENT_SHADER, "lines/lines.frag")},
+        {"MASK_MODE 1"});
     p.edges = gl::Program({stage(GL_COMPUTE_SHADER, "lines/edges.comp")});
     p.spine_visibility = gl::Program({stage(GL_COMPUTE_SHADER, "lines/spine_visibility.comp")});
-    p.edge_quads = gl::Program({stage(GL_VERTEX_SHADER, "lines/edge_quad.vert"), stage(GL_FRAGMENT_SHADER, "lines/edge_quad.frag")});
-    p.edge_quads_mask = gl::Program(
-        {stage(GL_VERTEX_SHADER, "lines/edge_quad.vert"), stage(GL_FRAGMENT_SHADER, "lines/edge_quad.frag")}, {"MASK_MODE 1"});
-    p.hud = gl::Program({stage(GL_VERTEX_SHADER, "hud/hud.vert"), stage(GL_GEOMETRY_SHADER, "hud/hud.geom"),
+    p.edge_quads = gl::Program({stage(GL_VERTEX_SHADER, "lines/edge_quad.vert"),
+                                stage(GL_FRAGMENT_SHADER, "lines/edge_quad.frag")});
+    p.edge_quads_mask = gl::Program({stage(GL_VERTEX_SHADER, "lines/edge_quad.vert"),
+                                     stage(GL_FRAGMENT_SHADER, "lines/edge_quad.frag")},
+                                    {"MASK_MODE 1"});
+    p.hud = gl::Program({stage(GL_VERTEX_SHADER, "hud/hud.vert"),
+                         stage(GL_GEOMETRY_SHADER, "hud/hud.geom"),
                          stage(GL_FRAGMENT_SHADER, "hud/hud.frag")});
     p.bloom_down = gl::Program({stage(GL_VERTEX_SHADER, "fullscreen.vert"),
                                 stage(GL_FRAGMENT_SHADER, "beam/bloom_down.frag")});
@@ -53,16 +60,25 @@ Programs load_programs(const RenderSettings& settings) {
                                stage(GL_FRAGMENT_SHADER, "beam/composite.frag")});
     const std::string tile_size = "TILE_SIZE " + std::to_string(kScreenTileSize);
     const auto composite = [&](const char* vertex, std::vector<std::string> defines) {
-        return gl::Program({stage(GL_VERTEX_SHADER, vertex), stage(GL_FRAGMENT_SHADER, "beam/composite.frag")},
-                           std::move(defines));
+        return gl::Program(
+            {stage(GL_VERTEX_SHADER, vertex), stage(GL_FRAGMENT_SHADER, "beam/composite.frag")},
+            std::move(defines));
     };
     p.composite_tiles = composite("beam/composite_tiles.vert", {tile_size});
-    p.composite_phosphor = composite("fullscreen.vert", {tile_size, "PHOSPHOR 1"});
-    p.composite_tiles_phosphor = composite("beam/composite_tiles.vert", {tile_size, "PHOSPHOR 1"});
-    p.bloom_down_phosphor = gl::Program(
-        {stage(GL_VERTEX_SHADER, "fullscreen.vert"), stage(GL_FRAGMENT_SHADER, "beam/bloom_down.frag")}, {"PHOSPHOR 1"});
+    for (std::size_t power_law = 0; power_law < 2; ++power_law) {
+        const std::string decay = "POWER_LAW " + std::to_string(power_law);
+        p.composite_phosphor[power_law] =
+            composite("fullscreen.vert", {tile_size, "PHOSPHOR 1", decay});
+        p.composite_tiles_phosphor[power_law] =
+            composite("beam/composite_tiles.vert", {tile_size, "PHOSPHOR 1", decay});
+        p.bloom_down_phosphor[power_law] =
+            gl::Program({stage(GL_VERTEX_SHADER, "fullscreen.vert"),
+                         stage(GL_FRAGMENT_SHADER, "beam/bloom_down.frag")},
+                        {"PHOSPHOR 1", decay});
+    }
     p.tiles = gl::Program({stage(GL_COMPUTE_SHADER, "beam/tiles.comp")}, {tile_size});
-    p.bloom_up = gl::Program({stage(GL_VERTEX_SHADER, "fullscreen.vert"), stage(GL_FRAGMENT_SHADER, "beam/bloom_up.frag")});
+    p.bloom_up = gl::Program({stage(GL_VERTEX_SHADER, "fullscreen.vert"),
+                              stage(GL_FRAGMENT_SHADER, "beam/bloom_up.frag")});
     p.outline_prepass = gl::Program({stage(GL_VERTEX_SHADER, "styles/outline_prepass.vert"),
                                      stage(GL_FRAGMENT_SHADER, "styles/outline_prepass.frag")});
     p.image_outline = gl::Program({stage(GL_VERTEX_SHADER, "fullscreen.vert"),
@@ -71,7 +87,8 @@ Programs load_programs(const RenderSettings& settings) {
                                         stage(GL_FRAGMENT_SHADER, "styles/image_outline.frag")},
                                        {"MASK_MODE 1"});
     const auto fill = [&](const char* define) {
-        return gl::Program({stage(GL_VERTEX_SHADER, "styles/fill.vert"), stage(GL_FRAGMENT_SHADER, "styles/fill.frag")},
+        return gl::Program({stage(GL_VERTEX_SHADER, "styles/fill.vert"),
+                            stage(GL_FRAGMENT_SHADER, "styles/fill.frag")},
                            {define});
     };
     p.fill_toon = fill("FILL_TOON 1");
@@ -81,8 +98,9 @@ Programs load_programs(const RenderSettings& settings) {
     p.ink_composite = gl::Program({stage(GL_VERTEX_SHADER, "fullscreen.vert"),
                                    stage(GL_FRAGMENT_SHADER, "styles/ink_composite.frag")});
     const auto stroke = [&](const char* frag, std::vector<std::string> defines) {
-        return gl::Program({stage(GL_VERTEX_SHADER, "styles/stroke.vert"), stage(GL_FRAGMENT_SHADER, frag)},
-                           std::move(defines));
+        return gl::Program(
+            {stage(GL_VERTEX_SHADER, "styles/stroke.vert"), stage(GL_FRAGMENT_SHADER, frag)},
+            std::move(defines));
     };
     p.outline = stroke("styles/outline.frag", {"STROKE_OUTLINE 1"});
     p.sketch = stroke("styles/sketch.frag", {"STROKE_SKETCH 1"});

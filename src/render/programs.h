@@ -1,5 +1,6 @@
 #pragma once
 // Every shader program of the pipeline, built from one file per stage under shaders/.
+#include <array>
 #include <string>
 
 #include "gl/program.h"
@@ -10,21 +11,24 @@ namespace bz::render {
 struct Programs {
     gl::Program prepass;
     gl::Program lines;
-    gl::Program mask;  // lines.* with MASK_MODE
-    gl::Program edges;            // LineMethod::compute: edges.comp fills the edge buffer
-    gl::Program spine_visibility;          // ... spine test per spine sample
-    gl::Program edge_quads;       // ... edge_quad.vert + lines.frag draw it
-    gl::Program edge_quads_mask;  // ... with MASK_MODE
+    gl::Program mask;              // lines.* with MASK_MODE
+    gl::Program edges;             // LineMethod::compute: edges.comp fills the edge buffer
+    gl::Program spine_visibility;  // ... spine test per spine sample
+    gl::Program edge_quads;        // ... edge_quad.vert + lines.frag draw it
+    gl::Program edge_quads_mask;   // ... with MASK_MODE
     gl::Program hud;
     gl::Program bloom_down;
     gl::Program bloom_blur;
     gl::Program composite;
     gl::Program composite_tiles;  // the same fragment stage over the lit screen tiles only
-    gl::Program composite_phosphor;        // ... both advancing the phosphor (PHOSPHOR)
-    gl::Program composite_tiles_phosphor;
-    gl::Program bloom_down_phosphor;       // the first downsample, of the phosphor's picture
-    gl::Program tiles;            // tiles.comp: which screen tiles are lit
-    gl::Program bloom_up;   // one step up the bloom chain (BloomKind::mip_chain)
+    // ... both advancing the phosphor (PHOSPHOR), and the first downsample of the phosphor's
+    // picture; [0] exponential, [1] power law (POWER_LAW): the decay is compiled in, because
+    // llvmpipe runs a uniform branch's both sides per pixel (about 0.5 ms at 1280x720).
+    std::array<gl::Program, 2> composite_phosphor;
+    std::array<gl::Program, 2> composite_tiles_phosphor;
+    std::array<gl::Program, 2> bloom_down_phosphor;
+    gl::Program tiles;               // tiles.comp: which screen tiles are lit
+    gl::Program bloom_up;            // one step up the bloom chain (BloomKind::mip_chain)
     gl::Program outline_prepass;     // image-space baseline: depth + face normals
     gl::Program image_outline;       // ... Sobel into the lines target
     gl::Program image_outline_mask;  // ... Sobel into the mask

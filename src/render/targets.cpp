@@ -20,7 +20,8 @@ Targets make_targets(int width, int height, const RenderSettings& s) {
     const int tiles_x = (width + kScreenTileSize - 1) / kScreenTileSize;
     const int tiles_y = (height + kScreenTileSize - 1) / kScreenTileSize;
     t.lit = gl::Texture2D(bw, bh, GL_R8, gl::Filter::nearest);
-    if (width % f == 0 && height % f == 0) t.tiles = gl::Texture2D(tiles_x, tiles_y, GL_R8UI, gl::Filter::nearest);
+    if (width % f == 0 && height % f == 0)
+        t.tiles = gl::Texture2D(tiles_x, tiles_y, GL_R8UI, gl::Filter::nearest);
     t.mask = gl::Texture2D(width, height, GL_R8, gl::Filter::nearest);
     t.output = gl::Texture2D(width, height, GL_RGBA8, gl::Filter::nearest);
     t.depth_fbo = gl::Framebuffer({}, &t.depth);
@@ -47,21 +48,23 @@ Targets make_targets(int width, int height, const RenderSettings& s) {
             lw = std::max(1, lw / 2);
             lh = std::max(1, lh / 2);
         }
-        for (const gl::Texture2D& level : t.bloom_mips) t.bloom_mip_fbos.emplace_back(std::vector{&level}, nullptr);
+        for (const gl::Texture2D& level : t.bloom_mips)
+            t.bloom_mip_fbos.emplace_back(std::vector{&level}, nullptr);
     }
     // The bloom's first level: bloom_a, or the chain's first.
     const gl::Texture2D& first_level = t.bloom_mips.empty() ? t.bloom_a : t.bloom_mips[0];
     t.first_down_fbo = gl::Framebuffer({&first_level, &t.lit}, nullptr);
     if (s.beam.phosphor != PhosphorDecay::off) {
+        // Everything starts black, with no tile lit.
+        t.phosphor = gl::Texture2D(width, height, GL_RGBA16F, gl::Filter::linear);
+        glClearTexImage(t.phosphor.id(), 0, GL_RGBA, GL_FLOAT, nullptr);
+        t.picture_lit = gl::Texture2D(tiles_x, tiles_y, GL_R8UI, gl::Filter::nearest);
+        glClearTexImage(t.picture_lit.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_BYTE, nullptr);
         for (std::size_t i = 0; i < 2; ++i) {
-            // Everything starts black, with no tile lit.
-            t.phosphor[i] = gl::Texture2D(width, height, GL_RGBA16F, gl::Filter::linear);
-            glClearTexImage(t.phosphor[i].id(), 0, GL_RGBA, GL_FLOAT, nullptr);
-            t.picture_lit[i] = gl::Texture2D(tiles_x, tiles_y, GL_R8UI, gl::Filter::nearest);
-            glClearTexImage(t.picture_lit[i].id(), 0, GL_RED_INTEGER, GL_UNSIGNED_BYTE, nullptr);
             t.block_picture[i] = gl::Texture2D(bw, bh, GL_RGBA16F, gl::Filter::nearest);
             glClearTexImage(t.block_picture[i].id(), 0, GL_RGBA, GL_FLOAT, nullptr);
-            t.first_down_phosphor_fbo[i] = gl::Framebuffer({&first_level, &t.lit, &t.block_picture[i]}, nullptr);
+            t.first_down_phosphor_fbo[i] =
+                gl::Framebuffer({&first_level, &t.lit, &t.block_picture[i]}, nullptr);
         }
     }
     if (s.method == LineMethod::image_outline) {

@@ -14,40 +14,43 @@ inline constexpr int kScreenTileSize = 32;
 struct Targets {
     int width = 0;
     int height = 0;
-    gl::Texture2D depth;   // prepass depth (32F reversed-Z or 24-bit)
-    gl::Texture2D lines;   // HDR lines + HUD, RGBA16F, GL_MAX blended
-    gl::Texture2D bloom_a; // bloom ping-pong at the bloom resolution
+    gl::Texture2D depth;    // prepass depth (32F reversed-Z or 24-bit)
+    gl::Texture2D lines;    // HDR lines + HUD, RGBA16F, GL_MAX blended
+    gl::Texture2D bloom_a;  // bloom ping-pong at the bloom resolution
     gl::Texture2D bloom_b;
-    gl::Texture2D bloom_out; // the finished bloom, RGBA8 sqrt-encoded (shaders/beam/bloom_encoding.glsl)
-    gl::Texture2D mask;    // R8 visible-spine mask
-    gl::Texture2D output;  // RGBA8 composite, for PNGs and screenshots
-    gl::Texture2D normals; // RGBA8 face normals, only for LineMethod::image_outline
+    gl::Texture2D
+        bloom_out;  // the finished bloom, RGBA8 sqrt-encoded (shaders/beam/bloom_encoding.glsl)
+    gl::Texture2D mask;     // R8 visible-spine mask
+    gl::Texture2D output;   // RGBA8 composite, for PNGs and screenshots
+    gl::Texture2D normals;  // RGBA8 face normals, only for LineMethod::image_outline
     // Filled styles (render/styles/): the paper with fills and ink strokes, display-referred
     // RGBA8; the halo's shrunk-mesh depth mask; its off-screen soft-halo buffer (MAX blended:
     // r = halo strength, g = inverse view depth of the stroke that cast it).
     gl::Texture2D canvas;
     gl::Texture2D shrunk_depth;
     gl::Texture2D halo;
-    gl::Framebuffer canvas_depth_fbo;  // canvas + the prepass depth (fills write both)
-    gl::Framebuffer canvas_fbo;        // canvas alone (strokes read the depth as a texture)
-    gl::Framebuffer canvas_shrunk_fbo; // canvas + shrunk depth (halo strokes depth-test it)
+    gl::Framebuffer canvas_depth_fbo;   // canvas + the prepass depth (fills write both)
+    gl::Framebuffer canvas_fbo;         // canvas alone (strokes read the depth as a texture)
+    gl::Framebuffer canvas_shrunk_fbo;  // canvas + shrunk depth (halo strokes depth-test it)
     gl::Framebuffer shrunk_fbo, halo_fbo;
-    gl::Framebuffer depth_fbo, lines_fbo, bloom_a_fbo, bloom_b_fbo, bloom_out_fbo, mask_fbo, output_fbo;
+    gl::Framebuffer depth_fbo, lines_fbo, bloom_a_fbo, bloom_b_fbo, bloom_out_fbo, mask_fbo,
+        output_fbo;
     gl::Framebuffer normals_fbo;  // normals + depth
     // BloomKind::mip_chain: level 0 at the bloom resolution, each next one half as large.
     std::vector<gl::Texture2D> bloom_mips;
     std::vector<gl::Framebuffer> bloom_mip_fbos;
-    // Phosphor persistence: the picture shown last frame and the one drawn now, swapped each
-    // frame (RGBA16F, alpha = age for the power law), the new one written by the composite.
-    // Only when BeamSettings::phosphor is on.
-    std::array<gl::Texture2D, 2> phosphor;
-    int phosphor_front = 0;  // which one holds the last picture
-    // Per history texture: which screen tiles of it hold light (R8UI, marked by the composite
-    // that stores it), and the bloom's own phosphor at its resolution (RGBA16F, a = age),
-    // with the framebuffer of the first downsample that writes it.
-    std::array<gl::Texture2D, 2> picture_lit;
+    // Phosphor persistence: the picture (RGBA16F, alpha = age for the power law), updated in
+    // place by the composite, which loads each pixel's own texel and stores the new value only
+    // where it changed. Only when BeamSettings::phosphor is on.
+    gl::Texture2D phosphor;
+    // Which screen tiles of the picture hold light (R8UI): read by tiles.comp (those must be
+    // decayed this frame), then cleared and marked again by the composite as it stores.
+    gl::Texture2D picture_lit;
+    // The bloom's own phosphor at its resolution (RGBA16F, a = age), a pair swapped each frame
+    // (written as a render target of the first downsample, with its framebuffer).
     std::array<gl::Texture2D, 2> block_picture;
     std::array<gl::Framebuffer, 2> first_down_phosphor_fbo;
+    int block_front = 0;  // which block picture holds the last one
     // Sparse composite (pass_tiles.cpp): where the beam image holds light, one R8 texel per
     // bloom texel (written by the bloom's first downsample), and the screen tiles to shade
     // (R8UI, one texel per kScreenTileSize square). Tiles only where the bloom resolution

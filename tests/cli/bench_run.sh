@@ -29,6 +29,13 @@ grep -q "MsPass_lines" "$work/gpu/frames.csv" || fail "gpu_queries run lost its 
 awk -F, 'NR > 1 && ($6 == "" || $7 == "") { bad = 1 } END { exit bad }' "$work/gpu/frames.csv" ||
   fail "a frame has no pass times: $(cat "$work/gpu/frames.csv")"
 
+# --no-phosphor: the same look with its phosphor off, recorded in the run's settings.
+expect 0 "p50" bench "$level" --beam mame --frames 3 --warmup 1 --size 192x108 --preset fast --out "$work/mame"
+grep -q '"phosphor": "exponential"' "$work/mame/summary.json" || fail "mame run: phosphor not exponential"
+expect 0 "p50" bench "$level" --beam mame --no-phosphor --frames 3 --warmup 1 --size 192x108 --preset fast --out "$work/nophos"
+grep -q '"phosphor": "off"' "$work/nophos/summary.json" || fail "--no-phosphor run: phosphor not off"
+grep -q '"beam": "mame"' "$work/nophos/summary.json" || fail "--no-phosphor changed the look"
+
 # The sweep: every configuration, a score for each, the goals judged.
 expect 0 "goal high: mean F1" bench "$level" --sweep --frames 4 --warmup 2 --rounds 2 --samples 2 --size 192x108 --out "$work/sweep"
 for f in sweep.json tradeoff.png summary.json frames.csv frametime.png masks/reference_frame0001.png; do
@@ -60,6 +67,7 @@ expect 2 "unknown preset" bench "$level" --preset ultra
 expect 2 "exclude each other" bench "$level" --sweep --preset fast
 expect 2 "exclude each other" bench "$level" --sweep --scaling
 expect 2 "--frames" bench "$level" --frames 0
+expect 2 "exclude each other" bench "$level" --sweep --no-phosphor
 expect 2 "--timing" bench "$level" --timing sometimes
 expect 0 "usage: beamzone bench" bench --help
 echo "bench CLI ok"

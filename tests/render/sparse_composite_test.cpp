@@ -158,3 +158,56 @@ TEST_F(SparseCompositeTest, SizesTheBloomDoesNotDivideFallBackToTheDenseComposit
     }
     EXPECT_EQ(pictures[0], pictures[1]);
 }
+
+// The composite updates the picture in place and stores only where a pixel changed, and the
+// sparse composite shades only the tiles lit last frame or now: a trail must still fade to
+// exact black everywhere (no forgotten texel keeps a remnant), and lines lit again on that
+// black must give the very picture and frame they gave on fresh targets.
+TEST_F(SparseCompositeTest, InPlacePhosphorFadesToExactBlackAndLightsAgainAsTheFirstTime) {
+    bz::scene::MeshLibrary meshes;
+    for (const auto decay :
+         {bz::render::PhosphorDecay::exponential, bz::render::PhosphorDecay::power_law}) {
+        for (const bool sparse : {true, false}) {
+            auto s = bz::render::preset("balanced");
+            s.beam = bz::render::beam_look("mame");
+            s.beam.phosphor = decay;
+            s.beam.persistence_ms = 30.0f;
+            s.beam.power_law_exponent = 3.0f;  // at 1/4096 after about 2 s, not minutes
+            s.sparse_composite = sparse;
+            const char* what = sparse ? "sparse" : "dense";
+            bz::render::Renderer r(s, kW, kH, bz::gl::TimingMethod::off);
+            const auto lines = scattered_lines(0.0, 0.0f);
+            r.render(lines, meshes, bz::render::Renderer::kOffscreen);
+            const std::vector<float> first_picture = r.read_picture_hdr();
+            const std::vector<std::uint8_t> first_frame = r.read_color();
+            ASSERT_GT(std::count_if(first_picture.begin(), first_picture.end(),
+                                    [](float v) { return v > 0.0f; }),
+                      100)
+                << what;
+            // 4 s of empty frames, 0.1 s apart (under the 0.25 s cap on one step).
+            double t = 0.0;
+            for (int i = 1; i <= 40; ++i) {
+                t = i * 0.1;
+                r.render(empty_frame(t), meshes, bz::render::Renderer::kOffscreen);
+                if (i == 1) {
+                    const auto p = r.read_picture_hdr();
+                    EXPECT_TRUE(std::any_of(p.begin(), p.end(), [](float v) { return v > 0.0f; }))
+                        << what << ": the trail is gone after one step already";
+                }
+            }
+            const std::vector<float> faded = r.read_picture_hdr();
+            EXPECT_EQ(std::count_if(faded.begin(), faded.end(), [](float v) { return v != 0.0f; }),
+                      0)
+                << what << ": the picture (colour and age) is not exactly black";
+            const std::vector<std::uint8_t> dark = r.read_color();
+            std::size_t lit_bytes = 0;
+            for (std::size_t i = 0; i < dark.size(); ++i)
+                lit_bytes += (i % 4 != 3 && dark[i] != 0) ? 1 : 0;
+            EXPECT_EQ(lit_bytes, 0u) << what << ": the frame is not black";
+            r.render(scattered_lines(t + 0.1, 0.0f), meshes, bz::render::Renderer::kOffscreen);
+            EXPECT_EQ(r.read_picture_hdr(), first_picture)
+                << what << ": lit again, another picture";
+            EXPECT_EQ(r.read_color(), first_frame) << what << ": lit again, another frame";
+        }
+    }
+}

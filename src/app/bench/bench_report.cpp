@@ -131,8 +131,7 @@ Json run_json(const RunResult& r) {
     j["label"] = r.label;
     Json settings = Json::object();
     settings["preset"] = s.preset;
-    settings["method"] =
-        render::line_method_name(s.method);
+    settings["method"] = render::line_method_name(s.method);
     settings["depth"] = depth_name(s.depth);
     settings["plane_tolerance_rel"] = static_cast<double>(s.plane_tolerance_rel);
     settings["plane_tolerance_px"] = static_cast<double>(s.plane_tolerance_px);
@@ -146,13 +145,16 @@ Json run_json(const RunResult& r) {
     settings["lod"] = s.lod;
     settings["instancing"] = s.instancing;
     settings["beam"] = s.beam.look;  // classic or mame: the sweep's balanced-mame row
+    // bench --no-phosphor switches it off whatever the look.
+    settings["phosphor"] = s.beam.phosphor == render::PhosphorDecay::off           ? "off"
+                           : s.beam.phosphor == render::PhosphorDecay::exponential ? "exponential"
+                                                                                   : "power_law";
     j["settings"] = std::move(settings);
     const FrameTimeStats& t = r.stats;
     j["frame_time_ms"] = Json{{"mean", t.mean_ms}, {"p50", t.p50_ms}, {"p95", t.p95_ms},
-                              {"p99", t.p99_ms},   {"max", t.max_ms},  {"min", t.min_ms}};
+                              {"p99", t.p99_ms},   {"max", t.max_ms}, {"min", t.min_ms}};
     j["fps"] = Json{{"mean", t.mean_fps}, {"low_1pct", t.low_1pct_fps}};
-    j["cpu_busy_mean_ms"] =
-        mean_of(r.frames, [](const FrameRecord& f) { return f.ms_cpu_busy; });
+    j["cpu_busy_mean_ms"] = mean_of(r.frames, [](const FrameRecord& f) { return f.ms_cpu_busy; });
     Json passes = Json::object();
     for (std::size_t p = 0; p < r.pass_names.size(); ++p)
         passes[r.pass_names[p]] = mean_pass_ms(r, p);

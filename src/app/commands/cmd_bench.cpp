@@ -6,8 +6,6 @@
 #include <string>
 
 #include "app/bench/bench_accuracy.h"
-#include "core/io/output_path.h"
-#include "core/text/printable.h"
 #include "app/bench/bench_plots.h"
 #include "app/bench/bench_report.h"
 #include "app/bench/bench_run.h"
@@ -20,6 +18,8 @@
 #include "app/headless_gl.h"
 #include "core/error.h"
 #include "core/io/file_io.h"
+#include "core/io/output_path.h"
+#include "core/text/printable.h"
 #include "level/loader.h"
 
 namespace bz::app {
@@ -33,7 +33,7 @@ constexpr const char* kUsage =
     "                      [--preset fast|balanced|high] [--style NAME] [--sweep | --scaling]\n"
     "                      [--line-method compute|geometry_shader|auto|image_outline]\n"
     "                      [--out DIR] [--replay FILE] [--samples N] [--rounds N]\n"
-    "                      [--timing auto|cpu|gpu] [--beam classic|mame]\n"
+    "                      [--timing auto|cpu|gpu] [--beam classic|mame] [--no-phosphor]\n"
     "       beamzone bench --accuracy [--models-dir DIR] [--model FILE]... [--size WxH]\n"
     "                      [--frames N] [--out DIR] [--timing auto|cpu|gpu]\n"
     "Renders the level offscreen along its benchmark camera path ([[camera_key]]; without one\n"
@@ -58,6 +58,8 @@ constexpr const char* kUsage =
     "and writes scaling.json and scaling.png (default 40 frames).\n"
     "--beam picks the vector beam's look (default: the level's, else classic); the sweep adds\n"
     "balanced with the mame beam, which times its passes (phosphor, mip-chain bloom).\n"
+    "--no-phosphor switches the beam's phosphor persistence off for the run (not with --sweep):\n"
+    "two runs with and without it time what the phosphor costs.\n"
     "--accuracy needs no LEVEL: it scores every preset and the baseline on real models\n"
     "(default: 16 files under /usr/share/assimp/models; --model FILE, repeatable, relative to\n"
     "--models-dir, replaces the list) from 4 views each (framed, behind, close, above) at\n"
@@ -76,7 +78,7 @@ struct Options {
     glm::ivec2 size{1280, 720};
     std::string preset;
     std::optional<scene::Style> style;  // none: each frame's own (the level's)
-    std::string line_method;  // empty: the level's, else the preset's
+    std::string line_method;            // empty: the level's, else the preset's
     Mode mode = Mode::single;
     std::string out = "bench-out";
     std::string replay;
@@ -84,6 +86,7 @@ struct Options {
     int rounds = 4;
     std::string timing = "auto";
     std::string beam;
+    bool no_phosphor = false;
     bool size_given = false;
     std::string models_dir = "/usr/share/assimp/models";
     std::vector<std::string> models;
@@ -119,6 +122,8 @@ Options parse(Args args) {
             o.mode = m;
         } else if (a == "--beam") {
             o.beam = cur.value(a);
+        } else if (a == "--no-phosphor") {
+            o.no_phosphor = true;
         } else if (a == "--models-dir") {
             o.models_dir = cur.value(a);
         } else if (a == "--model") {
@@ -148,6 +153,7 @@ Options parse(Args args) {
         if (!o.level.empty()) throw UsageError("--accuracy takes no LEVEL (it draws models)");
         if (preset_given) throw UsageError("--preset and --accuracy exclude each other");
         if (!o.replay.empty()) throw UsageError("--replay and --accuracy exclude each other");
+        if (o.no_phosphor) throw UsageError("--no-phosphor and --accuracy exclude each other");
         if (!o.frames_given) o.frames = 6;
         if (!o.size_given) o.size = {640, 480};
         if (o.out.empty()) throw UsageError("--out needs a directory");
@@ -158,9 +164,13 @@ Options parse(Args args) {
     if (preset_given && o.mode == Mode::sweep)
         throw UsageError("--preset and --sweep exclude each other (the sweep runs every preset)");
     if (!o.line_method.empty() && o.mode == Mode::sweep)
-        throw UsageError("--line-method and --sweep exclude each other (the sweep runs every method)");
+        throw UsageError(
+            "--line-method and --sweep exclude each other (the sweep runs every method)");
     if (o.style && o.mode == Mode::sweep)
         throw UsageError("--style and --sweep exclude each other (the sweep runs every style)");
+    if (o.no_phosphor && o.mode == Mode::sweep)
+        throw UsageError(
+            "--no-phosphor and --sweep exclude each other (the sweep sets every look)");
     if (o.mode == Mode::scaling && !o.frames_given) o.frames = 40;
     // Seven configurations: fewer frames each keep a sweep on llvmpipe within minutes.
     if (o.mode == Mode::sweep && !o.frames_given) o.frames = 240;
@@ -186,9 +196,11 @@ BenchFrames simulate(BenchScene& scene, const Options& o, double aspect) {
         bf.frames.push_back(f);
         bf.seconds.push_back(scene.seconds());
     }
-    if (static_cast<int>(bf.frames.size()) < total && static_cast<int>(bf.frames.size()) > o.warmup) {
-        std::fprintf(stderr, "note: %s ends after %zu ticks: timing %zu frames, not %d\n", o.replay.c_str(),
-                     bf.frames.size(), bf.frames.size() - static_cast<std::size_t>(o.warmup), o.frames);
+    if (static_cast<int>(bf.frames.size()) < total &&
+        static_cast<int>(bf.frames.size()) > o.warmup) {
+        std::fprintf(stderr, "note: %s ends after %zu ticks: timing %zu frames, not %d\n",
+                     o.replay.c_str(), bf.frames.size(),
+                     bf.frames.size() - static_cast<std::size_t>(o.warmup), o.frames);
     }
     if (static_cast<int>(bf.frames.size()) <= o.warmup) {
         throw UserError(o.replay + ": the replay has " + std::to_string(bf.frames.size()) +
@@ -242,10 +254,10 @@ int run_accuracy_mode(const Options& o) {
     std::vector<TradeoffPoint> points;
     for (const AccuracyRow& r : result.rows)
         points.push_back({r.config.label, r.mean_p50_ms, r.mean_f1, r.min_f1});
-    plot_tradeoff(points,
-                  "speed vs accuracy, " + std::to_string(result.views.size()) +
-                      " views of real models",
-                  font.get(), out / "accuracy_tradeoff.png");
+    plot_tradeoff(
+        points,
+        "speed vs accuracy, " + std::to_string(result.views.size()) + " views of real models",
+        font.get(), out / "accuracy_tradeoff.png");
     print_accuracy_table(stdout, result, goals, ao.tolerance_px);
     std::printf("load average %.2f before, %.2f after\nwrote %s/\n", meta.load_before,
                 meta.load_after, o.out.c_str());
@@ -269,11 +281,16 @@ int run(const Options& o) {
     const std::string preset_name = o.preset.empty() ? loaded.level->render.preset : o.preset;
     render::RenderSettings settings =
         render::preset(preset_name.empty() ? "balanced" : preset_name);
-    if (!o.line_method.empty()) settings.method = render::parse_line_method(o.line_method);
-    else if (loaded.level->render.line_method) settings.method = render::parse_line_method(*loaded.level->render.line_method);
+    if (!o.line_method.empty())
+        settings.method = render::parse_line_method(o.line_method);
+    else if (loaded.level->render.line_method)
+        settings.method = render::parse_line_method(*loaded.level->render.line_method);
     settings.count_edges = true;
-    const std::string beam_name = !o.beam.empty() ? o.beam : loaded.level->render.beam.value_or("classic");
+    const std::string beam_name =
+        !o.beam.empty() ? o.beam : loaded.level->render.beam.value_or("classic");
     settings.beam = render::beam_look(beam_name);
+    // The phosphor's cost is the difference between two runs of the same frames.
+    if (o.no_phosphor) settings.beam.phosphor = render::PhosphorDecay::off;
     settings.style = o.style;
     std::optional<game::replay::Replay> replay;
     if (!o.replay.empty()) replay = game::replay::load(o.replay);
@@ -392,7 +409,8 @@ int cmd_bench(Args args) {
         }
         return o;
     };
-    const std::optional<Options> o = parse_command("bench", args, kUsage, parse_checked, &exit_code);
+    const std::optional<Options> o =
+        parse_command("bench", args, kUsage, parse_checked, &exit_code);
     return o ? run(*o) : exit_code;
 }
 

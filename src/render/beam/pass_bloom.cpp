@@ -9,10 +9,12 @@ namespace {
 void first_downsample(const PassContext& ctx, const gl::Texture2D& source,
                       const PhosphorStep* phosphor, float threshold) {
     const Targets& t = ctx.targets;
-    (phosphor ? t.first_down_phosphor_fbo[static_cast<std::size_t>(phosphor->to)]
+    (phosphor ? t.first_down_phosphor_fbo[static_cast<std::size_t>(phosphor->block_to)]
               : t.first_down_fbo)
         .bind();
-    const gl::Program& down = phosphor ? ctx.programs.bloom_down_phosphor : ctx.programs.bloom_down;
+    const gl::Program& down = phosphor
+                                  ? ctx.programs.bloom_down_phosphor[phosphor->power_law ? 1 : 0]
+                                  : ctx.programs.bloom_down;
     down.use();
     down.set("u_source", 0);
     down.set("u_factor", static_cast<int>(ctx.settings.bloom_resolution));
@@ -22,7 +24,7 @@ void first_downsample(const PassContext& ctx, const gl::Texture2D& source,
     if (phosphor) {
         down.set("u_history_box", 1);
         set_phosphor_uniforms(down, *phosphor);
-        t.block_picture[static_cast<std::size_t>(1 - phosphor->to)].bind(1);
+        t.block_picture[static_cast<std::size_t>(1 - phosphor->block_to)].bind(1);
     }
     glDrawArrays(GL_TRIANGLES, 0, 3);
 }

@@ -7,7 +7,9 @@ namespace bz::render {
 // With the bloom's lit tiles (pass_tiles) it is sparse: the target is cleared to black, which
 // is what an unlit pixel composites to exactly, and only the lit tiles are shaded; on
 // llvmpipe a full-screen pass costs per pixel even where it writes black.
-// With the phosphor it also stores the new picture (phosphor.glsl) into the history texture.
+// With the phosphor it also updates the picture (phosphor.glsl) in place: each invocation loads
+// its own pixel's texel and stores it only where the value changed, so there is no hazard
+// between invocations and a dark or unchanged pixel costs no store.
 void pass_composite(const PassContext& ctx, const gl::Texture2D& picture, bool bloom,
                     GLuint target_fbo, int width, int height, const PhosphorStep* phosphor) {
     const Targets& t = ctx.targets;
@@ -16,9 +18,10 @@ void pass_composite(const PassContext& ctx, const gl::Texture2D& picture, bool b
     glViewport(0, 0, width, height);
     gl::apply(gl::PipelineState{});
     const Programs& programs = ctx.programs;
+    const std::size_t decay = phosphor && phosphor->power_law ? 1 : 0;
     const gl::Program& p =
-        sparse ? (phosphor ? programs.composite_tiles_phosphor : programs.composite_tiles)
-               : (phosphor ? programs.composite_phosphor : programs.composite);
+        sparse ? (phosphor ? programs.composite_tiles_phosphor[decay] : programs.composite_tiles)
+               : (phosphor ? programs.composite_phosphor[decay] : programs.composite);
     p.use();
     p.set("u_lines", 0);
     p.set("u_bloom", 1);
@@ -30,13 +33,11 @@ void pass_composite(const PassContext& ctx, const gl::Texture2D& picture, bool b
     picture.bind(0);
     t.bloom_out.bind(1);
     if (phosphor) {
-        const auto to = static_cast<std::size_t>(phosphor->to);
-        p.set("u_history", 3);
         set_phosphor_uniforms(p, *phosphor);
-        phosphor->history->bind(3);
-        glBindImageTexture(0, t.phosphor[to].id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-        glClearTexImage(t.picture_lit[to].id(), 0, GL_RED_INTEGER, GL_UNSIGNED_BYTE, nullptr);
-        glBindImageTexture(1, t.picture_lit[to].id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R8UI);
+        glBindImageTexture(0, t.phosphor.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA16F);
+        // tiles.comp has read last frame's marks; this frame's composite marks them afresh.
+        glClearTexImage(t.picture_lit.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_BYTE, nullptr);
+        glBindImageTexture(1, t.picture_lit.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R8UI);
     }
     ctx.empty_vao.bind();
     if (!sparse) {
@@ -50,8 +51,12 @@ void pass_composite(const PassContext& ctx, const gl::Texture2D& picture, bool b
         tiles.bind(2);
         glDrawArraysInstanced(GL_TRIANGLES, 0, 6, tiles.width() * tiles.height());
     }
-    // The stored picture and its lit tiles are read as textures next frame, and read back by tests.
-    if (phosphor) glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+    // The picture is loaded as an image next frame, shown as a texture by held frames and read
+    // back by tests; its lit tiles are read as a texture by next frame's tiles.comp.
+    if (phosphor) {
+        glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT |
+                        GL_TEXTURE_UPDATE_BARRIER_BIT);
+    }
 }
 
 }  // namespace bz::render

@@ -14,8 +14,8 @@ constexpr double kMaxDtSeconds = 0.25;
 }  // namespace
 
 // Phosphor persistence (shaders/beam/phosphor.glsl): the composite reads this frame's beam image
-// and the previous picture and writes the new picture into the other history texture, which
-// is then the picture (held frames show it, tests read it).
+// and updates the picture (Targets::phosphor) in place, which is then the frame's picture
+// (held frames show it, tests read it). The bloom's block picture is a swapped pair.
 PhosphorStep phosphor_step(const PassContext& ctx, double dt_seconds) {
     const Targets& t = ctx.targets;
     const BeamSettings& b = ctx.settings.beam;
@@ -26,8 +26,7 @@ PhosphorStep phosphor_step(const PassContext& ctx, double dt_seconds) {
     // Power law: (1 + t/t0)^-p is half at t = persistence, so t0 = persistence / (2^(1/p) - 1).
     const double t0 = tau / (std::pow(2.0, 1.0 / p) - 1.0);
     PhosphorStep s;
-    s.history = &t.phosphor[t.phosphor_front];
-    s.to = 1 - t.phosphor_front;
+    s.block_to = 1 - t.block_front;
     s.power_law = b.phosphor == PhosphorDecay::power_law;
     s.dt = static_cast<float>(dt);
     s.exp_factor = static_cast<float>(std::exp(-dt / tau));
@@ -38,7 +37,6 @@ PhosphorStep phosphor_step(const PassContext& ctx, double dt_seconds) {
 
 void set_phosphor_uniforms(const gl::Program& program, const PhosphorStep& step) {
     program.set("u_dt", step.dt);
-    program.set("u_power_law", step.power_law ? 1 : 0);
     program.set("u_exp_factor", step.exp_factor);
     program.set("u_t0_inv", step.t0_inv);
     program.set("u_exponent", step.exponent);
@@ -46,8 +44,8 @@ void set_phosphor_uniforms(const gl::Program& program, const PhosphorStep& step)
 
 const gl::Texture2D& finish_phosphor(const PassContext& ctx, const PhosphorStep& step) {
     Targets& t = ctx.targets;
-    t.phosphor_front = step.to;
-    return t.phosphor[static_cast<std::size_t>(step.to)];
+    t.block_front = step.block_to;
+    return t.phosphor;
 }
 
 }  // namespace bz::render

@@ -4,8 +4,8 @@ namespace bz::render {
 
 // Which screen tiles the sparse composite shades (shaders/beam/tiles.comp): those under lit
 // picture blocks (marked by the bloom's first downsample) or under non-zero finished bloom.
-// With the phosphor, also those where the previous picture holds light or where the history
-// texture the composite writes holds a stale lit picture (Targets::picture_lit).
+// With the phosphor, also those where the picture held light last frame (Targets::picture_lit):
+// the composite must decay them, and every other tile of the picture is exactly black.
 // One invocation per tile; the composite reads the result in its vertex stage.
 void pass_tiles(const PassContext& ctx) {
     Targets& t = ctx.targets;
@@ -19,14 +19,10 @@ void pass_tiles(const PassContext& ctx) {
     p.set("u_bloom", 1);
     p.set("u_screen", glm::ivec2(t.width, t.height));
     p.set("u_phosphor", phosphor ? 1 : 0);
-    p.set("u_history_lit", 2);
-    p.set("u_stale_lit", 3);
+    p.set("u_picture_lit", 2);
     t.lit.bind(0);
     t.bloom_out.bind(1);
-    if (phosphor) {
-        t.picture_lit[static_cast<std::size_t>(1 - phosphor->to)].bind(2);
-        t.picture_lit[static_cast<std::size_t>(phosphor->to)].bind(3);
-    }
+    if (phosphor) t.picture_lit.bind(2);
     glBindImageTexture(0, tiles.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R8UI);
     glDispatchCompute(static_cast<GLuint>((tiles.width() + 7) / 8),
                       static_cast<GLuint>((tiles.height() + 7) / 8), 1);
