@@ -1,3 +1,5 @@
 #include "app/commands/commands.h"
 
-int main(int argc, char** argv) { return bz::app::dispatch(argc, argv); }
+int main(int argc, char** argv) {
+    return bz::app::dispatch(argc, argv);
+}

@@ -2,8 +2,8 @@
 
 #include "core/error.h"
 #include "game/assets/models.h"
-#include "geometry/import/import.h"
 #include "geometry/generated/primitives.h"
+#include "geometry/import/import.h"
 
 namespace bz::app {
 
@@ -20,7 +20,8 @@ geo::TriMesh load_model_source(const std::string& input) {
     if (name == "grid-100k") return geo::grid(224, 224, 0.03f, 16);
     // The game's enemy tank: the desktop icon is rendered from it (dist/README.md).
     if (name == "tank") return game::models::slow_tank();
-    throw UserError(input + ": unknown built-in model (cube, sphere, coarse-sphere, grid, grid-100k, tank)");
+    throw UserError(
+        input + ": unknown built-in model (cube, sphere, coarse-sphere, grid, grid-100k, tank)");
 }
 
 }  // namespace bz::app

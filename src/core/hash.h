@@ -8,7 +8,7 @@
 namespace bz {
 
 class Hasher {
-public:
+  public:
     void bytes(const void* data, std::size_t n) {
         const auto* p = static_cast<const unsigned char*>(data);
         for (std::size_t i = 0; i < n; ++i) {
@@ -27,7 +27,7 @@ public:
     }
     std::uint64_t digest() const { return h_; }
 
-private:
+  private:
     std::uint64_t h_ = 0xcbf29ce484222325ull;
 };
 

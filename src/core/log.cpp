@@ -21,7 +21,8 @@ void Log::write(LogLevel level, std::string_view message) {
                      message.data());
     }
     if (file_) {
-        const std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
+        const std::time_t now =
+            std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
         char stamp[32];
         std::strftime(stamp, sizeof stamp, "%Y-%m-%d %H:%M:%S", std::localtime(&now));
         std::fprintf(file_, "%s %s: %.*s\n", stamp, name, static_cast<int>(message.size()),

@@ -11,7 +11,7 @@ namespace bz {
 enum class LogLevel { debug, info, warn, error };
 
 class Log {
-public:
+  public:
     Log() = default;
     explicit Log(const std::filesystem::path& file);
     ~Log();
@@ -25,7 +25,7 @@ public:
     const std::filesystem::path& file_path() const { return path_; }
     void set_verbose(bool v) { verbose_ = v; }
 
-private:
+  private:
     std::filesystem::path path_;
     std::FILE* file_ = nullptr;
     bool verbose_ = false;

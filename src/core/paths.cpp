@@ -45,10 +45,20 @@ Root find_root() {
 
 }  // namespace
 
-std::filesystem::path project_root() { return find_root().path; }
-std::string project_root_origin() { return find_root().origin; }
-std::filesystem::path shaders_dir() { return project_root() / "shaders"; }
-std::filesystem::path data_dir() { return project_root() / "data"; }
-std::filesystem::path levels_dir() { return project_root() / "levels"; }
+std::filesystem::path project_root() {
+    return find_root().path;
+}
+std::string project_root_origin() {
+    return find_root().origin;
+}
+std::filesystem::path shaders_dir() {
+    return project_root() / "shaders";
+}
+std::filesystem::path data_dir() {
+    return project_root() / "data";
+}
+std::filesystem::path levels_dir() {
+    return project_root() / "levels";
+}
 
 }  // namespace bz

@@ -6,8 +6,9 @@
 namespace bz {
 
 class Rng {
-public:
-    explicit Rng(std::uint64_t seed = 0x853c49e6748fea9bull, std::uint64_t stream = 0xda3e39cb94b95bdbull)
+  public:
+    explicit Rng(std::uint64_t seed = 0x853c49e6748fea9bull,
+                 std::uint64_t stream = 0xda3e39cb94b95bdbull)
         : state_(0), inc_((stream << 1u) | 1u) {
         next_u32();
         state_ += seed;
@@ -34,7 +35,7 @@ public:
     std::uint64_t state() const { return state_; }
     std::uint64_t increment() const { return inc_; }
 
-private:
+  private:
     std::uint64_t state_;
     std::uint64_t inc_;
 };

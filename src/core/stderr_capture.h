@@ -8,7 +8,7 @@
 namespace bz {
 
 class StderrCapture {
-public:
+  public:
     StderrCapture();
     ~StderrCapture();
     StderrCapture(const StderrCapture&) = delete;
@@ -16,7 +16,7 @@ public:
     // Restores stderr (if not yet) and returns the captured text, whitespace-collapsed.
     std::string text();
 
-private:
+  private:
     void restore();
     int saved_fd_ = -1;
     int capture_fd_ = -1;

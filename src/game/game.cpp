@@ -4,9 +4,9 @@
 #include <cctype>
 
 #include "core/error.h"
-#include "game/difficulty/autopilot.h"
 #include "game/assets/backdrop.h"
 #include "game/default_level.h"
+#include "game/difficulty/autopilot.h"
 #include "game/difficulty/difficulty.h"
 #include "game/hud/hud.h"
 #include "game/hud/hud_layout.h"
@@ -342,9 +342,8 @@ scene::FrameList Game::frame(double alpha, double aspect) const {
             break;
     }
     // Tables are kept per level: say whose this is.
-    if (screen_ == Screen::high_scores ||
-        (screen_ == Screen::attract && !options_.app_menus &&
-         (ticks_ / kAttractCycleTicks) % 2 == 1)) {
+    if (screen_ == Screen::high_scores || (screen_ == Screen::attract && !options_.app_menus &&
+                                           (ticks_ / kAttractCycleTicks) % 2 == 1)) {
         hud::text(f.hud, font_, highscores_title(), {0.0f, 0.54f}, 0.045f, hud::kGreen,
                   scene::TextAlign::center);
     }

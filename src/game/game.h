@@ -13,10 +13,10 @@
 #include <string>
 
 #include "game/assets/assets.h"
-#include "game/world/events.h"
+#include "game/hud/screens.h"
 #include "game/records/highscores.h"
 #include "game/records/replay.h"
-#include "game/hud/screens.h"
+#include "game/world/events.h"
 #include "game/world/tick_command.h"
 #include "game/world/world.h"
 #include "level/level.h"

@@ -2,10 +2,9 @@
 // Mesh data shared by import, adjacency, the renderer's mesh cache and the CPU reference.
 // Positions stay in the model's own coordinates: nothing here re-centres or rescales.
 #include <cstdint>
+#include <glm/glm.hpp>
 #include <string>
 #include <vector>
-
-#include <glm/glm.hpp>
 
 namespace bz::geo {
 
@@ -38,7 +37,7 @@ struct Bounds {
 // usable neighbour; for them a_i == v_i (a degenerate neighbour), which the geometry shader
 // reads as "always a feature edge". edge_kinds says which kind each edge is (3 per triangle).
 struct AdjacencyMesh {
-    std::vector<glm::vec3> positions;    // unique after welding
+    std::vector<glm::vec3> positions;      // unique after welding
     std::vector<std::uint32_t> triangles;  // 3 per triangle, into positions
     std::vector<std::uint32_t> adjacency;  // 6 per triangle
     std::vector<EdgeKind> edge_kinds;      // 3 per triangle

@@ -12,7 +12,7 @@ struct BufferDeleter {
 
 // A GL buffer object. Data is (re)specified whole; size() is in bytes.
 class Buffer {
-public:
+  public:
     Buffer();
     template <class T>
     explicit Buffer(std::span<const T> data, GLenum usage = GL_STATIC_DRAW) : Buffer() {
@@ -26,7 +26,7 @@ public:
     GLuint id() const { return handle_.id(); }
     std::size_t size() const { return size_; }
 
-private:
+  private:
     Handle<BufferDeleter> handle_;
     std::size_t size_ = 0;
 };

@@ -12,7 +12,7 @@
 namespace bz::gl {
 
 class DebugSink {
-public:
+  public:
     // Installs the callback on the current context (synchronous output, so the message
     // arrives inside the offending call and a debugger breaks at the right place).
     void install();
@@ -29,7 +29,7 @@ public:
 
     void on_message(GLenum source, GLenum type, GLuint id, GLenum severity, const char* text);
 
-private:
+  private:
     int errors_ = 0;
     bool echo_ = true;
     std::vector<std::string> messages_;

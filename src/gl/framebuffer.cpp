@@ -25,7 +25,8 @@ Framebuffer::Framebuffer(std::vector<const Texture2D*> colors, const Texture2D* 
     if (draw_buffers.empty()) {
         glNamedFramebufferDrawBuffer(id, GL_NONE);
     } else {
-        glNamedFramebufferDrawBuffers(id, static_cast<GLsizei>(draw_buffers.size()), draw_buffers.data());
+        glNamedFramebufferDrawBuffers(id, static_cast<GLsizei>(draw_buffers.size()),
+                                      draw_buffers.data());
     }
     const GLenum status = glCheckNamedFramebufferStatus(id, GL_DRAW_FRAMEBUFFER);
     if (status != GL_FRAMEBUFFER_COMPLETE) {

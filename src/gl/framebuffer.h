@@ -12,7 +12,7 @@ struct FramebufferDeleter {
 
 // A framebuffer over textures it does not own. Throws if the attachments are incomplete.
 class Framebuffer {
-public:
+  public:
     Framebuffer() = default;
     Framebuffer(std::vector<const Texture2D*> colors, const Texture2D* depth);
     // Binds for drawing and sets the viewport to the attachment size.
@@ -21,7 +21,7 @@ public:
     int width() const { return width_; }
     int height() const { return height_; }
 
-private:
+  private:
     Handle<FramebufferDeleter> handle_;
     int width_ = 0;
     int height_ = 0;

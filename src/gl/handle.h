@@ -8,7 +8,7 @@ namespace bz::gl {
 
 template <class Deleter>
 class Handle {
-public:
+  public:
     Handle() = default;
     explicit Handle(GLuint id) : id_(id) {}
     ~Handle() { reset(); }
@@ -29,7 +29,7 @@ public:
     GLuint id() const { return id_; }
     explicit operator bool() const { return id_ != 0; }
 
-private:
+  private:
     GLuint id_ = 0;
 };
 

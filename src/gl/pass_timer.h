@@ -20,7 +20,7 @@ struct PassTime {
 };
 
 class PassTimer {
-public:
+  public:
     explicit PassTimer(TimingMethod method = TimingMethod::off);
     ~PassTimer();
     PassTimer(const PassTimer&) = delete;
@@ -38,7 +38,7 @@ public:
     // a few frames old for gpu_queries). Empty until the first results arrive.
     const std::vector<PassTime>& last_results() const { return results_; }
 
-private:
+  private:
     static constexpr int kLatency = 4;
     static constexpr int kMaxPasses = 16;
     struct FrameSlot {

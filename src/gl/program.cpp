@@ -62,10 +62,18 @@ Program::Program(const std::vector<StageFile>& stages, const std::vector<std::st
     handle_ = std::move(program);
 }
 
-void Program::use() const { glUseProgram(handle_.id()); }
-void Program::set(const char* n, int v) const { glProgramUniform1i(id(), location(n), v); }
-void Program::set(const char* n, unsigned v) const { glProgramUniform1ui(id(), location(n), v); }
-void Program::set(const char* n, float v) const { glProgramUniform1f(id(), location(n), v); }
+void Program::use() const {
+    glUseProgram(handle_.id());
+}
+void Program::set(const char* n, int v) const {
+    glProgramUniform1i(id(), location(n), v);
+}
+void Program::set(const char* n, unsigned v) const {
+    glProgramUniform1ui(id(), location(n), v);
+}
+void Program::set(const char* n, float v) const {
+    glProgramUniform1f(id(), location(n), v);
+}
 void Program::set(const char* n, const glm::vec2& v) const {
     glProgramUniform2fv(id(), location(n), 1, glm::value_ptr(v));
 }

@@ -1,10 +1,9 @@
 #pragma once
 // A linked GLSL program built from one file per stage under shaders/.
 #include <filesystem>
+#include <glm/glm.hpp>
 #include <string>
 #include <vector>
-
-#include <glm/glm.hpp>
 
 #include "gl/handle.h"
 
@@ -20,7 +19,7 @@ struct StageFile {
 };
 
 class Program {
-public:
+  public:
     Program() = default;
     // Throws UserError whose message names file:line:col for every compile or link error.
     Program(const std::vector<StageFile>& stages, const std::vector<std::string>& defines = {});
@@ -40,7 +39,7 @@ public:
     void set(const char* name, const glm::mat4& v) const;
     void set_array(const char* name, const float* v, int count) const;
 
-private:
+  private:
     GLint location(const char* name) const { return glGetUniformLocation(handle_.id(), name); }
     Handle<ProgramDeleter> handle_;
 };

@@ -63,7 +63,8 @@ struct Assembler {
             }
             out << line << '\n';
         }
-        if (is_root && !saw_version) throw UserError(file.string() + ":1:1: error: no #version line");
+        if (is_root && !saw_version)
+            throw UserError(file.string() + ":1:1: error: no #version line");
         stack.pop_back();
     }
 };

@@ -15,6 +15,8 @@ Texture2D::Texture2D(int width, int height, GLenum internal_format, Filter filte
     glTextureParameteri(id, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
 }
 
-void Texture2D::bind(GLuint unit) const { glBindTextureUnit(unit, handle_.id()); }
+void Texture2D::bind(GLuint unit) const {
+    glBindTextureUnit(unit, handle_.id());
+}
 
 }  // namespace bz::gl

@@ -11,7 +11,7 @@ enum class Filter { nearest, linear };
 
 // An immutable-storage 2D texture (one level), clamped at the edges.
 class Texture2D {
-public:
+  public:
     Texture2D() = default;
     Texture2D(int width, int height, GLenum internal_format, Filter filter);
     void bind(GLuint unit) const;
@@ -21,7 +21,7 @@ public:
     GLenum format() const { return format_; }
     explicit operator bool() const { return static_cast<bool>(handle_); }
 
-private:
+  private:
     Handle<TextureDeleter> handle_;
     int width_ = 0;
     int height_ = 0;

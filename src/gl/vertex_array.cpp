@@ -28,8 +28,12 @@ void VertexArray::uint_attribute(GLuint location, GLuint binding, GLint componen
     glVertexArrayAttribBinding(id(), location, binding);
 }
 
-void VertexArray::element_buffer(const Buffer& buffer) { glVertexArrayElementBuffer(id(), buffer.id()); }
+void VertexArray::element_buffer(const Buffer& buffer) {
+    glVertexArrayElementBuffer(id(), buffer.id());
+}
 
-void VertexArray::bind() const { glBindVertexArray(id()); }
+void VertexArray::bind() const {
+    glBindVertexArray(id());
+}
 
 }  // namespace bz::gl

@@ -10,7 +10,7 @@ struct VertexArrayDeleter {
 
 // Vertex layout through DSA: buffers attach to binding points, attributes read from bindings.
 class VertexArray {
-public:
+  public:
     VertexArray();
     void bind_buffer(GLuint binding, const Buffer& buffer, GLsizei stride, GLintptr offset = 0,
                      GLuint divisor = 0);
@@ -20,7 +20,7 @@ public:
     void bind() const;
     GLuint id() const { return handle_.id(); }
 
-private:
+  private:
     Handle<VertexArrayDeleter> handle_;
 };
 

@@ -4,11 +4,10 @@
 // Every value keeps where it came from so later checks can still report file:line:col.
 #include <cstdint>
 #include <filesystem>
+#include <glm/glm.hpp>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <glm/glm.hpp>
 
 namespace bz::level {
 
@@ -19,10 +18,10 @@ struct SourcePos {
 };
 
 struct ObjectDesc {
-    std::string kind;                 // "cube", "pyramid", "tall_box", ... or "model"
-    std::filesystem::path model;      // resolved path, only for kind == "model"
-    glm::dvec3 position{0.0};         // world units; y up; the ground is y = 0
-    double heading_deg = 0.0;         // rotation about +y: 0 faces -z, +90 faces -x (left)
+    std::string kind;             // "cube", "pyramid", "tall_box", ... or "model"
+    std::filesystem::path model;  // resolved path, only for kind == "model"
+    glm::dvec3 position{0.0};     // world units; y up; the ground is y = 0
+    double heading_deg = 0.0;     // rotation about +y: 0 faces -z, +90 faces -x (left)
     double scale = 1.0;
     glm::vec3 color{0.2f, 1.0f, 0.3f};  // linear RGB line colour
     SourcePos pos;
@@ -43,16 +42,16 @@ struct EnemyRules {
     bool super_tank = true;
     bool missile = true;
     bool saucer = true;
-    int super_tank_score = 10000;   // super tanks may appear from this score
-    int missile_score = 10000;      // missiles may appear from this score
-    int saucer_score = 2000;        // the saucer may appear from this score
+    int super_tank_score = 10000;  // super tanks may appear from this score
+    int missile_score = 10000;     // missiles may appear from this score
+    int saucer_score = 2000;       // the saucer may appear from this score
     double spawn_min_distance = 40.0;
     double spawn_max_distance = 90.0;
     double spawn_rear_chance = 0.1;  // share of spawns placed in the 90 degrees behind the player
-    double aggression = 0.5;        // 0 = passive, 1 = relentless
-    double fire_interval = 6.0;     // seconds an enemy tank reloads between shots
-    double aim_error_deg = 6.0;     // an enemy shell leaves up to this far off the gun's line
-    bool hold_fire = false;         // tanks shoot only once the player has fired at them
+    double aggression = 0.5;         // 0 = passive, 1 = relentless
+    double fire_interval = 6.0;      // seconds an enemy tank reloads between shots
+    double aim_error_deg = 6.0;      // an enemy shell leaves up to this far off the gun's line
+    bool hold_fire = false;          // tanks shoot only once the player has fired at them
     int slow_tank_points = 1000;
     int super_tank_points = 3000;
     int missile_points = 2000;
@@ -78,7 +77,7 @@ struct CameraKey {
 };
 
 struct RenderSettings {
-    std::string style = "vector";  // a scene::Style name (scene/style.h); old names too
+    std::string style = "vector";     // a scene::Style name (scene/style.h); old names too
     std::string preset = "balanced";  // "fast", "balanced", "high"
     std::optional<double> line_width_px;
     std::optional<double> crease_angle_deg;
@@ -104,11 +103,11 @@ struct Level {
     // The canonical folders its models, and every file a model refers to, may be read from:
     // the level's own folder and the project's data/ folder (empty for a built-in level).
     std::vector<std::filesystem::path> model_folders;
-    double field_size = 400.0;   // square field, centred on the origin, side in world units
-    bool wrap = true;            // leaving one edge enters the opposite one
+    double field_size = 400.0;  // square field, centred on the origin, side in world units
+    bool wrap = true;           // leaving one edge enters the opposite one
     glm::dvec3 player_start{0.0};
     double player_heading_deg = 0.0;
-    int player_lives = 3;                        // tanks at the start of a game
+    int player_lives = 3;                          // tanks at the start of a game
     std::vector<int> bonus_scores{15000, 100000};  // a bonus tank at each, increasing
     std::vector<ObjectDesc> obstacles;
     EnemyRules enemies;

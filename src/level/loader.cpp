@@ -5,8 +5,8 @@
 #include "core/error.h"
 #include "core/io/file_io.h"
 #include "level/sections/sections.h"
-#include "level/syntax/syntax.h"
 #include "level/sections/table_reader.h"
+#include "level/syntax/syntax.h"
 
 namespace bz::level {
 namespace fs = std::filesystem;

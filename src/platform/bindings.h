@@ -31,9 +31,9 @@ enum class Action : std::uint8_t {
     volume_up,
     volume_down,
     quit,
-    show_fps,  // the frame-rate and frame-time readout
-    start,  // begin a game, confirm (menus, initials)
-    back,   // menus and initials: go back, delete
+    show_fps,     // the frame-rate and frame-time readout
+    start,        // begin a game, confirm (menus, initials)
+    back,         // menus and initials: go back, delete
     cycle_style,  // the next look (scene::next_style), for this run only
     count
 };

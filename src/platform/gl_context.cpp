@@ -67,7 +67,9 @@ GlContext::~GlContext() {
     if (window_) SDL_DestroyWindow(window_);
 }
 
-std::string GlContext::renderer_name() const { return gl::renderer_name(); }
+std::string GlContext::renderer_name() const {
+    return gl::renderer_name();
+}
 
 std::string start_video() {
     init_video();
@@ -79,7 +81,9 @@ bool is_invisible_driver(const std::string& driver) {
     return driver == "offscreen" || driver == "dummy" || driver == "evdev";
 }
 
-bool GlContext::is_software() const { return gl::is_software_renderer(); }
+bool GlContext::is_software() const {
+    return gl::is_software_renderer();
+}
 
 void GlContext::drawable_size(int& w, int& h) const {
     SDL_GL_GetDrawableSize(window_, &w, &h);

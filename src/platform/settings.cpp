@@ -5,8 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
-#include <utility>
 #include <sstream>
+#include <utility>
 
 #include "core/error.h"
 #include "core/io/file_io.h"
@@ -82,8 +82,9 @@ class Reader {
         if (total > kMaxSettingsErrors) {
             found_.resize(kMaxSettingsErrors - 1);
             const std::size_t left_out = total - found_.size();
-            found_.push_back({0, 0, source_ + ": error: " + std::to_string(left_out) +
-                                        " more errors not shown"});
+            found_.push_back(
+                {0, 0,
+                 source_ + ": error: " + std::to_string(left_out) + " more errors not shown"});
         }
         for (auto& f : found_) out_.errors.push_back(std::move(f.text));
         found_.clear();
@@ -145,8 +146,8 @@ class Reader {
                 for (std::size_t i = 0; i < kActionCount; ++i) {
                     list += (i ? ", " : "") + std::string(action_name(static_cast<Action>(i)));
                 }
-                error_at(name.source().begin, "unknown action '" + printable(name.str()) +
-                                                  "' (actions: " + list + ")");
+                error_at(name.source().begin,
+                         "unknown action '" + printable(name.str()) + "' (actions: " + list + ")");
                 continue;
             }
             std::vector<const toml::node*> items;
@@ -163,8 +164,7 @@ class Reader {
                 const auto key = text ? parse_key(*text, &why) : std::nullopt;
                 if (!text) why = "a key must be a string such as \"Space\"";
                 if (!key) {
-                    error(item,
-                          printable(name.str()) + ": " + why + "; keeping the default keys");
+                    error(item, printable(name.str()) + ": " + why + "; keeping the default keys");
                     ok = false;
                     break;
                 }
@@ -175,11 +175,10 @@ class Reader {
     }
 
     void unknown_keys(const toml::table& t) {
-        static constexpr std::string_view kKnown[] = {"keys",   "volume",     "mute",
-                                                      "vsync",  "fullscreen", "pause_on_focus_loss",
-                                                      "preset", "style",      "gamepad",
-                                                      "show_fps", "difficulty", "beam",
-                                                      "overlay",  "hold_41hz",  "line_method"};
+        static constexpr std::string_view kKnown[] = {
+            "keys",    "volume",    "mute",       "vsync",    "fullscreen", "pause_on_focus_loss",
+            "preset",  "style",     "gamepad",    "show_fps", "difficulty", "beam",
+            "overlay", "hold_41hz", "line_method"};
         for (const auto& [name, value] : t) {
             if (std::find(std::begin(kKnown), std::end(kKnown), name.str()) == std::end(kKnown)) {
                 error_at(name.source().begin, "unknown setting '" + printable(name.str()) + "'");
@@ -267,8 +266,8 @@ SettingsLoad parse_settings(std::string_view text, const std::string& source,
         out.preset_given = true;
     }
     // scene::accepted_style_names(); platform may not link scene (tests/app checks they match).
-    const std::string styles[] = {"vector", "vector-xray", "toon",     "sketch",
-                                  "pop-art", "halo",       "occluded", "arcade"};
+    const std::string styles[] = {"vector",  "vector-xray", "toon",     "sketch",
+                                  "pop-art", "halo",        "occluded", "arcade"};
     if (const int i = r.choice(t, "style", styles, s.style); i >= 0) {
         s.style = styles[i];
         out.style_given = true;
@@ -335,7 +334,8 @@ std::string format_settings(const Settings& s) {
       << "         # Battlezone's cabinet overlay: top fifth red, the rest green\n"
       << "hold_41hz = " << (s.hold_41hz ? "true" : "false")
       << "       # the original's ~41 Hz refresh, frames held\n"
-      << (s.line_method.empty() ? "# line_method = \"auto\"" : "line_method = \"" + s.line_method + "\"")
+      << (s.line_method.empty() ? "# line_method = \"auto\""
+                                : "line_method = \"" + s.line_method + "\"")
       << "  # \"auto\" (per frame), \"compute\" or \"geometry_shader\"; unset: the preset's\n"
       << "gamepad = " << quoted(s.gamepad == GamepadMode::tank ? "tank" : "drive")
       << "          # \"tank\" (two sticks, one per tread) or \"drive\" (left stick)\n"

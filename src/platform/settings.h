@@ -23,10 +23,10 @@ struct Settings {
     bool pause_on_focus_loss = true;
     std::string preset = "balanced";
     std::string style = "vector";  // a style name (scene/style.h)
-    std::string beam = "mame";       // the vector beam's look: "mame" or "classic"
-    bool overlay = false;            // Battlezone's red/green cabinet overlay
-    bool hold_41hz = false;          // the original's ~41 Hz refresh, frames held
-    std::string line_method;         // "compute", "geometry_shader", "auto" or empty: the preset's
+    std::string beam = "mame";     // the vector beam's look: "mame" or "classic"
+    bool overlay = false;          // Battlezone's red/green cabinet overlay
+    bool hold_41hz = false;        // the original's ~41 Hz refresh, frames held
+    std::string line_method;       // "compute", "geometry_shader", "auto" or empty: the preset's
     GamepadMode gamepad = GamepadMode::tank;
     bool show_fps = false;  // the frame-rate readout (toggled by its key too)
     // "easy", "normal" or "arcade"; "level" lets each level choose (its [enemies] difficulty).

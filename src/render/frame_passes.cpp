@@ -59,10 +59,16 @@ void edge_quads_counted(const PassContext& ctx) {
     if (counting_edges(ctx)) ctx.edge_counter->count_records(ctx.edges.command());
 }
 
-void edge_quads_mask(const PassContext& ctx) { pass_edge_quads(ctx, true); }
+void edge_quads_mask(const PassContext& ctx) {
+    pass_edge_quads(ctx, true);
+}
 
-void sketch_strokes(const PassContext& ctx) { pass_sketch(ctx, false); }
-void sketch_mask(const PassContext& ctx) { pass_sketch(ctx, true); }
+void sketch_strokes(const PassContext& ctx) {
+    pass_sketch(ctx, false);
+}
+void sketch_mask(const PassContext& ctx) {
+    pass_sketch(ctx, true);
+}
 
 // The beam passes hand the picture on (FramePicture). With the phosphor on, bloom and
 // composite take this frame's phosphor step: the composite stores the new picture, which then
@@ -81,14 +87,20 @@ void bloom(const PassContext& ctx) {
 
 void composite(const PassContext& ctx) {
     const PhosphorStep* step = phosphor(ctx);
-    pass_composite(ctx, *ctx.picture->texture, ctx.picture->bloom, ctx.target_fbo, ctx.targets.width,
-                   ctx.targets.height, step);
+    pass_composite(ctx, *ctx.picture->texture, ctx.picture->bloom, ctx.target_fbo,
+                   ctx.targets.width, ctx.targets.height, step);
     if (step) ctx.picture->texture = &finish_phosphor(ctx, *step);
 }
 
-void outline_baseline(const PassContext& ctx) { pass_image_outline(ctx, false); }
-void lines_mask(const PassContext& ctx) { pass_lines(ctx, true); }
-void outline_mask(const PassContext& ctx) { pass_image_outline(ctx, true); }
+void outline_baseline(const PassContext& ctx) {
+    pass_image_outline(ctx, false);
+}
+void lines_mask(const PassContext& ctx) {
+    pass_lines(ctx, true);
+}
+void outline_mask(const PassContext& ctx) {
+    pass_image_outline(ctx, true);
+}
 
 }  // namespace
 

@@ -8,7 +8,7 @@
 namespace bz::render {
 
 struct FramePass {
-    const char* name;                     // the timer's name for it ("prepass", "fill", ...)
+    const char* name;  // the timer's name for it ("prepass", "fill", ...)
     void (*run)(const PassContext& ctx);
 };
 

@@ -75,12 +75,13 @@ struct Renderer::Impl {
                         const CameraMatrices& cam, const StyleDef& style, GLsizei hud_count,
                         GLuint target, const scene::FrameList& frame, FramePicture* picture) {
         const int view_rows = scene_view_rows(frame.view_top, height);
-        return PassContext{programs,  targets,  gpu_meshes, meshes,
-                           batches,   cam,      frame_settings, style.hidden_lines_removed,
-                           empty_vao, instances, edges,     style,
-                           style_textures, hud_vao, hud_count, target,
-                           &stats,    &edge_counter, picture, frame.seed,
-                           view_rows};
+        return PassContext{
+            programs,       targets,       gpu_meshes,     meshes,
+            batches,        cam,           frame_settings, style.hidden_lines_removed,
+            empty_vao,      instances,     edges,          style,
+            style_textures, hud_vao,       hud_count,      target,
+            &stats,         &edge_counter, picture,        frame.seed,
+            view_rows};
     }
 
     CameraMatrices camera(const scene::FrameList& frame) const {
@@ -94,8 +95,9 @@ struct Renderer::Impl {
         // Far objects may draw a simplified mesh: count what is really submitted.
         b.stats.triangles_submitted = 0;
         for (const Batch& batch : b.batches) {
-            b.stats.triangles_submitted += gpu_meshes.get(meshes, batch.mesh, batch.lod).triangle_count() *
-                                           static_cast<std::size_t>(batch.instance_count);
+            b.stats.triangles_submitted +=
+                gpu_meshes.get(meshes, batch.mesh, batch.lod).triangle_count() *
+                static_cast<std::size_t>(batch.instance_count);
         }
         return b;
     }
@@ -119,7 +121,8 @@ struct Renderer::Impl {
         v.reserve(hud.size() * 12);
         for (const auto& l : hud) {
             const glm::vec3 c = l.color * l.intensity;
-            for (const glm::vec2& p : {l.a, l.b}) v.insert(v.end(), {p.x, p.y, c.r, c.g, c.b, l.intensity});
+            for (const glm::vec2& p : {l.a, l.b})
+                v.insert(v.end(), {p.x, p.y, c.r, c.g, c.b, l.intensity});
         }
         hud_vertices.set(std::span<const float>(v), GL_STREAM_DRAW);
         return static_cast<GLsizei>(hud.size() * 2);
@@ -143,11 +146,12 @@ void Renderer::resize(int width, int height) {
 
 void Renderer::set_settings(const RenderSettings& settings) {
     const BeamSettings& old_beam = impl_->settings.beam;
-    const bool remake = settings.depth != impl_->settings.depth ||
-                        settings.bloom_resolution != impl_->settings.bloom_resolution ||
-                        settings.method != impl_->settings.method || settings.beam.bloom != old_beam.bloom ||
-                        settings.beam.mip_weights.size() != old_beam.mip_weights.size() ||
-                        (settings.beam.phosphor == PhosphorDecay::off) != (old_beam.phosphor == PhosphorDecay::off);
+    const bool remake =
+        settings.depth != impl_->settings.depth ||
+        settings.bloom_resolution != impl_->settings.bloom_resolution ||
+        settings.method != impl_->settings.method || settings.beam.bloom != old_beam.bloom ||
+        settings.beam.mip_weights.size() != old_beam.mip_weights.size() ||
+        (settings.beam.phosphor == PhosphorDecay::off) != (old_beam.phosphor == PhosphorDecay::off);
     const bool new_kernel = settings.bloom_taps != impl_->settings.bloom_taps ||
                             settings.bloom_sigma_px != impl_->settings.bloom_sigma_px;
     if (new_kernel) impl_->programs.bloom_blur = load_bloom_blur(settings);
@@ -159,8 +163,12 @@ void Renderer::set_settings(const RenderSettings& settings) {
     }
 }
 
-const RenderSettings& Renderer::settings() const { return impl_->settings; }
-LineMethod Renderer::line_method_drawn() const { return impl_->frame_settings.method; }
+const RenderSettings& Renderer::settings() const {
+    return impl_->settings;
+}
+LineMethod Renderer::line_method_drawn() const {
+    return impl_->frame_settings.method;
+}
 
 namespace {
 
@@ -181,11 +189,13 @@ void Renderer::render(const scene::FrameList& frame, const scene::MeshLibrary& m
         m.last_target = held_target;
         const CameraMatrices cam = m.camera(frame);
         const FrameBatches none;
-        const PassContext ctx = m.context(meshes, none, cam, m.style_of(frame), 0, held_target, frame, nullptr);
+        const PassContext ctx =
+            m.context(meshes, none, cam, m.style_of(frame), 0, held_target, frame, nullptr);
         m.timer.begin_frame();
         m.edge_counter.begin_frame();
         m.timer.begin("composite");
-        pass_composite(ctx, *m.last_picture, m.settings.bloom_strength > 0.0f, held_target, m.width, m.height);
+        pass_composite(ctx, *m.last_picture, m.settings.bloom_strength > 0.0f, held_target, m.width,
+                       m.height);
         m.timer.end();
         m.timer.end_frame();
         m.stats.feature_edges = m.edge_counter.end_frame();  // a held frame draws none itself
@@ -202,8 +212,10 @@ void Renderer::render(const scene::FrameList& frame, const scene::MeshLibrary& m
     const GLuint target = target_fbo == kOffscreen ? m.targets.output_fbo.id() : target_fbo;
     m.last_target = target;
     // The first picture after new targets has no past: its history is black either way.
-    FramePicture picture{&m.targets.lines, m.last_picture ? frame.time_s - m.last_time_s : 0.0, false, {}};
-    const PassContext ctx = m.context(meshes, batches, cam, style, hud_count, target, frame, &picture);
+    FramePicture picture{
+        &m.targets.lines, m.last_picture ? frame.time_s - m.last_time_s : 0.0, false, {}};
+    const PassContext ctx =
+        m.context(meshes, batches, cam, style, hud_count, target, frame, &picture);
 
     // The frame is the style's list of passes (frame_passes.cpp), each timed under its name.
     m.timer.begin_frame();
@@ -228,8 +240,8 @@ std::vector<std::uint8_t> Renderer::render_mask(const scene::FrameList& frame,
     m.gpu_meshes.set_edge_lists(mask_needs_edge_buffer(style, m.settings));
     const FrameBatches batches = m.prepare(frame, meshes, cam);
     m.choose_line_method(batches, style, mask_needs_edge_buffer);
-    const PassContext ctx = m.context(meshes, batches, cam, style, 0, m.targets.output_fbo.id(),
-                                      frame, nullptr);
+    const PassContext ctx =
+        m.context(meshes, batches, cam, style, 0, m.targets.output_fbo.id(), frame, nullptr);
     for (const FramePass& pass : mask_passes(style, m.frame_settings)) pass.run(ctx);
     std::vector<std::uint8_t> rows(static_cast<std::size_t>(m.width) * m.height);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
@@ -261,7 +273,9 @@ std::vector<std::uint8_t> Renderer::read_color() {
     return out;
 }
 
-std::vector<float> Renderer::read_lines_hdr() { return read_hdr(impl_->targets.lines); }
+std::vector<float> Renderer::read_lines_hdr() {
+    return read_hdr(impl_->targets.lines);
+}
 
 std::vector<float> Renderer::read_picture_hdr() {
     return read_hdr(impl_->last_picture ? *impl_->last_picture : impl_->targets.lines);
@@ -276,8 +290,10 @@ std::vector<float> Renderer::read_hdr(const gl::Texture2D& texture) {
                       static_cast<GLsizei>(rows.size() * sizeof(float)), rows.data());
     std::vector<float> out(rows.size());
     for (int y = 0; y < m.height; ++y) {
-        std::copy_n(rows.begin() + static_cast<std::ptrdiff_t>(static_cast<std::size_t>(y) * row), row,
-                    out.begin() + static_cast<std::ptrdiff_t>(static_cast<std::size_t>(m.height - 1 - y) * row));
+        std::copy_n(
+            rows.begin() + static_cast<std::ptrdiff_t>(static_cast<std::size_t>(y) * row), row,
+            out.begin() +
+                static_cast<std::ptrdiff_t>(static_cast<std::size_t>(m.height - 1 - y) * row));
     }
     return out;
 }
@@ -292,12 +308,26 @@ bool Renderer::reload_shaders(std::string* error) {
     }
 }
 
-const std::vector<gl::PassTime>& Renderer::pass_times() const { return impl_->timer.last_results(); }
-int Renderer::pass_times_latency() const { return impl_->timer.latency(); }
-gl::TimingMethod Renderer::timing_method() const { return impl_->timer.method(); }
-std::size_t Renderer::gpu_mesh_uploads() const { return impl_->gpu_meshes.uploads(); }
-const FrameStats& Renderer::stats() const { return impl_->stats; }
-int Renderer::width() const { return impl_->width; }
-int Renderer::height() const { return impl_->height; }
+const std::vector<gl::PassTime>& Renderer::pass_times() const {
+    return impl_->timer.last_results();
+}
+int Renderer::pass_times_latency() const {
+    return impl_->timer.latency();
+}
+gl::TimingMethod Renderer::timing_method() const {
+    return impl_->timer.method();
+}
+std::size_t Renderer::gpu_mesh_uploads() const {
+    return impl_->gpu_meshes.uploads();
+}
+const FrameStats& Renderer::stats() const {
+    return impl_->stats;
+}
+int Renderer::width() const {
+    return impl_->width;
+}
+int Renderer::height() const {
+    return impl_->height;
+}
 
 }  // namespace bz::render

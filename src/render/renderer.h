@@ -27,7 +27,7 @@ struct FrameStats {
 };
 
 class Renderer {
-public:
+  public:
     // Pass as target_fbo to composite into the renderer's own RGBA8 image (headless use).
     static constexpr unsigned kOffscreen = ~0u;
 
@@ -78,7 +78,7 @@ public:
     int width() const;
     int height() const;
 
-private:
+  private:
     std::vector<float> read_hdr(const gl::Texture2D& texture);
     struct Impl;
     std::unique_ptr<Impl> impl_;

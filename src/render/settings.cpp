@@ -20,16 +20,21 @@ LineMethod parse_line_method(std::string_view name) {
 
 const char* line_method_name(LineMethod method) {
     switch (method) {
-        case LineMethod::geometry_shader: return "geometry_shader";
-        case LineMethod::compute: return "compute";
-        case LineMethod::image_outline: return "image_outline";
-        case LineMethod::automatic: return "auto";
+        case LineMethod::geometry_shader:
+            return "geometry_shader";
+        case LineMethod::compute:
+            return "compute";
+        case LineMethod::image_outline:
+            return "image_outline";
+        case LineMethod::automatic:
+            return "auto";
     }
     return "?";
 }
 
 const std::vector<LineMethod>& feature_line_methods() {
-    static const std::vector<LineMethod> methods = {LineMethod::compute, LineMethod::geometry_shader};
+    static const std::vector<LineMethod> methods = {LineMethod::compute,
+                                                    LineMethod::geometry_shader};
     return methods;
 }
 

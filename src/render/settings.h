@@ -81,11 +81,11 @@ struct BeamSettings {
     float width_min_px = 1.0f * kMameBeamWidthUnitPx;  // MAME's 1 and 4 (vector-mono.ini)
     float width_max_px = 4.0f * kMameBeamWidthUnitPx;
     float intensity_weight = 0.75f;
-    float nominal = 0.75f;        // the MAME intensity (0..1) of a line of intensity 1
-    float flicker = 0.0f;         // intensity -= intensity * random * flicker, per line
+    float nominal = 0.75f;  // the MAME intensity (0..1) of a line of intensity 1
+    float flicker = 0.0f;   // intensity -= intensity * random * flicker, per line
     // Dwell (MAME issue #399): the beam spends a fixed time on every vector, so short vectors
     // and dots get more energy per pixel: gain = (length + dwell) / length, at most dwell_max.
-    float dwell_px = 0.0f;        // at 1080 lines
+    float dwell_px = 0.0f;  // at 1080 lines
     float dwell_max = 1.0f;
     // Overdrive (MAME issue #14180): above MAME intensity 1 the spot widens and softens
     // instead of clipping: width x (1 + defocus * excess), peak / that factor.
@@ -105,8 +105,8 @@ struct BeamSettings {
     // Black level of the glow: this much is taken off the finished bloom, so the wide levels'
     // faint wash over the whole screen stays black (a tube's brightness knob turned down).
     float bloom_floor = 0.0f;
-    bool overlay = false;            // Battlezone's overlay: top 20% red, the rest green
-    float refresh_hz = 0.0f;         // > 0: hold frames to this refresh (the original's ~41 Hz)
+    bool overlay = false;     // Battlezone's overlay: top 20% red, the rest green
+    float refresh_hz = 0.0f;  // > 0: hold frames to this refresh (the original's ~41 Hz)
 };
 
 struct RenderSettings {
@@ -127,15 +127,15 @@ struct RenderSettings {
     float spine_sample_spacing_px = 1.0f;
     float crease_angle_deg = 60.0f;
     BloomResolution bloom_resolution = BloomResolution::half;
-    int bloom_taps = 9;             // linear-sampled taps per direction (odd)
-    float bloom_sigma_px = 4.0f;    // Gaussian sigma, in pixels of the bloom target
+    int bloom_taps = 9;           // linear-sampled taps per direction (odd)
+    float bloom_sigma_px = 4.0f;  // Gaussian sigma, in pixels of the bloom target
     float bloom_strength = 1.0f;
     float exposure = 1.0f;
     bool frustum_culling = true;
-    bool lod = true;                // raise the crease threshold / use simplified meshes far away
-    bool count_edges = false;       // count emitted feature edges (costs a query per frame)
+    bool lod = true;           // raise the crease threshold / use simplified meshes far away
+    bool count_edges = false;  // count emitted feature edges (costs a query per frame)
     LineMethod method = kDefaultLineMethod;
-    bool instancing = true;         // false: one draw call per object (for measuring batching)
+    bool instancing = true;  // false: one draw call per object (for measuring batching)
     // image_outline thresholds: relative depth step, and normal step as a crease angle.
     float outline_depth_threshold = 0.1f;
     // Draw every frame in this style instead of the frame list's own (bench --style, the

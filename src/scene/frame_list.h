@@ -2,9 +2,8 @@
 // What one frame shows, as plain data: the game and level code fill it, the renderer draws it.
 // Nothing here knows about GL, and the renderer never learns what a tank is.
 #include <cstdint>
-#include <vector>
-
 #include <glm/glm.hpp>
+#include <vector>
 
 #include "scene/style.h"
 

@@ -13,7 +13,7 @@
 namespace bz::scene {
 
 class MeshLibrary {
-public:
+  public:
     // Adds a mesh under a unique name (a model path or "builtin:cube" and so on); adding an
     // existing name replaces its mesh and bumps its version.
     MeshId add(const std::string& name, geo::AdjacencyMesh mesh);
@@ -24,7 +24,7 @@ public:
     const geo::Bounds& bounds(MeshId id) const { return entries_.at(id).bounds; }
     std::size_t size() const { return entries_.size(); }
 
-private:
+  private:
     struct Entry {
         std::string name;
         std::shared_ptr<const geo::AdjacencyMesh> mesh;

@@ -12,7 +12,7 @@ namespace bz::scene {
 enum class TextAlign { left, center, right };
 
 class VectorFont {
-public:
+  public:
     // Loads a Hershey .jhf file; throws UserError naming file:line on a malformed glyph.
     explicit VectorFont(const std::filesystem::path& jhf_file);
     // The font shipped in data/fonts (Hershey "futural").
@@ -25,9 +25,9 @@ public:
     float width(std::string_view text, float height) const;
     std::size_t glyph_count() const { return glyphs_.size(); }
 
-private:
+  private:
     struct Glyph {
-        float left = 0.0f, right = 0.0f;               // advance = right - left
+        float left = 0.0f, right = 0.0f;              // advance = right - left
         std::vector<std::vector<glm::vec2>> strokes;  // font units, y down as in the file
     };
     const Glyph* glyph(unsigned char c) const;  // nullptr when the font has no such glyph

@@ -31,7 +31,8 @@ struct Frame {
 
 // HUD units (origin at the centre, y up, 1 = half the height) to PNG pixels (row 0 on top).
 glm::ivec2 px(glm::vec2 hud) {
-    return {static_cast<int>(kW * 0.5f + hud.x * kH * 0.5f), static_cast<int>(kH * 0.5f - hud.y * kH * 0.5f)};
+    return {static_cast<int>(kW * 0.5f + hud.x * kH * 0.5f),
+            static_cast<int>(kH * 0.5f - hud.y * kH * 0.5f)};
 }
 
 }  // namespace
@@ -47,8 +48,10 @@ TEST_F(GameFrameTest, LightsHudAndLevelWhereTheyBelong) {
     for (int i = 0; i < 30; ++i) game.tick(bz::game::TickCommand{});
     ASSERT_EQ(game.screen(), bz::game::Screen::playing);
 
-    bz::render::Renderer renderer(bz::render::preset("balanced"), kW, kH, bz::gl::TimingMethod::off);
-    renderer.render(game.frame(1.0, double(kW) / kH), game.meshes(), bz::render::Renderer::kOffscreen);
+    bz::render::Renderer renderer(bz::render::preset("balanced"), kW, kH,
+                                  bz::gl::TimingMethod::off);
+    renderer.render(game.frame(1.0, double(kW) / kH), game.meshes(),
+                    bz::render::Renderer::kOffscreen);
     const Frame f{renderer.read_color()};
     const auto out = std::filesystem::path(BEAMZONE_BINARY_DIR) / "test-out";
     std::filesystem::create_directories(out);
@@ -68,7 +71,8 @@ TEST_F(GameFrameTest, LightsHudAndLevelWhereTheyBelong) {
     // The level: horizon, mountains and obstacles light the band around the horizon line
     // across the whole width.
     for (int x0 = 0; x0 < kW; x0 += kW / 4) {
-        EXPECT_GT(f.lit({x0, kH * 2 / 5}, {x0 + kW / 4, kH * 3 / 5}, 1), 40) << "horizon band from x " << x0;
+        EXPECT_GT(f.lit({x0, kH * 2 / 5}, {x0 + kW / 4, kH * 3 / 5}, 1), 40)
+            << "horizon band from x " << x0;
     }
     // Nothing fills the ground near the bottom edge.
     EXPECT_LT(f.lit({0, kH * 9 / 10}, {kW, kH}, 1), kW * kH / 100) << "ground";

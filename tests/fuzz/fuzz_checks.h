@@ -6,8 +6,7 @@
 
 namespace bz::fuzz {
 
-inline void check_message(std::string_view message, std::string_view file_prefix,
-                          bool positioned) {
+inline void check_message(std::string_view message, std::string_view file_prefix, bool positioned) {
     if (message.substr(0, file_prefix.size()) != file_prefix) __builtin_trap();
     if (message.size() > 2000) __builtin_trap();
     for (const char c : message) {

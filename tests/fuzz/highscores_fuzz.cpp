@@ -15,7 +15,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (r.errors.size() > 100) __builtin_trap();
     for (const std::string& e : r.errors) bz::fuzz::check_message(e, "hs.toml:", false);
     for (const auto& [key, table] : r.book.tables()) {
-        if (table.entries().empty() || table.entries().size() > HighScoreTable::kSize) __builtin_trap();
+        if (table.entries().empty() || table.entries().size() > HighScoreTable::kSize)
+            __builtin_trap();
         if (key.name.size() > kMaxLevelNameBytes) __builtin_trap();
         for (std::size_t i = 1; i < table.entries().size(); ++i) {
             if (table.entries()[i - 1].score < table.entries()[i].score) __builtin_trap();

@@ -30,13 +30,20 @@ namespace fs = std::filesystem;
 
 const char* extension_for(char selector) {
     switch (selector) {
-        case 'p': return ".ply";
-        case 'f': return ".off";
-        case 's': return ".stl";
-        case 'g': return ".gltf";
-        case 'b': return ".glb";
-        case 'z': return ".3mf";
-        default: return ".obj";
+        case 'p':
+            return ".ply";
+        case 'f':
+            return ".off";
+        case 's':
+            return ".stl";
+        case 'g':
+            return ".gltf";
+        case 'b':
+            return ".glb";
+        case 'z':
+            return ".3mf";
+        default:
+            return ".obj";
     }
 }
 
@@ -44,7 +51,8 @@ const char* extension_for(char selector) {
 // FIFO (must be refused, never opened) and a file outside the folder (must not be read).
 const fs::path& work_dir() {
     static const fs::path dir = [] {
-        const fs::path root = fs::temp_directory_path() / ("bz_import_fuzz_" + std::to_string(::getpid()));
+        const fs::path root =
+            fs::temp_directory_path() / ("bz_import_fuzz_" + std::to_string(::getpid()));
         fs::create_directories(root / "model");
         std::ofstream(root / "model" / "side.mtl") << "newmtl m\nKd 1 0 0\n";
         std::ofstream(root / "model" / "side.bin", std::ios::binary) << std::string(48, '\0');

@@ -20,15 +20,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const auto& s = r.settings;
     if (!(s.volume >= 0.0f && s.volume <= 1.0f)) __builtin_trap();
     // The style names of scene/style.h, old ones included (this target does not link scene).
-    static const std::string styles[] = {"vector", "vector-xray", "toon",     "sketch",
-                                         "pop-art", "halo",       "occluded", "arcade"};
+    static const std::string styles[] = {"vector",  "vector-xray", "toon",     "sketch",
+                                         "pop-art", "halo",        "occluded", "arcade"};
     bool known_style = false;
     for (const std::string& name : styles) known_style = known_style || s.style == name;
     if (!known_style) __builtin_trap();
     // A file that loaded cleanly is written back in a form that loads to the same settings.
     if (r.errors.empty()) {
-        const auto again = bz::platform::parse_settings(bz::platform::format_settings(s),
-                                                        "again.toml", presets);
+        const auto again =
+            bz::platform::parse_settings(bz::platform::format_settings(s), "again.toml", presets);
         if (!again.errors.empty() || again.settings.keys != s.keys ||
             again.settings.preset != s.preset) {
             __builtin_trap();

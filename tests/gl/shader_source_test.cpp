@@ -11,7 +11,9 @@
 namespace fs = std::filesystem;
 
 namespace {
-void write(const fs::path& p, const std::string& s) { std::ofstream(p) << s; }
+void write(const fs::path& p, const std::string& s) {
+    std::ofstream(p) << s;
+}
 }  // namespace
 
 TEST(ShaderSource, IncludesAndDefinesKeepLineNumbers) {

@@ -13,7 +13,9 @@ namespace {
 using test::has_one_error;
 using test::level_text;
 
-LoadResult load(std::string_view text, LoadOptions options = {}) { return test::load_text(text, options); }
+LoadResult load(std::string_view text, LoadOptions options = {}) {
+    return test::load_text(text, options);
+}
 
 TEST(LoaderSchema, SmallestLevelGetsDefaults) {
     const auto r = load(level_text(""));

@@ -22,7 +22,7 @@ class ScreenshotNumbers : public ::testing::Test {
 };
 
 TEST_F(ScreenshotNumbers, HugeExistingNumbersNeverMakeShotsShareAName) {
-    touch("screenshot-9223372036854775807.png");   // LONG_MAX
+    touch("screenshot-9223372036854775807.png");      // LONG_MAX
     touch("screenshot-99999999999999999999999.png");  // past any integer type
     touch("screenshot-99999999.png");                 // the last number of the range
     std::set<fs::path> names;

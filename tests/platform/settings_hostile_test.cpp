@@ -59,8 +59,9 @@ TEST(SettingsUnknownKeys, MessagesStopAtOneHundred) {
 }
 
 TEST(SettingsUntrustedText, ControlCharactersInKeysAreEscaped) {
-    const SettingsLoad r = parse("\"bad\\u001b[2Jkey\\nx\" = 1\n[keys]\n\"f\\u0000ire\" = [\"Space\"]\n"
-                                 "fire = [\"\\u001b]0;x\"]\n");
+    const SettingsLoad r = parse(
+        "\"bad\\u001b[2Jkey\\nx\" = 1\n[keys]\n\"f\\u0000ire\" = [\"Space\"]\n"
+        "fire = [\"\\u001b]0;x\"]\n");
     ASSERT_EQ(r.errors.size(), 3u);
     for (const std::string& e : r.errors) {
         for (const char c : e) EXPECT_GE(static_cast<unsigned char>(c), 0x20u) << e;

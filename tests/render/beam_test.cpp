@@ -1,7 +1,7 @@
 // The vector beam (render::BeamSettings): phosphor decay in elapsed time, additive against max
 // blending, beam dwell, overdrive defocus, flicker and MAME's lengthened ends. HUD lines are
-// drawn through the same beam maths as scene lines (shaders/beam/beam_width.glsl) and need no meshes
-// or camera, so most tests draw HUD lines and read the HDR picture that bloom and composite
+// drawn through the same beam maths as scene lines (shaders/beam/beam_width.glsl) and need no
+// meshes or camera, so most tests draw HUD lines and read the HDR picture that bloom and composite
 // see; the lengthening tests also draw scene lines, in both line methods.
 #include <gtest/gtest.h>
 
@@ -22,7 +22,9 @@ constexpr int kH = 240;
 
 // HUD units (origin at the centre, y up, 1 = half the height) of pixel centre (x, y), row 0 at
 // the top.
-glm::vec2 hud_at(float x, float y) { return {(x + 0.5f - kW * 0.5f) / (kH * 0.5f), (kH * 0.5f - y - 0.5f) / (kH * 0.5f)}; }
+glm::vec2 hud_at(float x, float y) {
+    return {(x + 0.5f - kW * 0.5f) / (kH * 0.5f), (kH * 0.5f - y - 0.5f) / (kH * 0.5f)};
+}
 
 bz::scene::HudLine line(glm::vec2 a, glm::vec2 b, float intensity) {
     return {a, b, glm::vec3(0.0f, 1.0f, 0.0f), intensity};
@@ -51,7 +53,7 @@ bz::scene::FrameList dark_frame(double time_s) {
 }
 
 class BeamTest : public RenderTest {
-protected:
+  protected:
     // Renders the frame and returns the green channel of the picture (row 0 at the top).
     std::vector<float> green(const bz::scene::FrameList& f) {
         renderer->render(f, meshes, bz::render::Renderer::kOffscreen);
@@ -60,8 +62,12 @@ protected:
         for (std::size_t i = 0; i < g.size(); ++i) g[i] = rgba[i * 4 + 1];
         return g;
     }
-    static float at(const std::vector<float>& img, int x, int y) { return img[static_cast<std::size_t>(y) * kW + x]; }
-    static float peak(const std::vector<float>& img) { return *std::max_element(img.begin(), img.end()); }
+    static float at(const std::vector<float>& img, int x, int y) {
+        return img[static_cast<std::size_t>(y) * kW + x];
+    }
+    static float peak(const std::vector<float>& img) {
+        return *std::max_element(img.begin(), img.end());
+    }
     float centre(const bz::scene::FrameList& f) { return at(green(f), 160, 120); }
     void use(const bz::render::RenderSettings& s) {
         settings = s;
@@ -89,7 +95,8 @@ TEST_F(BeamTest, PhosphorDecayFollowsExpOfElapsedTimeAtAnyFrameRate) {
     for (const double fps : {30.0, 144.0}) {
         use(s);  // new targets: the phosphor starts black
         const double left = phosphor_left(fps, until);
-        EXPECT_NEAR(left / expected, 1.0, 0.01) << fps << " fps: " << left << " left, expected " << expected;
+        EXPECT_NEAR(left / expected, 1.0, 0.01)
+            << fps << " fps: " << left << " left, expected " << expected;
     }
 }
 
@@ -116,8 +123,8 @@ TEST_F(BeamTest, WithoutPhosphorAnEmptyFrameIsBlack) {
 
 TEST_F(BeamTest, AdditiveBlendingAddsAtACrossingMaxDoesNot) {
     bz::scene::FrameList f;
-    f.hud.push_back(line(hud_at(60, 120), hud_at(260, 120), 1.0f));   // horizontal, row 120
-    f.hud.push_back(line(hud_at(160, 40), hud_at(160, 200), 1.0f));    // vertical, column 160
+    f.hud.push_back(line(hud_at(60, 120), hud_at(260, 120), 1.0f));  // horizontal, row 120
+    f.hud.push_back(line(hud_at(160, 40), hud_at(160, 200), 1.0f));  // vertical, column 160
     for (const auto blend : {bz::render::BeamBlend::max, bz::render::BeamBlend::additive}) {
         auto s = plain();
         s.beam.blend = blend;
@@ -129,7 +136,8 @@ TEST_F(BeamTest, AdditiveBlendingAddsAtACrossingMaxDoesNot) {
         if (blend == bz::render::BeamBlend::max) {
             EXPECT_NEAR(crossing, single, 1e-3f) << "GL_MAX: a crossing is as bright as one line";
         } else {
-            EXPECT_NEAR(crossing, 2.0f * single, 2e-3f * single) << "additive: a crossing is two lines";
+            EXPECT_NEAR(crossing, 2.0f * single, 2e-3f * single)
+                << "additive: a crossing is two lines";
         }
     }
 }
@@ -169,7 +177,8 @@ TEST_F(BeamTest, IntensityWidensTheBeamAndOverdriveKeepsWideningWithoutClipping)
         for (int y = 0; y < kH; ++y) width += at(img, 160, y) > 0.0f ? 1 : 0;
         EXPECT_GE(width, last_width) << "intensity " << intensity;
         const float p = at(img, 160, 120);
-        EXPECT_LT(p, 1.6f) << "intensity " << intensity << ": an overdriven beam spreads instead of clipping";
+        EXPECT_LT(p, 1.6f) << "intensity " << intensity
+                           << ": an overdriven beam spreads instead of clipping";
         last_width = width;
         last_peak = p;
     }
@@ -206,7 +215,9 @@ namespace {
 constexpr double kEyeDistance = 120.0 / 0.57735026918962576;  // kH / 2 / tan(30 deg)
 
 // World x at depth z of window x `px` (pixels from the left).
-double world_x(double px, double z) { return (px - kW * 0.5) * (kEyeDistance - z) / kEyeDistance; }
+double world_x(double px, double z) {
+    return (px - kW * 0.5) * (kEyeDistance - z) / kEyeDistance;
+}
 
 // A flat rectangle facing the camera, window x `x0`..`x1`, window rows (from the top) centred
 // on `row` and `rows` tall, at depth z. Its four sides are boundary edges, so a strip 0.2 px
@@ -214,7 +225,8 @@ double world_x(double px, double z) { return (px - kW * 0.5) * (kEyeDistance - z
 bz::geo::TriMesh rectangle(double x0, double x1, double row, double rows, double z) {
     const double s = (kEyeDistance - z) / kEyeDistance;
     const float l = static_cast<float>(world_x(x0, z)), r = static_cast<float>(world_x(x1, z));
-    const float y = static_cast<float>((kH * 0.5 - row - 0.5) * s), h = static_cast<float>(rows * 0.5 * s);
+    const float y = static_cast<float>((kH * 0.5 - row - 0.5) * s),
+                h = static_cast<float>(rows * 0.5 * s);
     const float zf = static_cast<float>(z);
     return {{{l, y - h, zf}, {r, y - h, zf}, {r, y + h, zf}, {l, y + h, zf}}, {0, 1, 2, 0, 2, 3}};
 }
@@ -222,7 +234,9 @@ bz::geo::TriMesh rectangle(double x0, double x1, double row, double rows, double
 // Where along row `y` the brightness first and last reaches half of the row's peak, with
 // linear interpolation between pixel centres (window x, pixels from the left).
 std::pair<double, double> half_peak_extent(const std::vector<float>& img, int y) {
-    const auto v = [&](int x) { return static_cast<double>(img[static_cast<std::size_t>(y) * kW + x]); };
+    const auto v = [&](int x) {
+        return static_cast<double>(img[static_cast<std::size_t>(y) * kW + x]);
+    };
     double top = 0.0;
     for (int x = 0; x < kW; ++x) top = std::max(top, v(x));
     const double half = 0.5 * top;
@@ -250,7 +264,8 @@ int brightest_row(const std::vector<float>& img) {
     double best_sum = -1.0;
     for (int y = 0; y < kH; ++y) {
         double sum = 0.0;
-        for (int x = 0; x < kW; ++x) sum += static_cast<double>(img[static_cast<std::size_t>(y) * kW + x]);
+        for (int x = 0; x < kW; ++x)
+            sum += static_cast<double>(img[static_cast<std::size_t>(y) * kW + x]);
         if (sum > best_sum) {
             best_sum = sum;
             best = y;
@@ -297,7 +312,8 @@ TEST_F(BeamTest, SceneLineEndsAreLengthenedInBothMethodsAndTheMaskIsNot) {
         EXPECT_NEAR(after.second - before.second, 3.0, 0.25) << "right end";
         const bz::test::Mask mask_after = mask("beam_strip_lengthened");
         EXPECT_GT(mask_after.count(), 150);
-        EXPECT_EQ(mask_after.pixels, mask_before.pixels) << "the accuracy mask ignores the beam's ends";
+        EXPECT_EQ(mask_after.pixels, mask_before.pixels)
+            << "the accuracy mask ignores the beam's ends";
     }
 }
 
@@ -320,6 +336,7 @@ TEST_F(BeamTest, ALengthenedEndShowsOnlyWhereItsEndPointIsVisible) {
         const int row = brightest_row(img);
         EXPECT_GT(at(img, 150, row), 0.5f) << "the visible part of the strip";
         for (int x = 202; x < 212; ++x) EXPECT_EQ(at(img, x, row), 0.0f) << "x " << x;
-        for (int x = 184; x < 200; ++x) EXPECT_EQ(at(img, x, row), 0.0f) << "behind the square, x " << x;
+        for (int x = 184; x < 200; ++x)
+            EXPECT_EQ(at(img, x, row), 0.0f) << "behind the square, x " << x;
     }
 }

@@ -16,7 +16,7 @@ using bz::test::RenderTest;
 namespace {
 
 class EdgeCounterTest : public RenderTest {
-protected:
+  protected:
     // Frames of 1, 2, 3, ... spheres in a row: each has more feature edges than the last.
     std::vector<bz::scene::FrameList> growing_frames(int n) {
         const auto sphere = add_mesh("sphere", bz::geo::uv_sphere(0.5f, 8, 16));

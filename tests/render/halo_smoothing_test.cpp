@@ -16,7 +16,7 @@
 namespace {
 
 class HaloSmoothingTest : public bz::test::RenderTest {
-protected:
+  protected:
     // Outer ink radius per angle bin, around the image centre (the sphere is centred).
     std::vector<double> outer_radii(bool smoothing, const std::string& name) {
         settings.cubic_smoothing = smoothing;
@@ -32,12 +32,14 @@ protected:
         for (int y = 0; y < kHeight; ++y) {
             for (int x = 0; x < kWidth; ++x) {
                 const std::size_t i = (static_cast<std::size_t>(y) * kWidth + x) * 4;
-                const double luma = (0.2126 * rgba[i] + 0.7152 * rgba[i + 1] + 0.0722 * rgba[i + 2]) / 255.0;
+                const double luma =
+                    (0.2126 * rgba[i] + 0.7152 * rgba[i + 1] + 0.0722 * rgba[i + 2]) / 255.0;
                 if (luma > 0.45) continue;  // ink only
                 const double dx = x + 0.5 - cx, dy = y + 0.5 - cy;
                 const double a = std::atan2(dy, dx) + M_PI;
                 const int bin = std::min(kBins - 1, static_cast<int>(a / (2.0 * M_PI) * kBins));
-                radius[static_cast<std::size_t>(bin)] = std::max(radius[static_cast<std::size_t>(bin)], std::hypot(dx, dy));
+                radius[static_cast<std::size_t>(bin)] =
+                    std::max(radius[static_cast<std::size_t>(bin)], std::hypot(dx, dy));
             }
         }
         return radius;
@@ -66,7 +68,8 @@ TEST_F(HaloSmoothingTest, CoarseSphereOutlineIsRounderWithSmoothing) {
     const std::vector<double> smooth = outer_radii(true, "halo_coarse_sphere_smooth");
     for (double r : plain) ASSERT_GT(r, 40.0) << "an outline all around";
     for (double r : smooth) ASSERT_GT(r, 40.0) << "an outline all around";
-    std::printf("outline radius spread: plain %.2f px, smoothed %.2f px\n", spread(plain), spread(smooth));
+    std::printf("outline radius spread: plain %.2f px, smoothed %.2f px\n", spread(plain),
+                spread(smooth));
     EXPECT_LT(spread(smooth), 0.6 * spread(plain))
         << "plain spread " << spread(plain) << " px, smoothed " << spread(smooth) << " px";
 }

@@ -5,11 +5,10 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "geometry/reference/mask_score.h"
 #include "geometry/generated/primitives.h"
+#include "geometry/reference/mask_score.h"
 #include "render/reference_frame.h"
 #include "render/render_fixture.h"
 
@@ -18,7 +17,7 @@ using bz::test::Mask;
 using bz::test::RenderTest;
 
 class LineMethodsTest : public RenderTest {
-protected:
+  protected:
     Mask mask_with(LineMethod m, const std::string& name) {
         settings.method = m;
         compare_line_methods = false;
@@ -40,7 +39,8 @@ protected:
 TEST_F(LineMethodsTest, RealModelsSameMaskAndSameReferenceScore) {
     for (const char* path : bz::test::kRealModels) {
         SCOPED_TRACE(path);
-        ASSERT_TRUE(std::filesystem::exists(path)) << "install assimp-testmodels (tools/install-deps)";
+        ASSERT_TRUE(std::filesystem::exists(path))
+            << "install assimp-testmodels (tools/install-deps)";
         show_model(path);
         const std::string name = "methods_" + std::filesystem::path(path).stem().string();
         for (const char* preset : {"balanced", "high"}) {
@@ -50,7 +50,8 @@ TEST_F(LineMethodsTest, RealModelsSameMaskAndSameReferenceScore) {
             const Mask cs = mask_with(LineMethod::compute, name);
             EXPECT_GT(gs.count(), 100);
             bz::test::expect_same_lines(cs, gs, name);
-            const std::vector<std::uint8_t> ref = bz::render::reference_frame_mask(frame, meshes, kWidth, kHeight);
+            const std::vector<std::uint8_t> ref =
+                bz::render::reference_frame_mask(frame, meshes, kWidth, kHeight);
             const auto f_gs = bz::geo::score_masks(gs.pixels, ref, kWidth, kHeight, 1).f1;
             const auto f_cs = bz::geo::score_masks(cs.pixels, ref, kWidth, kHeight, 1).f1;
             EXPECT_NEAR(f_cs, f_gs, 0.002) << "F1 compute " << f_cs << ", geometry shader " << f_gs;
@@ -102,7 +103,8 @@ TEST_F(LineMethodsTest, SpineSamplesScoreAsTheTestInEveryFragment) {
     // same score against the exact reference.
     for (const char* path : bz::test::kRealModels) {
         SCOPED_TRACE(path);
-        ASSERT_TRUE(std::filesystem::exists(path)) << "install assimp-testmodels (tools/install-deps)";
+        ASSERT_TRUE(std::filesystem::exists(path))
+            << "install assimp-testmodels (tools/install-deps)";
         show_model(path);
         const std::string name = "samples_" + std::filesystem::path(path).stem().string();
         settings = bz::render::preset("balanced");
@@ -112,10 +114,13 @@ TEST_F(LineMethodsTest, SpineSamplesScoreAsTheTestInEveryFragment) {
         const Mask per_fragment = mask_with(LineMethod::compute, name + "_per_fragment");
         EXPECT_GT(per_fragment.count(), 100);
         bz::test::expect_same_lines(sampled, per_fragment, name);
-        const std::vector<std::uint8_t> ref = bz::render::reference_frame_mask(frame, meshes, kWidth, kHeight);
+        const std::vector<std::uint8_t> ref =
+            bz::render::reference_frame_mask(frame, meshes, kWidth, kHeight);
         const auto f_sampled = bz::geo::score_masks(sampled.pixels, ref, kWidth, kHeight, 1).f1;
-        const auto f_fragment = bz::geo::score_masks(per_fragment.pixels, ref, kWidth, kHeight, 1).f1;
-        EXPECT_NEAR(f_sampled, f_fragment, 0.002) << "F1 samples " << f_sampled << ", every fragment " << f_fragment;
+        const auto f_fragment =
+            bz::geo::score_masks(per_fragment.pixels, ref, kWidth, kHeight, 1).f1;
+        EXPECT_NEAR(f_sampled, f_fragment, 0.002)
+            << "F1 samples " << f_sampled << ", every fragment " << f_fragment;
     }
 }
 
@@ -136,7 +141,8 @@ TEST_F(LineMethodsTest, HiddenStretchesOfAnEdgeStayHiddenInTheColourImage) {
     renderer->set_settings(settings);
     renderer->render(frame, meshes, bz::render::Renderer::kOffscreen);
     const std::vector<std::uint8_t> rgba = renderer->read_color();
-    const std::vector<std::uint8_t> ref = bz::render::reference_frame_mask(frame, meshes, kWidth, kHeight);
+    const std::vector<std::uint8_t> ref =
+        bz::render::reference_frame_mask(frame, meshes, kWidth, kHeight);
     const auto score = bz::geo::score_masks(m.pixels, ref, kWidth, kHeight, 1);
     EXPECT_GT(score.precision, 0.99);
     EXPECT_GT(score.recall, 0.98);

@@ -2,20 +2,21 @@
 
 #include <algorithm>
 #include <cmath>
-
 #include <glm/gtc/matrix_transform.hpp>
 
 namespace bz::test {
 
 int Mask::count() const {
-    return static_cast<int>(std::count_if(pixels.begin(), pixels.end(), [](auto v) { return v != 0; }));
+    return static_cast<int>(
+        std::count_if(pixels.begin(), pixels.end(), [](auto v) { return v != 0; }));
 }
 
 namespace {
 
 bool crosses(glm::dvec2 c, glm::dvec2 a, glm::dvec2 b) {
     const glm::dvec2 lo = glm::min(a, b), hi = glm::max(a, b);
-    if (hi.x < c.x - 0.5 || lo.x >= c.x + 0.5 || hi.y < c.y - 0.5 || lo.y >= c.y + 0.5) return false;
+    if (hi.x < c.x - 0.5 || lo.x >= c.x + 0.5 || hi.y < c.y - 0.5 || lo.y >= c.y + 0.5)
+        return false;
     const glm::dvec2 d = b - a;
     const glm::dvec2 n(-d.y, d.x);
     return std::abs(glm::dot(n, c - a)) <= 0.5 * (std::abs(n.x) + std::abs(n.y));
@@ -41,9 +42,12 @@ Mask expected_mask(const scene::Camera& cam, int width, int height,
             return glm::dvec2((x * 0.5 + 0.5) * width, (y * 0.5 + 0.5) * height);
         };
         const glm::dvec2 sa = to_px(a), sb = to_px(b);
-        const glm::dvec2 lo = glm::floor(glm::min(sa, sb)) - 1.0, hi = glm::ceil(glm::max(sa, sb)) + 1.0;
-        for (int y = std::max(0, static_cast<int>(lo.y)); y < std::min(height, static_cast<int>(hi.y)); ++y) {
-            for (int x = std::max(0, static_cast<int>(lo.x)); x < std::min(width, static_cast<int>(hi.x)); ++x) {
+        const glm::dvec2 lo = glm::floor(glm::min(sa, sb)) - 1.0,
+                         hi = glm::ceil(glm::max(sa, sb)) + 1.0;
+        for (int y = std::max(0, static_cast<int>(lo.y));
+             y < std::min(height, static_cast<int>(hi.y)); ++y) {
+            for (int x = std::max(0, static_cast<int>(lo.x));
+                 x < std::min(width, static_cast<int>(hi.x)); ++x) {
                 if (crosses({x + 0.5, y + 0.5}, sa, sb)) {
                     m.pixels[static_cast<std::size_t>((height - 1 - y) * width + x)] = 255;
                 }
@@ -74,7 +78,8 @@ double fraction_near(const Mask& from, const Mask& to, int tol) {
 }  // namespace
 
 MaskScore score_masks(const Mask& test, const Mask& ref, int tol) {
-    return {fraction_near(test, ref, tol), fraction_near(ref, test, tol), test.count(), ref.count()};
+    return {fraction_near(test, ref, tol), fraction_near(ref, test, tol), test.count(),
+            ref.count()};
 }
 
 }  // namespace bz::test

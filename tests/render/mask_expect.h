@@ -3,9 +3,8 @@
 // the near plane, and mark the pixels each crosses with the same rule the mask shader uses.
 // Then compare two masks with a pixel tolerance.
 #include <cstdint>
-#include <vector>
-
 #include <glm/glm.hpp>
+#include <vector>
 
 #include "scene/frame_list.h"
 
@@ -16,7 +15,8 @@ struct Mask {
     int height = 0;
     std::vector<std::uint8_t> pixels;  // row 0 = top
     bool lit(int x, int y) const {
-        return x >= 0 && y >= 0 && x < width && y < height && pixels[static_cast<std::size_t>(y * width + x)];
+        return x >= 0 && y >= 0 && x < width && y < height &&
+               pixels[static_cast<std::size_t>(y * width + x)];
     }
     int count() const;
 };

@@ -46,7 +46,8 @@ int connected_components(const Mask& m) {
                 for (int dy = -1; dy <= 1; ++dy) {
                     for (int dx = -1; dx <= 1; ++dx) {
                         const int nx = cx + dx, ny = cy + dy;
-                        if (!m.lit(nx, ny) || label[static_cast<std::size_t>(ny * m.width + nx)]) continue;
+                        if (!m.lit(nx, ny) || label[static_cast<std::size_t>(ny * m.width + nx)])
+                            continue;
                         label[static_cast<std::size_t>(ny * m.width + nx)] = components;
                         stack.push_back({nx, ny});
                     }
@@ -79,7 +80,7 @@ bool reachable_from_border(const Mask& m, int tx, int ty) {
 }  // namespace
 
 class CubeMaskTest : public RenderTest {
-protected:
+  protected:
     void SetUp() override {
         RenderTest::SetUp();
         add_item(add_mesh("cube", bz::geo::box(glm::vec3(0.5f))));
@@ -117,7 +118,8 @@ TEST_F(CubeMaskTest, ArcadeStyleShowsHiddenEdgesToo) {
     frame.style = bz::scene::LineStyle::arcade;
     Segments all = visible;
     all.insert(all.end(), hidden.begin(), hidden.end());
-    const auto s = bz::test::score_masks(mask("cube_arcade"), expected_mask(frame.camera, kWidth, kHeight, all), 1);
+    const auto s = bz::test::score_masks(mask("cube_arcade"),
+                                         expected_mask(frame.camera, kWidth, kHeight, all), 1);
     EXPECT_EQ(s.precision, 1.0);
     EXPECT_GE(s.recall, 0.99);
 }
@@ -132,7 +134,8 @@ TEST_F(CubeMaskTest, CreaseThresholdAboveNinetyDegreesLeavesOnlyTheOutline) {
         if (!at_near_corner) outline.push_back(e);
     }
     ASSERT_EQ(outline.size(), 6u);
-    const auto s = bz::test::score_masks(got, expected_mask(frame.camera, kWidth, kHeight, outline), 1);
+    const auto s =
+        bz::test::score_masks(got, expected_mask(frame.camera, kWidth, kHeight, outline), 1);
     EXPECT_EQ(s.precision, 1.0);
     EXPECT_GE(s.recall, 0.99);
 }
@@ -146,7 +149,8 @@ TEST_F(RenderTest, SphereSilhouetteIsOneClosedLoop) {
         settings = bz::render::preset(name);
         const Mask m = mask(std::string("sphere_") + name);
         EXPECT_EQ(connected_components(m), 1) << name;
-        EXPECT_FALSE(reachable_from_border(m, kWidth / 2, kHeight / 2)) << name << ": loop is not closed";
+        EXPECT_FALSE(reachable_from_border(m, kWidth / 2, kHeight / 2))
+            << name << ": loop is not closed";
         EXPECT_GT(m.count(), 200) << name;
     }
 }
@@ -180,7 +184,8 @@ TEST_F(RenderTest, EdgesCrossingTheNearPlaneAreClippedNotGarbled) {
                           {{0.5, -1.0, -20.0}, {0.5, -1.0, 20.0}},
                           {{-0.5, -1.0, -20.0}, {0.5, -1.0, -20.0}}};
     const Mask want = expected_mask(frame.camera, kWidth, kHeight, top);
-    for (auto depth : {bz::render::DepthFormat::reversed_f32, bz::render::DepthFormat::conventional_d24}) {
+    for (auto depth :
+         {bz::render::DepthFormat::reversed_f32, bz::render::DepthFormat::conventional_d24}) {
         settings.depth = depth;
         const auto s = bz::test::score_masks(mask("near_plane"), want, 1);
         EXPECT_GE(s.precision, 0.99);
@@ -207,8 +212,10 @@ TEST_F(RenderTest, InsideAClosedBoxItsInnerEdgesShow) {
     frame.camera.fov_y_deg = 90.0;
     frame.camera.near = 0.05;
     // The three edges that meet at the far corner (-4,-4,-4) are in view.
-    const Segments corner = {{{-4, -4, -4}, {4, -4, -4}}, {{-4, -4, -4}, {-4, 4, -4}}, {{-4, -4, -4}, {-4, -4, 4}}};
-    const auto s = bz::test::score_masks(mask("room_inside"), expected_mask(frame.camera, kWidth, kHeight, corner), 1);
+    const Segments corner = {
+        {{-4, -4, -4}, {4, -4, -4}}, {{-4, -4, -4}, {-4, 4, -4}}, {{-4, -4, -4}, {-4, -4, 4}}};
+    const auto s = bz::test::score_masks(mask("room_inside"),
+                                         expected_mask(frame.camera, kWidth, kHeight, corner), 1);
     EXPECT_GE(s.recall, 0.9);
     EXPECT_GT(s.test_count, 100);
 }
@@ -228,10 +235,12 @@ TEST_F(RenderTest, SkippingBackFacesOfClosedMeshesChangesNoPixel) {
     frame.camera.eye = {0.0, 3.0, 9.0};
     frame.camera.target = {0.0, 0.0, 0.0};
     frame.camera.far = 60.0;  // the loose triangle lies beyond the far plane
-    for (int i = 0; i < 4; ++i) add_item(closed_sphere, glm::translate(glm::dmat4(1.0), glm::dvec3(i * 1.5 - 2.25, 0, -i)));
+    for (int i = 0; i < 4; ++i)
+        add_item(closed_sphere, glm::translate(glm::dmat4(1.0), glm::dvec3(i * 1.5 - 2.25, 0, -i)));
     const auto with_shortcut = mask("shortcut");
     frame.items.clear();
-    for (int i = 0; i < 4; ++i) add_item(open_sphere, glm::translate(glm::dmat4(1.0), glm::dvec3(i * 1.5 - 2.25, 0, -i)));
+    for (int i = 0; i < 4; ++i)
+        add_item(open_sphere, glm::translate(glm::dmat4(1.0), glm::dvec3(i * 1.5 - 2.25, 0, -i)));
     const auto without = mask("no_shortcut");
     EXPECT_GT(with_shortcut.count(), 300);
     EXPECT_EQ(with_shortcut.pixels, without.pixels);

@@ -13,7 +13,8 @@ TEST_F(RenderTest, RealModelsRenderNonEmptyMasks) {
     // The first four: line_methods_test draws all of them with both line methods.
     for (const char* path : std::span(bz::test::kRealModels).first(4)) {
         SCOPED_TRACE(path);
-        ASSERT_TRUE(std::filesystem::exists(path)) << "install assimp-testmodels (tools/install-deps)";
+        ASSERT_TRUE(std::filesystem::exists(path))
+            << "install assimp-testmodels (tools/install-deps)";
         show_model(path);
         const std::string name = std::filesystem::path(path).stem().string();
         const auto m = mask(name);

@@ -1,9 +1,9 @@
 #include "render/render_fixture.h"
 
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <filesystem>
-
-#include <gtest/gtest.h>
 
 #include "core/image_io.h"
 #include "geometry/import/import.h"
@@ -46,7 +46,8 @@ scene::MeshId RenderTest::show_model(const std::string& path) {
 Mask RenderTest::mask(const std::string& save_as) {
     renderer->set_settings(settings);
     Mask m{kWidth, kHeight, renderer->render_mask(frame, meshes)};
-    if (!save_as.empty()) write_png(out_dir() / (save_as + "_mask.png"), Image{kWidth, kHeight, 1, m.pixels});
+    if (!save_as.empty())
+        write_png(out_dir() / (save_as + "_mask.png"), Image{kWidth, kHeight, 1, m.pixels});
     if (compare_line_methods && settings.method != render::LineMethod::image_outline) {
         for (const render::LineMethod other : render::feature_line_methods()) {
             if (other == settings.method) continue;
@@ -55,8 +56,9 @@ Mask RenderTest::mask(const std::string& save_as) {
             renderer->set_settings(s);
             const Mask o{kWidth, kHeight, renderer->render_mask(frame, meshes)};
             renderer->set_settings(settings);
-            expect_same_lines(m, o, save_as + " " + render::line_method_name(settings.method) + " vs " +
-                                        render::line_method_name(other));
+            expect_same_lines(m, o,
+                              save_as + " " + render::line_method_name(settings.method) + " vs " +
+                                  render::line_method_name(other));
         }
     }
     return m;
@@ -75,7 +77,8 @@ void expect_same_lines(const Mask& a, const Mask& b, const std::string& what) {
     // for at most 5 %, and at most 0.5 % of either mask farther than a pixel from the other's
     // lines (a missing stretch of line fails that).
     int differ = 0;
-    for (std::size_t i = 0; i < a.pixels.size(); ++i) differ += (a.pixels[i] != 0) != (b.pixels[i] != 0);
+    for (std::size_t i = 0; i < a.pixels.size(); ++i)
+        differ += (a.pixels[i] != 0) != (b.pixels[i] != 0);
     const MaskScore s = score_masks(a, b, 1);
     EXPECT_LE(differ, std::max(2, a.count() / 20))
         << what << ": masks differ in " << differ << " of " << a.count() << " lit pixels";

@@ -26,7 +26,7 @@ inline constexpr const char* kRealModels[] = {
 void expect_same_lines(const Mask& a, const Mask& b, const std::string& what);
 
 class RenderTest : public GlTest {
-protected:
+  protected:
     static constexpr int kWidth = 320;
     static constexpr int kHeight = 240;
 

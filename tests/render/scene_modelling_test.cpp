@@ -8,8 +8,8 @@
 
 #include "geometry/generated/primitives.h"
 #include "geometry/reference/mask_score.h"
-#include "render/gpu_scene/batches.h"
 #include "render/camera/camera_math.h"
+#include "render/gpu_scene/batches.h"
 #include "render/reference_frame.h"
 #include "render/render_fixture.h"
 

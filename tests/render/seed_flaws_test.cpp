@@ -3,7 +3,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "geometry/generated/primitives.h"
@@ -32,9 +31,12 @@ TEST_F(RenderTest, NoDiagonalAcrossAFlatPanelWithDuplicateAndTwinFaces) {
     frame.camera.target = {0.5, 0.5, 0.0};
     frame.camera.fov_y_deg = 45.0;
     const auto got = mask("dirty_panel");
-    const std::vector<std::pair<glm::dvec3, glm::dvec3>> border = {
-        {{0, 0, 0}, {1, 0, 0}}, {{1, 0, 0}, {1, 1, 0}}, {{1, 1, 0}, {0, 1, 0}}, {{0, 1, 0}, {0, 0, 0}}};
-    const auto s = bz::test::score_masks(got, expected_mask(frame.camera, kWidth, kHeight, border), 1);
+    const std::vector<std::pair<glm::dvec3, glm::dvec3>> border = {{{0, 0, 0}, {1, 0, 0}},
+                                                                   {{1, 0, 0}, {1, 1, 0}},
+                                                                   {{1, 1, 0}, {0, 1, 0}},
+                                                                   {{0, 1, 0}, {0, 0, 0}}};
+    const auto s =
+        bz::test::score_masks(got, expected_mask(frame.camera, kWidth, kHeight, border), 1);
     EXPECT_EQ(s.precision, 1.0) << "lit pixels off the panel's border (a diagonal?)";
     EXPECT_GE(s.recall, 0.99);
 }
@@ -44,7 +46,8 @@ TEST_F(RenderTest, DenseLinesStayGreenInsteadOfWashingOutToWhite) {
     const auto sphere = add_mesh("sphere", bz::geo::uv_sphere(0.5f, 8, 16));
     for (int i = 0; i < 20; ++i) {
         for (int j = 0; j < 20; ++j) {
-            add_item(sphere, glm::translate(glm::dmat4(1.0), glm::dvec3(i * 1.05 - 10.0, j * 1.05 - 10.0, 0.0)));
+            add_item(sphere, glm::translate(glm::dmat4(1.0),
+                                            glm::dvec3(i * 1.05 - 10.0, j * 1.05 - 10.0, 0.0)));
         }
     }
     frame.camera.eye = {0.0, 0.0, 24.0};
@@ -78,11 +81,14 @@ TEST_F(RenderTest, LinesMeetWithoutGapsOrStubs) {
     renderer->render(frame, meshes, bz::render::Renderer::kOffscreen);
     const auto rgba = renderer->read_color();
     save_color("corners");
-    const auto green = [&](int x, int y) { return rgba[static_cast<std::size_t>((y * kWidth + x) * 4 + 1)]; };
+    const auto green = [&](int x, int y) {
+        return rgba[static_cast<std::size_t>((y * kWidth + x) * 4 + 1)];
+    };
     // Project the corner (1,1,0.1) exactly.
     const double f = 1.0 / std::tan(glm::radians(40.0) * 0.5);
     const double px = 1.0 * f / (double(kWidth) / kHeight) / 5.9, py = 1.0 * f / 5.9;
-    const int cx = static_cast<int>((px * 0.5 + 0.5) * kWidth), cy = static_cast<int>((0.5 - py * 0.5) * kHeight);
+    const int cx = static_cast<int>((px * 0.5 + 0.5) * kWidth),
+              cy = static_cast<int>((0.5 - py * 0.5) * kHeight);
     EXPECT_GT(green(cx, cy), 120) << "corner not lit";
     const int beyond = static_cast<int>(settings.line_half_width_px) + 3;
     EXPECT_LT(green(cx + beyond, cy - beyond), 10) << "stub beyond the corner";

@@ -13,8 +13,8 @@ std::size_t Region::count() const {
 
 Region coverage(const scene::FrameList& frame, const scene::MeshLibrary& meshes, int w, int h) {
     Region out{w, h, std::vector<std::uint8_t>(static_cast<std::size_t>(w) * h, 0)};
-    const render::CameraMatrices cam =
-        render::camera_matrices(frame.camera, static_cast<double>(w) / h, render::DepthFormat::reversed_f32);
+    const render::CameraMatrices cam = render::camera_matrices(
+        frame.camera, static_cast<double>(w) / h, render::DepthFormat::reversed_f32);
     const glm::dmat4 proj(cam.proj);
     for (const scene::DrawItem& item : frame.items) {
         const geo::AdjacencyMesh& mesh = meshes.mesh(item.mesh);
@@ -27,22 +27,26 @@ Region coverage(const scene::FrameList& frame, const scene::MeshLibrary& meshes,
             win[i] = (glm::dvec2(c) / c.w * 0.5 + 0.5) * glm::dvec2(w, h);
         }
         for (std::size_t t = 0; t + 2 < mesh.triangles.size(); t += 3) {
-            const std::uint32_t a = mesh.triangles[t], b = mesh.triangles[t + 1], c = mesh.triangles[t + 2];
+            const std::uint32_t a = mesh.triangles[t], b = mesh.triangles[t + 1],
+                                c = mesh.triangles[t + 2];
             if (!front[a] || !front[b] || !front[c]) continue;  // the tests keep objects in front
             const glm::dvec2 p0 = win[a], p1 = win[b], p2 = win[c];
             const double area = (p1.x - p0.x) * (p2.y - p0.y) - (p2.x - p0.x) * (p1.y - p0.y);
             if (std::abs(area) < 1e-12) continue;
             const int x0 = std::max(0, static_cast<int>(std::floor(std::min({p0.x, p1.x, p2.x}))));
-            const int x1 = std::min(w - 1, static_cast<int>(std::ceil(std::max({p0.x, p1.x, p2.x}))));
+            const int x1 =
+                std::min(w - 1, static_cast<int>(std::ceil(std::max({p0.x, p1.x, p2.x}))));
             const int y0 = std::max(0, static_cast<int>(std::floor(std::min({p0.y, p1.y, p2.y}))));
-            const int y1 = std::min(h - 1, static_cast<int>(std::ceil(std::max({p0.y, p1.y, p2.y}))));
+            const int y1 =
+                std::min(h - 1, static_cast<int>(std::ceil(std::max({p0.y, p1.y, p2.y}))));
             for (int y = y0; y <= y1; ++y) {
                 for (int x = x0; x <= x1; ++x) {
                     const glm::dvec2 q(x + 0.5, y + 0.5);
                     const double e0 = (p1.x - p0.x) * (q.y - p0.y) - (q.x - p0.x) * (p1.y - p0.y);
                     const double e1 = (p2.x - p1.x) * (q.y - p1.y) - (q.x - p1.x) * (p2.y - p1.y);
                     const double e2 = (p0.x - p2.x) * (q.y - p2.y) - (q.x - p2.x) * (p0.y - p2.y);
-                    const bool inside = area > 0 ? (e0 >= 0 && e1 >= 0 && e2 >= 0) : (e0 <= 0 && e1 <= 0 && e2 <= 0);
+                    const bool inside = area > 0 ? (e0 >= 0 && e1 >= 0 && e2 >= 0)
+                                                 : (e0 <= 0 && e1 <= 0 && e2 <= 0);
                     if (inside) out.on[static_cast<std::size_t>(h - 1 - y) * w + x] = 1;
                 }
             }
@@ -83,8 +87,12 @@ Region neighbourhood(const Region& r, int radius, bool all) {
 
 }  // namespace
 
-Region eroded(const Region& r, int radius) { return neighbourhood(r, radius, true); }
-Region dilated(const Region& r, int radius) { return neighbourhood(r, radius, false); }
+Region eroded(const Region& r, int radius) {
+    return neighbourhood(r, radius, true);
+}
+Region dilated(const Region& r, int radius) {
+    return neighbourhood(r, radius, false);
+}
 
 Region minus(const Region& a, const Region& b) {
     Region out = a;
@@ -121,7 +129,8 @@ double share_near(const Region& region, const std::vector<std::uint8_t>& rgba, i
     Region passing{region.width, region.height, std::vector<std::uint8_t>(region.on.size(), 0)};
     for (int y = 0; y < region.height; ++y) {
         for (int x = 0; x < region.width; ++x) {
-            passing.on[static_cast<std::size_t>(y) * region.width + x] = test(pixel(rgba, region.width, x, y)) ? 1 : 0;
+            passing.on[static_cast<std::size_t>(y) * region.width + x] =
+                test(pixel(rgba, region.width, x, y)) ? 1 : 0;
         }
     }
     const Region near = dilated(passing, radius);

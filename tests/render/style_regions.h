@@ -23,7 +23,8 @@ struct Region {
 };
 
 // Pixels whose centre some triangle of the frame's items covers.
-Region coverage(const scene::FrameList& frame, const scene::MeshLibrary& meshes, int width, int height);
+Region coverage(const scene::FrameList& frame, const scene::MeshLibrary& meshes, int width,
+                int height);
 // From a 0/255 mask.
 Region from_mask(const std::vector<std::uint8_t>& mask, int width, int height);
 // Pixels with every pixel within `radius` (Chebyshev) on: shrinks the region.

@@ -6,14 +6,13 @@
 
 #include <cmath>
 #include <filesystem>
+#include <glm/gtc/matrix_transform.hpp>
 #include <map>
 #include <set>
 
-#include <glm/gtc/matrix_transform.hpp>
-
 #include "core/image_io.h"
-#include "geometry/import/import.h"
 #include "geometry/generated/primitives.h"
+#include "geometry/import/import.h"
 #include "render/camera/camera_framing.h"
 #include "render/render_fixture.h"
 #include "render/style_regions.h"
@@ -29,15 +28,17 @@ constexpr const char* kModel = "/usr/share/assimp/models/PLY/Wuson.ply";
 const glm::vec3 kObjectColour{0.2f, 1.0f, 0.3f};  // DrawItem's default (the vector green)
 
 class StyleTest : public bz::test::RenderTest {
-protected:
+  protected:
     void SetUp() override {
         settings = bz::render::preset("balanced");
         RenderTest::SetUp();
-        ASSERT_TRUE(std::filesystem::exists(kModel)) << "install assimp-testmodels (tools/install-deps)";
+        ASSERT_TRUE(std::filesystem::exists(kModel))
+            << "install assimp-testmodels (tools/install-deps)";
         model = add_mesh(kModel, bz::geo::import_model(kModel));
         add_item(model);
         frame.items.back().smooth = true;
-        frame.camera = bz::render::frame_bounds(meshes.bounds(model), 50.0, double(kWidth) / kHeight);
+        frame.camera =
+            bz::render::frame_bounds(meshes.bounds(model), 50.0, double(kWidth) / kHeight);
         frame.style = Style::vector;
         lines = bz::test::from_mask(mask().pixels, kWidth, kHeight);  // the exact visible lines
         covered = bz::test::coverage(frame, meshes, kWidth, kHeight);
@@ -55,14 +56,17 @@ protected:
     }
 
     // Far from the model: nothing but the style's background.
-    void expect_background_far_away(const std::vector<std::uint8_t>& rgba, Style style, int margin) {
+    void expect_background_far_away(const std::vector<std::uint8_t>& rgba, Style style,
+                                    int margin) {
         const glm::vec3 bg = bz::render::style_def(style).background;
         const Region far = bz::test::inverted(bz::test::dilated(covered, margin));
         ASSERT_GT(far.count(), 10000u);
-        EXPECT_GT(bz::test::share(far, rgba, [&](const Rgb& c) {
-                      return std::abs(c.r - bg.r) < 0.01f && std::abs(c.g - bg.g) < 0.01f &&
-                             std::abs(c.b - bg.b) < 0.01f;
-                  }),
+        EXPECT_GT(bz::test::share(far, rgba,
+                                  [&](const Rgb& c) {
+                                      return std::abs(c.r - bg.r) < 0.01f &&
+                                             std::abs(c.g - bg.g) < 0.01f &&
+                                             std::abs(c.b - bg.b) < 0.01f;
+                                  }),
                   0.999);
     }
 
@@ -76,8 +80,12 @@ protected:
     Region covered;
 };
 
-bool green_hue(const Rgb& c) { return c.g > c.r + 0.05f && c.g > c.b + 0.05f; }
-bool ink(const Rgb& c) { return c.luma() < 0.3f; }
+bool green_hue(const Rgb& c) {
+    return c.g > c.r + 0.05f && c.g > c.b + 0.05f;
+}
+bool ink(const Rgb& c) {
+    return c.luma() < 0.3f;
+}
 
 }  // namespace
 
@@ -97,7 +105,9 @@ TEST_F(StyleTest, ToonFillsCelBandsAndOutlinesTheLines) {
     std::map<int, int> counts;
     for (int y = 0; y < kHeight; ++y)
         for (int x = 0; x < kWidth; ++x)
-            if (fill.at(x, y)) ++counts[static_cast<int>(std::lround(bz::test::pixel(rgba, kWidth, x, y).g * 255))];
+            if (fill.at(x, y))
+                ++counts[static_cast<int>(
+                    std::lround(bz::test::pixel(rgba, kWidth, x, y).g * 255))];
     for (const auto& [g, n] : counts)
         if (n > static_cast<int>(fill.count() / 50)) levels.insert(g);
     EXPECT_GE(levels.size(), 2u);
@@ -138,7 +148,9 @@ TEST_F(StyleTest, SketchDrawsStrokesNearTheLinesOnPaper) {
     const auto rgba = draw(Style::sketch, "sketch");
     expect_background_far_away(rgba, Style::sketch, 8);
     const glm::vec3 paper = bz::render::style_def(Style::sketch).background;
-    const auto graphite = [&](const Rgb& c) { return c.luma() < 0.75f * (0.2126f * paper.r + 0.7152f * paper.g + 0.0722f * paper.b); };
+    const auto graphite = [&](const Rgb& c) {
+        return c.luma() < 0.75f * (0.2126f * paper.r + 0.7152f * paper.g + 0.0722f * paper.b);
+    };
     EXPECT_GT(bz::test::share_near(lines, rgba, 3, graphite), 0.6) << "strokes follow the lines";
     EXPECT_LT(bz::test::share(fill_region(), rgba, graphite), 0.03) << "no strokes away from lines";
 }
@@ -173,7 +185,8 @@ TEST_F(StyleTest, SketchStrokesMoveWithTheCameraInsteadOfBoiling) {
             for (int dx = -4; dx <= -2 && !found; ++dx)
                 for (int dy = -1; dy <= 1 && !found; ++dy) {
                     const int u = x + dx, v = y + dy;
-                    if (u >= 0 && v >= 0 && v < kHeight && bz::test::pixel(after, kWidth, u, v).luma() < 0.8f * paper_luma)
+                    if (u >= 0 && v >= 0 && v < kHeight &&
+                        bz::test::pixel(after, kWidth, u, v).luma() < 0.8f * paper_luma)
                         found = true;
                 }
             if (found) ++kept;
@@ -198,14 +211,17 @@ TEST_F(StyleTest, HaloInksTheOutlineAndFadesWhatIsBehindIt) {
     frame.camera.far = glm::length(centre - frame.camera.eye) + 40.0 * r;
     const auto rgba = draw(Style::halo, "halo");
     const Region model_only = bz::test::coverage(
-        bz::scene::FrameList{frame.camera, {frame.items.front()}, {}, Style::halo}, meshes, kWidth, kHeight);
+        bz::scene::FrameList{frame.camera, {frame.items.front()}, {}, Style::halo}, meshes, kWidth,
+        kHeight);
     // Outside the model's silhouette, where only the wall is: a band next to it and the wall
     // far from it.
-    const Region band = bz::test::minus(bz::test::dilated(model_only, 7), bz::test::dilated(model_only, 4));
+    const Region band =
+        bz::test::minus(bz::test::dilated(model_only, 7), bz::test::dilated(model_only, 4));
     const Region wall_far = bz::test::inverted(bz::test::dilated(model_only, 30));
     const auto reddish = [](const Rgb& c) { return c.r > c.g + 0.08f; };
     EXPECT_GT(bz::test::share(wall_far, rgba, reddish), 0.9) << "the wall shows its colour";
-    EXPECT_LT(bz::test::share(band, rgba, reddish), 0.3) << "the halo fades the wall near the model";
+    EXPECT_LT(bz::test::share(band, rgba, reddish), 0.3)
+        << "the halo fades the wall near the model";
     // Ink along the model's outline (its lines next to the wall). Not all of it: the halo of a
     // nearer leg fades the lines of the leg behind it, as it fades the wall.
     const Region outline = bz::test::minus(lines, bz::test::eroded(model_only, 2));
@@ -226,7 +242,8 @@ TEST_F(StyleTest, ExactLineStylesShareTheVectorMask) {
     // its own strokes, which stay within its jitter of the lines.
     for (const Style s : {Style::toon, Style::pop_art, Style::halo}) {
         frame.style = s;
-        EXPECT_EQ(bz::test::from_mask(mask().pixels, kWidth, kHeight).on, lines.on) << bz::scene::style_name(s);
+        EXPECT_EQ(bz::test::from_mask(mask().pixels, kWidth, kHeight).on, lines.on)
+            << bz::scene::style_name(s);
     }
     frame.style = Style::sketch;
     const Region strokes = bz::test::from_mask(mask("sketch").pixels, kWidth, kHeight);

@@ -1,10 +1,10 @@
 // Style names: canonical names round-trip, the old names still work, the play key cycles
 // through every style and wraps around.
+#include "scene/style.h"
+
 #include <gtest/gtest.h>
 
 #include <set>
-
-#include "scene/style.h"
 
 using bz::scene::Style;
 

@@ -20,7 +20,9 @@ platform::GlContext& shared_context() {
     return *ctx;
 }
 
-void GlTest::SetUp() { shared_context().debug().clear(); }
+void GlTest::SetUp() {
+    shared_context().debug().clear();
+}
 
 void GlTest::TearDown() {
     auto& sink = shared_context().debug();

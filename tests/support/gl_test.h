@@ -11,7 +11,7 @@ namespace bz::test {
 platform::GlContext& shared_context();
 
 class GlTest : public ::testing::Test {
-protected:
+  protected:
     void SetUp() override;
     void TearDown() override;
     platform::GlContext& context() { return shared_context(); }

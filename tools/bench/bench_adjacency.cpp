@@ -12,9 +12,9 @@
 #include <string_view>
 #include <vector>
 
+#include "geometry/generated/primitives.h"
 #include "geometry/line_mesh/adjacency.h"
 #include "geometry/line_mesh/line_mesh.h"
-#include "geometry/generated/primitives.h"
 #include "geometry/line_mesh/weld.h"
 
 namespace {
@@ -85,9 +85,7 @@ class RatioReporter : public benchmark::BenchmarkReporter {
     RatioReporter(std::unique_ptr<benchmark::BenchmarkReporter> display, std::FILE* table_out)
         : display_(std::move(display)), table_out_(table_out) {}
 
-    bool ReportContext(const Context& context) override {
-        return display_->ReportContext(context);
-    }
+    bool ReportContext(const Context& context) override { return display_->ReportContext(context); }
 
     void ReportRuns(const std::vector<Run>& runs) override {
         display_->ReportRuns(runs);

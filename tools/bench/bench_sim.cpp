@@ -3,8 +3,8 @@
 #include <benchmark/benchmark.h>
 
 #include "game/assets/assets.h"
-#include "game/difficulty/autopilot.h"
 #include "game/default_level.h"
+#include "game/difficulty/autopilot.h"
 #include "game/records/replay.h"
 #include "game/world/world.h"
 

@@ -9,9 +9,9 @@
 
 #include "app/model_source.h"
 #include "core/error.h"
-#include "core/io/file_io.h"
 #include "core/hash.h"
 #include "core/image_io.h"
+#include "core/io/file_io.h"
 #include "geometry/line_mesh/line_mesh.h"
 #include "render/camera/camera_framing.h"
 #include "render/reference_frame.h"
@@ -79,8 +79,8 @@ std::vector<std::uint8_t> lit(const Image& img) {
 // RGBA picture of a mask against the reference: white = both, red = drawn but not in the
 // reference (a hidden line leaking), cyan = in the reference but not drawn (a missing line).
 // Matching is exact per pixel here; the scores use the tolerance.
-Image diff_image(const std::vector<std::uint8_t>& test, const std::vector<std::uint8_t>& ref,
-                 int w, int h) {
+Image diff_image(const std::vector<std::uint8_t>& test, const std::vector<std::uint8_t>& ref, int w,
+                 int h) {
     Image img{w, h, 4, std::vector<std::uint8_t>(static_cast<std::size_t>(w * h) * 4, 0)};
     for (std::size_t i = 0; i < test.size(); ++i) {
         const bool t = test[i] != 0, r = ref[i] != 0;
@@ -122,10 +122,11 @@ void summarise(AccuracyRow& row) {
 // the same arguments (app/camera_args), and derive these near and far planes from --eye.
 std::string view_command(const char* command, const AccuracyViewInfo& v, const AccuracyOptions& o) {
     char buf[512];
-    std::snprintf(buf, sizeof buf, "%s %s --size %dx%d --fov %.17g --eye %.17g,%.17g,%.17g --target %.17g,%.17g,%.17g",
-                  command, v.file.c_str(), o.width, o.height, v.camera.fov_y_deg, v.camera.eye.x,
-                  v.camera.eye.y, v.camera.eye.z, v.camera.target.x, v.camera.target.y,
-                  v.camera.target.z);
+    std::snprintf(
+        buf, sizeof buf,
+        "%s %s --size %dx%d --fov %.17g --eye %.17g,%.17g,%.17g --target %.17g,%.17g,%.17g",
+        command, v.file.c_str(), o.width, o.height, v.camera.fov_y_deg, v.camera.eye.x,
+        v.camera.eye.y, v.camera.eye.z, v.camera.target.x, v.camera.target.y, v.camera.target.z);
     return buf;
 }
 
@@ -227,7 +228,8 @@ AccuracyResult run_accuracy(const AccuracyOptions& o, gl::TimingMethod timing) {
         std::string model_text;
         try {
             mesh = geo::build_line_mesh(load_model_source(file.string()));
-            if (mesh.triangle_count() == 0) throw UserError(file.string() + ": no usable triangles");
+            if (mesh.triangle_count() == 0)
+                throw UserError(file.string() + ": no usable triangles");
             model_text = read_file(file);
         } catch (const UserError& e) {
             result.skipped.push_back(e.what());
@@ -242,7 +244,8 @@ AccuracyResult run_accuracy(const AccuracyOptions& o, gl::TimingMethod timing) {
             scene::FrameList frame;
             frame.camera = view.camera;
             frame.items.push_back({id, glm::dmat4(1.0), glm::vec3(0.2f, 1.0f, 0.3f), 1.0f, true});
-            AccuracyViewInfo info{stem, file.string(), m.kind, view.name, view.camera, triangles, false};
+            AccuracyViewInfo info{stem,        file.string(), m.kind, view.name,
+                                  view.camera, triangles,     false};
 
             // The exact mask, cached across runs.
             const fs::path cached = cache.path_for(model_text, view.camera, o.width, o.height);
@@ -294,8 +297,9 @@ AccuracyResult run_accuracy(const AccuracyOptions& o, gl::TimingMethod timing) {
                 std::fprintf(stderr, "%-26s %-7s", stem.c_str(), view.name.c_str());
                 for (std::size_t c = 0; c < configs.size(); ++c) {
                     const AccuracyViewScore& s = result.rows[c].views.back();
-                    std::fprintf(stderr, "  %s %.4f (P %.3f R %.3f) %.1f ms", configs[c].label.c_str(),
-                                 s.score.f1, s.score.precision, s.score.recall, s.p50_ms);
+                    std::fprintf(stderr, "  %s %.4f (P %.3f R %.3f) %.1f ms",
+                                 configs[c].label.c_str(), s.score.f1, s.score.precision,
+                                 s.score.recall, s.p50_ms);
                 }
                 std::fprintf(stderr, "\n");
             }
@@ -310,8 +314,8 @@ std::vector<Goal> judge_accuracy_goals(const AccuracyResult& r) {
     for (const std::string& name : render::preset_names()) {
         const AccuracyRow* row = find(r.rows, name);
         if (!row) continue;
-        goals.push_back({name + ": mean F1 >= 0.99", row->mean_f1 >= 0.99,
-                         fmt("mean F1 %.4f", row->mean_f1)});
+        goals.push_back(
+            {name + ": mean F1 >= 0.99", row->mean_f1 >= 0.99, fmt("mean F1 %.4f", row->mean_f1)});
         goals.push_back({name + ": no view below F1 0.95", row->min_f1 >= 0.95,
                          fmt("worst view F1 %.4f", row->min_f1) + " (" + row->worst_view + ")"});
     }
@@ -326,8 +330,8 @@ std::vector<Goal> judge_accuracy_goals(const AccuracyResult& r) {
     return goals;
 }
 
-std::string accuracy_json(const BenchMeta& meta, const AccuracyOptions& o,
-                          const AccuracyResult& r, const std::vector<Goal>& goals) {
+std::string accuracy_json(const BenchMeta& meta, const AccuracyOptions& o, const AccuracyResult& r,
+                          const std::vector<Goal>& goals) {
     Json j = meta_json(meta);
     j["models_dir"] = o.models_dir.string();
     j["score_tolerance_px"] = o.tolerance_px;
@@ -392,8 +396,8 @@ void print_accuracy_table(std::FILE* out, const AccuracyResult& r, const std::ve
                  "min F1", "prec", "recall", "worst view");
     for (const AccuracyRow& row : r.rows) {
         std::fprintf(out, "%-16s %9.2f %8.4f %8.4f %8.4f %8.4f  %s\n", row.config.label.c_str(),
-                     row.mean_p50_ms, row.mean_f1, row.min_f1, row.mean_precision,
-                     row.mean_recall, row.worst_view.c_str());
+                     row.mean_p50_ms, row.mean_f1, row.min_f1, row.mean_precision, row.mean_recall,
+                     row.worst_view.c_str());
     }
     std::fprintf(out,
                  "%zu views; F1 at %d px (Chebyshev); frame ms = mean over views of each view's "

@@ -4,8 +4,8 @@
 #include <cstdio>
 
 #include "core/error.h"
-#include "game/difficulty/autopilot.h"
 #include "game/assets/backdrop.h"
+#include "game/difficulty/autopilot.h"
 #include "game/difficulty/difficulty.h"
 #include "game/hud/hud.h"
 
@@ -49,9 +49,7 @@ std::optional<scene::Camera> camera_on_path(const level::Level& level, double se
 
 BenchScene::BenchScene(level::Level level, std::optional<game::replay::Replay> replay,
                        double fov_y_deg)
-    : level_(std::move(level)),
-      assets_(std::make_unique<game::Assets>(level_)),
-      fov_(fov_y_deg) {
+    : level_(std::move(level)), assets_(std::make_unique<game::Assets>(level_)), fov_(fov_y_deg) {
     std::uint64_t seed = 1;
     int lives = level_.player_lives;
     level::Difficulty difficulty = level_.enemies.difficulty;

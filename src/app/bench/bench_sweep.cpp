@@ -46,8 +46,10 @@ SweepScore summarise(std::vector<geo::MaskScore> scores) {
 std::vector<SweepConfig> sweep_configs() {
     std::vector<SweepConfig> out;
     for (const std::string& name : render::preset_names()) {
-        out.push_back({name, "preset " + name + " (" + render::line_method_name(render::kDefaultLineMethod) + ")",
-                       render::preset(name)});
+        out.push_back(
+            {name,
+             "preset " + name + " (" + render::line_method_name(render::kDefaultLineMethod) + ")",
+             render::preset(name)});
     }
     // Each preset again with each line method given outright (the default, auto, picks one of
     // them per frame): same lines, so the same F1, other cost.
@@ -56,16 +58,18 @@ std::vector<SweepConfig> sweep_configs() {
         std::string suffix = render::line_method_name(m);
         std::replace(suffix.begin(), suffix.end(), '_', '-');
         for (const std::string& name : render::preset_names()) {
-            SweepConfig c{name + "-" + suffix, "preset " + name + ", line method " + render::line_method_name(m),
+            SweepConfig c{name + "-" + suffix,
+                          "preset " + name + ", line method " + render::line_method_name(m),
                           render::preset(name)};
             c.settings.method = m;
             out.push_back(c);
         }
     }
-    SweepConfig per_fragment{"balanced-per-fragment",
-                             "balanced, compute line method with the spine test in every line fragment "
-                             "instead of once per spine sample",
-                             render::preset("balanced")};
+    SweepConfig per_fragment{
+        "balanced-per-fragment",
+        "balanced, compute line method with the spine test in every line fragment "
+        "instead of once per spine sample",
+        render::preset("balanced")};
     per_fragment.settings.method = render::LineMethod::compute;
     per_fragment.settings.spine_sample_spacing_px = 0.0f;
     out.push_back(per_fragment);
@@ -88,16 +92,18 @@ std::vector<SweepConfig> sweep_configs() {
                         render::preset("balanced")};
     no_inst.settings.instancing = false;
     out.push_back(no_inst);
-    SweepConfig mame{"balanced-mame",
-                     "balanced with the mame beam: additive, intensity width, phosphor, mip-chain bloom",
-                     render::preset("balanced")};
+    SweepConfig mame{
+        "balanced-mame",
+        "balanced with the mame beam: additive, intensity width, phosphor, mip-chain bloom",
+        render::preset("balanced")};
     mame.settings.beam = render::beam_look("mame");
     out.push_back(mame);
     // Every style on the same frames (balanced preset): "balanced" is the level's own style,
     // so a level in the vector style needs no row of its own for it.
     for (const scene::Style style : scene::all_styles()) {
         const std::string name(scene::style_name(style));
-        SweepConfig c{"style-" + name, "style " + name + ", balanced preset", render::preset("balanced")};
+        SweepConfig c{"style-" + name, "style " + name + ", balanced preset",
+                      render::preset("balanced")};
         c.settings.style = style;
         out.push_back(c);
     }
@@ -271,7 +277,8 @@ void print_sweep_table(std::FILE* out, const SweepResult& r, const std::vector<G
     for (const SweepRow& row : r.rows) {
         std::fprintf(out, "%-24s %8.4f %8.4f %8.4f %8.4f %8.4f %8.4f\n", row.config.label.c_str(),
                      row.score_2px.mean_precision, row.score_2px.mean_recall, row.score_2px.mean_f1,
-                     row.score_4px.mean_precision, row.score_4px.mean_recall, row.score_4px.mean_f1);
+                     row.score_4px.mean_precision, row.score_4px.mean_recall,
+                     row.score_4px.mean_f1);
     }
     print_goals(out, goals, 46);
 }

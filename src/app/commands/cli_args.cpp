@@ -31,7 +31,8 @@ double parse_number(std::string_view option, std::string_view text) {
     const auto* end = text.data() + text.size();
     const auto r = std::from_chars(text.data(), end, v);
     if (r.ec != std::errc{} || r.ptr != end || !std::isfinite(v)) {
-        throw UsageError(std::string(option) + ": '" + printable(text) + "' is not a finite number");
+        throw UsageError(std::string(option) + ": '" + printable(text) +
+                         "' is not a finite number");
     }
     return v;
 }
@@ -41,8 +42,9 @@ int parse_int(std::string_view option, std::string_view text, int min_value, int
     const auto* end = text.data() + text.size();
     const auto r = std::from_chars(text.data(), end, v);
     if (r.ec != std::errc{} || r.ptr != end || v < min_value || v > max_value) {
-        throw UsageError(std::string(option) + ": '" + printable(text) + "' is not an integer in [" +
-                         std::to_string(min_value) + ", " + std::to_string(max_value) + "]");
+        throw UsageError(std::string(option) + ": '" + printable(text) +
+                         "' is not an integer in [" + std::to_string(min_value) + ", " +
+                         std::to_string(max_value) + "]");
     }
     return v;
 }
@@ -60,9 +62,11 @@ glm::dvec3 parse_vec3(std::string_view option, std::string_view text) {
         const std::size_t comma = text.find(',', start);
         const bool last = i == 2;
         if (last != (comma == std::string_view::npos)) {
-            throw UsageError(std::string(option) + ": expected x,y,z but got '" + printable(text) + "'");
+            throw UsageError(std::string(option) + ": expected x,y,z but got '" + printable(text) +
+                             "'");
         }
-        const std::string_view part = text.substr(start, last ? std::string_view::npos : comma - start);
+        const std::string_view part =
+            text.substr(start, last ? std::string_view::npos : comma - start);
         v[i] = parse_number(option, part);
         start = comma + 1;
     }
@@ -74,7 +78,8 @@ glm::ivec2 parse_size(std::string_view option, std::string_view text) {
     if (x == std::string_view::npos) {
         throw UsageError(std::string(option) + ": expected WxH but got '" + printable(text) + "'");
     }
-    return {parse_int(option, text.substr(0, x), 1, 16384), parse_int(option, text.substr(x + 1), 1, 16384)};
+    return {parse_int(option, text.substr(0, x), 1, 16384),
+            parse_int(option, text.substr(x + 1), 1, 16384)};
 }
 
 }  // namespace bz::app

@@ -11,14 +11,14 @@
 namespace bz::app {
 
 class UsageError : public std::runtime_error {
-public:
+  public:
     using std::runtime_error::runtime_error;
 };
 
 double parse_number(std::string_view option, std::string_view text);
 int parse_int(std::string_view option, std::string_view text, int min_value, int max_value);
-glm::dvec3 parse_vec3(std::string_view option, std::string_view text);  // "x,y,z"
-glm::ivec2 parse_size(std::string_view option, std::string_view text);  // "WxH"
+glm::dvec3 parse_vec3(std::string_view option, std::string_view text);     // "x,y,z"
+glm::ivec2 parse_size(std::string_view option, std::string_view text);     // "WxH"
 scene::Style parse_style(std::string_view option, std::string_view text);  // a style name
 
 // Whether a command-line word is an option name ("--out", "-h") rather than a value; a
@@ -29,13 +29,13 @@ bool looks_like_option(std::string_view word);
 // that is missing, empty or another option is refused, so `--mask --out x` cannot write a
 // file named "--out".
 class ArgCursor {
-public:
+  public:
     ArgCursor(int count, char* const* args) : count_(count), args_(args) {}
     bool done() const { return index_ >= count_; }
     std::string_view next() { return args_[index_++]; }
     std::string_view value(std::string_view option);
 
-private:
+  private:
     int count_;
     char* const* args_;
     int index_ = 0;

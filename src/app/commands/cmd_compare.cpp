@@ -3,12 +3,12 @@
 #include <cstdio>
 #include <string>
 
-#include "core/text/printable.h"
 #include "app/commands/cli_args.h"
 #include "app/commands/commands.h"
 #include "app/commands/parse_command.h"
 #include "core/error.h"
 #include "core/image_io.h"
+#include "core/text/printable.h"
 #include "geometry/reference/mask_score.h"
 
 namespace bz::app {

@@ -8,8 +8,8 @@
 
 #include "app/commands/cli_args.h"
 #include "app/commands/commands.h"
-#include "app/json_text.h"
 #include "app/commands/parse_command.h"
+#include "app/json_text.h"
 #include "core/io/file_io.h"
 #include "core/paths.h"
 #include "game/assets/assets.h"
@@ -93,8 +93,9 @@ Json summary_json(const game::ProbeSummary& s) {
 }
 
 int run(const Options& o) {
-    std::printf("| level | difficulty | idle: first death, s | autopilot: first death, s | "
-                "enemies behind |\n|---|---|---|---|---|\n");
+    std::printf(
+        "| level | difficulty | idle: first death, s | autopilot: first death, s | "
+        "enemies behind |\n|---|---|---|---|---|\n");
     Json rows = Json::array();
     for (const std::string& file : o.levels) {
         level::LoadResult loaded = level::load_level_file(file);
@@ -108,16 +109,15 @@ int run(const Options& o) {
         game::ProbeOptions po;
         po.max_seconds = o.seconds;
         for (const game::Difficulty d : o.difficulties) {
-            const auto idle =
-                game::probe_summary(lv, assets, d, game::Pilot::idle, o.seeds, 1, po);
+            const auto idle = game::probe_summary(lv, assets, d, game::Pilot::idle, o.seeds, 1, po);
             const auto pilot =
                 game::probe_summary(lv, assets, d, game::Pilot::autopilot, o.seeds, 1, po);
             const int spawns = idle.spawns + pilot.spawns;
             const int rear = idle.rear_spawns + pilot.rear_spawns;
             const std::string name(game::difficulty_name(d));
             std::printf("| %s | %s | %s | %s | %d of %d (%.0f %%) |\n", lv.name.c_str(),
-                        name.c_str(), seconds_cell(idle).c_str(), seconds_cell(pilot).c_str(),
-                        rear, spawns, spawns ? 100.0 * rear / spawns : 0.0);
+                        name.c_str(), seconds_cell(idle).c_str(), seconds_cell(pilot).c_str(), rear,
+                        spawns, spawns ? 100.0 * rear / spawns : 0.0);
             std::fflush(stdout);
             rows.push_back({{"level", lv.name},
                             {"file", file},

@@ -17,8 +17,8 @@
 #include "app/replay_level.h"
 #include "core/error.h"
 #include "core/interrupt.h"
-#include "core/log.h"
 #include "core/io/output_path.h"
+#include "core/log.h"
 #include "core/paths.h"
 #include "game/default_level.h"
 #include "game/records/replay.h"
@@ -67,9 +67,9 @@ struct Play {
         if (!options.record.empty()) {
             // Checked before anything starts, so a game is never played into a recording that
             // cannot be saved or that would replace the level, a setting or a high score.
-            const std::filesystem::path inputs[] = {
-                options.level,   level::default_level_path(), paths.settings,
-                paths.high_scores, paths.log,                 paths.gamepad_db};
+            const std::filesystem::path inputs[] = {options.level,  level::default_level_path(),
+                                                    paths.settings, paths.high_scores,
+                                                    paths.log,      paths.gamepad_db};
             check_output_file("--record", options.record, kReplayOutput, inputs);
         }
         log.info("settings: " + paths.settings.string());
@@ -116,12 +116,10 @@ struct Play {
         // The level before the window, so a broken level file fails fast and plainly.
         log.info("data: " + project_root().string() + " (" + project_root_origin() + ")");
         std::unique_ptr<level::LevelWatcher> watcher;
-        const std::filesystem::path level_path = level_arg.empty()
-                                                     ? level::default_level_path()
-                                                     : std::filesystem::path(level_arg);
+        const std::filesystem::path level_path =
+            level_arg.empty() ? level::default_level_path() : std::filesystem::path(level_arg);
         std::error_code ec;
-        if (!replay_on_builtin &&
-            (!level_arg.empty() || std::filesystem::exists(level_path, ec))) {
+        if (!replay_on_builtin && (!level_arg.empty() || std::filesystem::exists(level_path, ec))) {
             watcher = std::make_unique<level::LevelWatcher>(level_path);
             if (!watcher->current()) {
                 for (const auto& line : format_diagnostics(watcher->errors())) {
@@ -201,8 +199,8 @@ struct Play {
         for (const ScriptedPress& p : options.presses) {
             config.presses.push_back({p.frame, p.release_frame, p.key});
         }
-        LoopParts parts{context, choose,  make_renderer, audio,    input, gamepads, watcher.get(),
-                        overlay, log,     settings,      font,     {},    {},       nullptr,
+        LoopParts parts{context, choose, make_renderer, audio, input, gamepads, watcher.get(),
+                        overlay, log,    settings,      font,  {},    {},       nullptr,
                         {},      {}};
         // From here on a signal ends the loop, and what must be saved is saved below.
         stop_gracefully_on_signal();

@@ -5,8 +5,6 @@
 #include <cstdio>
 #include <string>
 
-#include "core/io/output_path.h"
-#include "core/text/printable.h"
 #include "app/bench/bench_scene.h"
 #include "app/commands/camera_args.h"
 #include "app/commands/cli_args.h"
@@ -15,6 +13,8 @@
 #include "app/model_source.h"
 #include "core/error.h"
 #include "core/image_io.h"
+#include "core/io/output_path.h"
+#include "core/text/printable.h"
 #include "geometry/line_mesh/line_mesh.h"
 #include "level/loader.h"
 #include "render/reference_frame.h"
@@ -138,7 +138,8 @@ int run(const Options& o) {
 
 int cmd_reference(Args args) {
     int exit_code = 0;
-    const std::optional<Options> parsed = parse_command("reference", args, kUsage, parse, &exit_code);
+    const std::optional<Options> parsed =
+        parse_command("reference", args, kUsage, parse, &exit_code);
     if (!parsed) return exit_code;
     const Options& o = *parsed;
     const std::filesystem::path inputs[] = {o.input, o.level};

@@ -1,22 +1,21 @@
 #include <cmath>
 #include <cstdio>
+#include <glm/gtc/matrix_transform.hpp>
 #include <string>
 
-#include "core/io/output_path.h"
-#include "core/text/printable.h"
 #include "app/commands/camera_args.h"
 #include "app/commands/cli_args.h"
 #include "app/commands/commands.h"
 #include "app/commands/parse_command.h"
 #include "app/headless_gl.h"
+#include "app/model_source.h"
 #include "core/error.h"
 #include "core/image_io.h"
 #include "core/image_stats.h"
-#include "app/model_source.h"
+#include "core/io/output_path.h"
+#include "core/text/printable.h"
 #include "geometry/line_mesh/line_mesh.h"
 #include "render/renderer.h"
-
-#include <glm/gtc/matrix_transform.hpp>
 
 namespace bz::app {
 
@@ -30,7 +29,8 @@ constexpr const char* kUsage =
     "                       [--color r,g,b] [--out frame.png]\n"
     "                       [--mask mask.png] [--repeat N] [--copies N] [--beam classic|mame]\n"
     "                       [--lit-share]\n"
-    "Renders a model file (or builtin:cube, builtin:sphere, builtin:grid) headless to PNG. Without --eye the camera frames the model's bounding\n"
+    "Renders a model file (or builtin:cube, builtin:sphere, builtin:grid) headless to PNG. Without "
+    "--eye the camera frames the model's bounding\n"
     "box from a 3/4 view. --mask writes the 1-pixel visible-spine mask (255 = line).\n"
     "--style: vector (default), vector-xray, toon, sketch, pop-art or halo (occluded and arcade\n"
     "are the old names of vector and vector-xray). --shading: filled styles' normals.\n"
@@ -49,8 +49,8 @@ struct RenderOptions {
     std::string preset = "balanced";
     std::string line_method;  // empty: the preset's
     scene::Style style = scene::Style::vector;
-    bool smooth = true;  // filled styles: smooth vertex normals (--shading flat: faces)
-    bool smoothing = true;  // halo: cubic silhouette smoothing (--no-smoothing: plain)
+    bool smooth = true;      // filled styles: smooth vertex normals (--shading flat: faces)
+    bool smoothing = true;   // halo: cubic silhouette smoothing (--no-smoothing: plain)
     bool one_sided = false;  // toon / pop-art: one-sided outline quads
     glm::dvec3 color{0.25, 1.0, 0.35};
     std::string out = "frame.png";
@@ -67,15 +67,24 @@ RenderOptions parse(Args args) {
     while (!cur.done()) {
         const std::string_view a = cur.next();
         if (parse_camera_option(a, cur, o.camera)) continue;
-        if (a == "--preset") o.preset = cur.value(a);
-        else if (a == "--line-method") o.line_method = cur.value(a);
-        else if (a == "--color") o.color = parse_vec3(a, cur.value(a));
-        else if (a == "--out") o.out = cur.value(a);
-        else if (a == "--mask") o.mask = cur.value(a);
-        else if (a == "--repeat") o.repeat = parse_int(a, cur.value(a), 1, 100000);
-        else if (a == "--copies") o.copies = parse_int(a, cur.value(a), 1, 100000);
-        else if (a == "--beam") o.beam = cur.value(a);
-        else if (a == "--lit-share") o.lit_share = true;
+        if (a == "--preset")
+            o.preset = cur.value(a);
+        else if (a == "--line-method")
+            o.line_method = cur.value(a);
+        else if (a == "--color")
+            o.color = parse_vec3(a, cur.value(a));
+        else if (a == "--out")
+            o.out = cur.value(a);
+        else if (a == "--mask")
+            o.mask = cur.value(a);
+        else if (a == "--repeat")
+            o.repeat = parse_int(a, cur.value(a), 1, 100000);
+        else if (a == "--copies")
+            o.copies = parse_int(a, cur.value(a), 1, 100000);
+        else if (a == "--beam")
+            o.beam = cur.value(a);
+        else if (a == "--lit-share")
+            o.lit_share = true;
         else if (a == "--style") {
             o.style = parse_style(a, cur.value(a));
         } else if (a == "--no-smoothing") {
@@ -84,7 +93,8 @@ RenderOptions parse(Args args) {
             o.one_sided = true;
         } else if (a == "--shading") {
             const std::string_view s = cur.value(a);
-            if (s != "flat" && s != "smooth") throw UsageError("--shading: expected flat or smooth");
+            if (s != "flat" && s != "smooth")
+                throw UsageError("--shading: expected flat or smooth");
             o.smooth = s == "smooth";
         } else if (!a.empty() && a[0] == '-') {
             throw UsageError("unknown option " + printable(a));
@@ -100,10 +110,11 @@ RenderOptions parse(Args args) {
     return o;
 }
 
-void print_timings(const render::Renderer& r, const std::vector<std::vector<gl::PassTime>>& frames) {
+void print_timings(const render::Renderer& r,
+                   const std::vector<std::vector<gl::PassTime>>& frames) {
     if (frames.empty()) return;
-    std::fprintf(stdout, "pass        mean ms  (%zu frames, %dx%d, glFinish + CPU clock)\n", frames.size(),
-                 r.width(), r.height());
+    std::fprintf(stdout, "pass        mean ms  (%zu frames, %dx%d, glFinish + CPU clock)\n",
+                 frames.size(), r.width(), r.height());
     double total = 0.0;
     for (std::size_t p = 0; p < frames.front().size(); ++p) {
         double sum = 0.0;
@@ -119,14 +130,15 @@ void print_timings(const render::Renderer& r, const std::vector<std::vector<gl::
 }
 
 // Lays out `copies` instances on a square grid in the xz plane; returns their joint bounds.
-geo::Bounds place_copies(scene::FrameList& frame, scene::MeshId id, const geo::Bounds& one, int copies,
-                         glm::vec3 color, bool smooth) {
+geo::Bounds place_copies(scene::FrameList& frame, scene::MeshId id, const geo::Bounds& one,
+                         int copies, glm::vec3 color, bool smooth) {
     const int side = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(copies))));
     const glm::dvec3 step = glm::dvec3(one.max - one.min) * 1.2;
     geo::Bounds all = one;
     for (int i = 0; i < copies; ++i) {
         const glm::dvec3 offset(step.x * (i % side), 0.0, -step.z * (i / side));
-        frame.items.push_back({id, glm::translate(glm::dmat4(1.0), offset), color, 1.0f, true, smooth});
+        frame.items.push_back(
+            {id, glm::translate(glm::dmat4(1.0), offset), color, 1.0f, true, smooth});
         all.min = glm::min(all.min, one.min + glm::vec3(offset));
         all.max = glm::max(all.max, one.max + glm::vec3(offset));
     }
@@ -143,13 +155,15 @@ int cmd_render(Args args) {
         try {
             settings = render::preset(parsed.preset);
             settings.beam = render::beam_look(parsed.beam);
-            if (!parsed.line_method.empty()) settings.method = render::parse_line_method(parsed.line_method);
+            if (!parsed.line_method.empty())
+                settings.method = render::parse_line_method(parsed.line_method);
         } catch (const UserError& e) {
             throw UsageError(e.what());  // an unknown preset name is a usage error
         }
         return parsed;
     };
-    const std::optional<RenderOptions> parsed = parse_command("render", args, kUsage, parse_checked, &exit_code);
+    const std::optional<RenderOptions> parsed =
+        parse_command("render", args, kUsage, parse_checked, &exit_code);
     if (!parsed) return exit_code;
     const RenderOptions& o = *parsed;
     const std::filesystem::path inputs[] = {o.input};
@@ -182,12 +196,16 @@ int cmd_render(Args args) {
     const Image picture{o.camera.size.x, o.camera.size.y, 4, renderer.read_color()};
     write_png(o.out, picture);
     if (o.lit_share) {
-        std::fprintf(stdout, "lit share (brightest channel above 1/255): %.2f%%\n", 100.0 * lit_share(picture));
+        std::fprintf(stdout, "lit share (brightest channel above 1/255): %.2f%%\n",
+                     100.0 * lit_share(picture));
     }
-    if (!o.mask.empty()) write_png(o.mask, Image{o.camera.size.x, o.camera.size.y, 1, renderer.render_mask(frame, meshes)});
+    if (!o.mask.empty())
+        write_png(o.mask,
+                  Image{o.camera.size.x, o.camera.size.y, 1, renderer.render_mask(frame, meshes)});
     print_timings(renderer, timings);
     if (context->debug().error_count() > 0) {
-        std::fprintf(stderr, "beamzone render: %d OpenGL error(s) reported\n", context->debug().error_count());
+        std::fprintf(stderr, "beamzone render: %d OpenGL error(s) reported\n",
+                     context->debug().error_count());
         return 1;
     }
     return 0;

@@ -7,17 +7,17 @@
 #include <optional>
 #include <string>
 
-#include "core/io/output_path.h"
-#include "core/text/printable.h"
 #include "app/commands/cli_args.h"
 #include "app/commands/commands.h"
 #include "app/commands/parse_command.h"
 #include "app/replay_level.h"
 #include "core/error.h"
+#include "core/io/output_path.h"
 #include "core/paths.h"
+#include "core/text/printable.h"
 #include "game/assets/assets.h"
-#include "game/difficulty/autopilot.h"
 #include "game/default_level.h"
+#include "game/difficulty/autopilot.h"
 #include "game/difficulty/difficulty.h"
 #include "game/records/replay.h"
 #include "level/loader.h"
@@ -148,7 +148,8 @@ int run(const Options& o) {
         lv = game::default_level();
         level_label = h.level;
     } else {
-        const fs::path path = o.level.empty() ? replay_level_path(h.level, o.file) : fs::path(o.level);
+        const fs::path path =
+            o.level.empty() ? replay_level_path(h.level, o.file) : fs::path(o.level);
         bool ok = false;
         lv = load_level_or_report(path, ok);
         if (!ok) {

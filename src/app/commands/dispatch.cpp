@@ -12,14 +12,18 @@ namespace bz::app {
 namespace {
 
 constexpr Command kCommands[] = {
-    {"play", "play the game in a window (F11 fullscreen, F12 screenshot, --help for keys)", cmd_play},
+    {"play", "play the game in a window (F11 fullscreen, F12 screenshot, --help for keys)",
+     cmd_play},
     {"render", "render a model file headless to PNG (and a line mask)", cmd_render},
     {"check", "validate level files (file:line:col errors), no window needed", cmd_check},
-    {"replay", "inspect a replay file, or --verify it headless against its state hashes", cmd_replay},
+    {"replay", "inspect a replay file, or --verify it headless against its state hashes",
+     cmd_replay},
     {"bench", "frame-time benchmark of a level offscreen; --sweep: speed vs accuracy", cmd_bench},
-    {"reference", "exact CPU line mask of a model or a level frame (same format as render --mask)", cmd_reference},
+    {"reference", "exact CPU line mask of a model or a level frame (same format as render --mask)",
+     cmd_reference},
     {"compare", "precision, recall and F1 of a line mask against a reference mask", cmd_compare},
-    {"difficulty", "the difficulty table: time to first death per level and difficulty, headless", cmd_difficulty},
+    {"difficulty", "the difficulty table: time to first death per level and difficulty, headless",
+     cmd_difficulty},
 };
 
 void print_usage(std::FILE* out) {
@@ -33,7 +37,9 @@ void print_usage(std::FILE* out) {
 
 }  // namespace
 
-std::span<const Command> commands() { return kCommands; }
+std::span<const Command> commands() {
+    return kCommands;
+}
 
 int dispatch(int argc, char** argv) {
     install_interrupt_handlers();  // before anything starts SDL (see core/interrupt.h)

@@ -24,8 +24,8 @@ auto parse_command(std::string_view name, Args args, const char* usage, Parse pa
     try {
         return parse(args);
     } catch (const UsageError& e) {
-        std::fprintf(stderr, "beamzone %.*s: %s\n%s", static_cast<int>(name.size()), name.data(), e.what(),
-                     usage);
+        std::fprintf(stderr, "beamzone %.*s: %s\n%s", static_cast<int>(name.size()), name.data(),
+                     e.what(), usage);
         *exit_code = 2;
         return std::nullopt;
     }

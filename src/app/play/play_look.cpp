@@ -59,19 +59,24 @@ PlayLook choose_look(const LookSources& s, const level::Level* level) {
     look.render.beam = render::beam_look(beam);
     look.render.beam.overlay = s.settings_overlay || (lv && lv->overlay.value_or(false));
     // Battlezone's vector generator redrew at about 41 Hz.
-    look.render.beam.refresh_hz = s.settings_hold_41hz || (lv && lv->hold_41hz.value_or(false)) ? 41.0f : 0.0f;
-    look.summary = "style " + style + " (" + style_from + "), preset " + preset + " (" + preset_from +
-                   "), beam " + beam + " (" + beam_from + ")";
+    look.render.beam.refresh_hz =
+        s.settings_hold_41hz || (lv && lv->hold_41hz.value_or(false)) ? 41.0f : 0.0f;
+    look.summary = "style " + style + " (" + style_from + "), preset " + preset + " (" +
+                   preset_from + "), beam " + beam + " (" + beam_from + ")";
     if (look.render.beam.overlay) look.summary += ", overlay";
     if (look.render.beam.refresh_hz > 0.0f) look.summary += ", 41 Hz hold";
     const std::optional<std::string>& method =
-        s.cli_line_method ? s.cli_line_method
-                          : (s.settings_line_method ? s.settings_line_method
-                                                    : (lv ? lv->line_method : std::optional<std::string>{}));
+        s.cli_line_method
+            ? s.cli_line_method
+            : (s.settings_line_method ? s.settings_line_method
+                                      : (lv ? lv->line_method : std::optional<std::string>{}));
     if (method) {
         look.render.method = render::parse_line_method(*method);
-        look.summary += std::string(", line method ") + render::line_method_name(look.render.method) + " (" +
-                        (s.cli_line_method ? "command line" : s.settings_line_method ? "settings file" : "level") +
+        look.summary += std::string(", line method ") +
+                        render::line_method_name(look.render.method) + " (" +
+                        (s.cli_line_method        ? "command line"
+                         : s.settings_line_method ? "settings file"
+                                                  : "level") +
                         ")";
     }
     if (!lv) return look;

@@ -23,7 +23,7 @@ struct LookSources {
     bool settings_style_given = false;           // false: the file does not name one
     std::optional<std::string> settings_preset;  // none: the settings file does not name one
     std::optional<std::string> cli_beam;
-    std::optional<std::string> settings_beam;    // none: the settings file does not name one
+    std::optional<std::string> settings_beam;  // none: the settings file does not name one
     bool settings_overlay = false;
     bool settings_hold_41hz = false;
     // Line method: --line-method, else the settings file, else the level, else the preset's.

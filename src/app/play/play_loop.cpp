@@ -26,7 +26,10 @@ constexpr double kSettingsErrorSeconds = 30.0;
 class Loop {
   public:
     Loop(PlaySession& session, LoopParts& parts, const LoopConfig& config)
-        : session_(session), p_(parts), config_(config), watcher_(parts.watcher),
+        : session_(session),
+          p_(parts),
+          config_(config),
+          watcher_(parts.watcher),
           menus_(menu_env()) {}
 
     LoopResult run() {
@@ -218,7 +221,8 @@ class Loop {
         show_errors();
         update_look();
         menus_.env().current_level = file;
-        p_.log.info("level: " + file.string() + " (chosen in the menu; edits reload while playing)");
+        p_.log.info("level: " + file.string() +
+                    " (chosen in the menu; edits reload while playing)");
     }
 
     // Puts what the options page changed into effect, then saves it.
@@ -364,8 +368,8 @@ class Loop {
             } catch (const std::exception& e) {
                 // The level validated but the game could not build it (say, a model that will
                 // not import): keep the running world and say what is wrong with what.
-                auto& list = names_a_model(*watcher_->current(), e.what()) ? model_errors_
-                                                                            : level_errors_;
+                auto& list =
+                    names_a_model(*watcher_->current(), e.what()) ? model_errors_ : level_errors_;
                 list.push_back(e.what());
                 p_.log.warn(e.what());
             }
@@ -462,7 +466,8 @@ class Loop {
 
     void collect_gl_messages() {
         auto& sink = p_.context.debug();
-        if (sink.messages().empty() && sink.performance_hints().empty() && sink.error_count() == 0) return;
+        if (sink.messages().empty() && sink.performance_hints().empty() && sink.error_count() == 0)
+            return;
         for (const auto& m : sink.messages()) p_.log.warn("GL: " + m);
         for (const auto& m : sink.performance_hints()) p_.log.info("GL: " + m);
         result_.gl_errors += sink.error_count();

@@ -69,19 +69,22 @@ PlayOptions parse_play_options(int argc, char* const* argv) {
             if (std::find(names.begin(), names.end(), p) == names.end()) {
                 std::string list;
                 for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
-                throw UsageError("--preset: expected one of " + list + ", not '" + printable(p) + "'");
+                throw UsageError("--preset: expected one of " + list + ", not '" + printable(p) +
+                                 "'");
             }
             o.preset = p;
         } else if (a == "--line-method") {
             const std::string m(cur.value(a));
             if (m != "compute" && m != "geometry_shader" && m != "auto" && m != "geometry") {
-                throw UsageError("--line-method: expected compute, geometry_shader or auto, not '" + m + "'");
+                throw UsageError("--line-method: expected compute, geometry_shader or auto, not '" +
+                                 m + "'");
             }
             o.line_method = m;
         } else if (a == "--style") {
             const std::string s(cur.value(a));
             if (!scene::style_from_name(s)) {
-                throw UsageError("--style: expected " + scene::style_name_list() + ", not '" + printable(s) + "'");
+                throw UsageError("--style: expected " + scene::style_name_list() + ", not '" +
+                                 printable(s) + "'");
             }
             o.style = s;
         } else if (a == "--beam") {
@@ -160,7 +163,8 @@ std::string play_usage(const std::string& settings_path, const std::string& high
            "                   level's, else mame)\n"
            "  --preset P       render preset for this run (else the settings', else the level's)\n"
            "  --difficulty D   for this run (else the settings' `difficulty`, else the level's)\n"
-           "  --line-method M  compute, geometry_shader or auto, for this run (else the settings',\n"
+           "  --line-method M  compute, geometry_shader or auto, for this run (else the "
+           "settings',\n"
            "                   else the level's, else the preset's)\n"
            "  --record FILE    save this game's inputs so --replay FILE plays it back exactly\n"
            "                   (until the level file changes: a replay belongs to one level)\n"

@@ -13,9 +13,9 @@
 #include "game/difficulty/difficulty.h"
 #include "game/fixed_step.h"
 #include "game/game.h"
+#include "game/hud/hud_layout.h"
 #include "game/records/highscores.h"
 #include "game/records/level_rules.h"
-#include "game/hud/hud_layout.h"
 #include "game/records/replay.h"
 #include "platform/free_fly.h"
 
@@ -73,8 +73,7 @@ class GameSession final : public PlaySession {
         try {
             if (const auto rec = game_->recording()) {
                 game::replay::save(path, *rec);
-                log_.info("recorded " + std::to_string(rec->commands.size()) + " ticks to " +
-                          path);
+                log_.info("recorded " + std::to_string(rec->commands.size()) + " ticks to " + path);
             } else {
                 log_.warn("nothing to record in " + path + ": no game was started");
             }
@@ -199,9 +198,7 @@ class GameSession final : public PlaySession {
 
     std::vector<std::string> take_notices() override { return std::exchange(notices_, {}); }
 
-    bool finished() const override {
-        return game_->replay_finished() || PlaySession::finished();
-    }
+    bool finished() const override { return game_->replay_finished() || PlaySession::finished(); }
     bool failed() const override { return game_->replay_mismatch().has_value(); }
 
   private:
@@ -333,9 +330,8 @@ class EditSession final : public PlaySession {
         out.push_back({{0.0f, -s}, {0.0f, s}, hud::kWhite, 0.8f});
         if (!font_) return;
         const hud::Box f = hud::footer_box(a);
-        const std::string status =
-            edit_status_line(level_, camera_.position(), camera_.yaw_deg(), camera_.pitch_deg(),
-                             camera_.forward());
+        const std::string status = edit_status_line(level_, camera_.position(), camera_.yaw_deg(),
+                                                    camera_.pitch_deg(), camera_.forward());
         const std::string keys =
             "W A S D MOVE   R / F UP, DOWN   ARROWS OR RIGHT MOUSE LOOK   SHIFT FAST   "
             "F5 SHADERS   ESCAPE LEAVE";

@@ -7,8 +7,8 @@
 #include <string>
 
 #include "app/play/play_session.h"
-#include "game/world/events.h"
 #include "game/hud/screens.h"
+#include "game/world/events.h"
 #include "platform/bindings.h"
 #include "scene/vector_font.h"
 

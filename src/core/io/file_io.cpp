@@ -73,7 +73,8 @@ void write_file_atomic(const fs::path& requested, std::string_view bytes) {
     if (fd < 0) throw UserError(tmp.string() + ": cannot create: " + std::strerror(errno));
     try {
         write_all(fd, bytes, tmp);
-        if (::fsync(fd) != 0) throw UserError(tmp.string() + ": fsync failed: " + std::strerror(errno));
+        if (::fsync(fd) != 0)
+            throw UserError(tmp.string() + ": fsync failed: " + std::strerror(errno));
     } catch (...) {
         ::close(fd);
         ::unlink(tmp.c_str());

@@ -49,7 +49,9 @@ RegularFile::~RegularFile() {
     if (fd_ >= 0) ::close(fd_);
 }
 
-int RegularFile::release() { return std::exchange(fd_, -1); }
+int RegularFile::release() {
+    return std::exchange(fd_, -1);
+}
 
 RegularFileResult open_regular_file(const std::filesystem::path& path) {
     RegularFileResult out;
@@ -57,8 +59,9 @@ RegularFileResult open_regular_file(const std::filesystem::path& path) {
     const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY);
     if (fd < 0) {
         const int err = errno;
-        out.why = (err == ENOENT || err == ENOTDIR) ? std::string("file not found")
-                                                    : std::string("cannot open: ") + std::strerror(err);
+        out.why = (err == ENOENT || err == ENOTDIR)
+                      ? std::string("file not found")
+                      : std::string("cannot open: ") + std::strerror(err);
         return out;
     }
     struct stat st {};
@@ -85,8 +88,8 @@ std::string read_head(const RegularFile& file, std::size_t max_bytes) {
     head.resize(static_cast<std::size_t>(std::min<std::uintmax_t>(max_bytes, file.size())));
     std::size_t got = 0;
     while (got < head.size()) {
-        const ssize_t n = ::pread(file.fd(), head.data() + got, head.size() - got,
-                                  static_cast<off_t>(got));
+        const ssize_t n =
+            ::pread(file.fd(), head.data() + got, head.size() - got, static_cast<off_t>(got));
         if (n < 0 && errno == EINTR) continue;
         if (n <= 0) break;
         got += static_cast<std::size_t>(n);

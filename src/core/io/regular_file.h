@@ -32,8 +32,8 @@ class RegularFile {
 };
 
 struct RegularFileResult {
-    RegularFile file;    // open when `why` is empty
-    std::string why;     // "file not found", "not a regular file (a FIFO)", ...
+    RegularFile file;  // open when `why` is empty
+    std::string why;   // "file not found", "not a regular file (a FIFO)", ...
 };
 
 // Opens `path` for reading when it names a regular file (symbolic links followed).

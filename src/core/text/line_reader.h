@@ -6,7 +6,7 @@
 namespace bz {
 
 class LineReader {
-public:
+  public:
     explicit LineReader(std::string_view text) : text_(text) {}
     // Stores the next line in `line`; false once the text is used up.
     bool next(std::string_view& line) {
@@ -21,7 +21,7 @@ public:
     }
     int line_number() const { return number_; }
 
-private:
+  private:
     std::string_view text_;
     std::size_t pos_ = 0;
     int number_ = 0;

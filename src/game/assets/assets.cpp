@@ -5,9 +5,9 @@
 #include <vector>
 
 #include "core/error.h"
+#include "game/assets/level_models.h"
 #include "game/assets/models.h"
 #include "game/assets/obstacle_factories.h"
-#include "game/assets/level_models.h"
 #include "geometry/line_mesh/line_mesh.h"
 
 namespace bz::game {
@@ -47,7 +47,9 @@ Assets::Assets(const level::Backdrop& b) : library_(std::make_unique<scene::Mesh
     factories_ = make_obstacle_factories(lib);
 }
 
-Assets::Assets(const level::Level& level) : Assets(level.backdrop) { reload(level); }
+Assets::Assets(const level::Level& level) : Assets(level.backdrop) {
+    reload(level);
+}
 
 void Assets::reload(const level::Level& level) {
     // Everything is checked and imported before the library changes.

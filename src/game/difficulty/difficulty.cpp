@@ -23,9 +23,12 @@ constexpr Scale kArcade{1.5, 0.5, 0.35, 0.85, 1.5};
 
 const Scale& scale_of(Difficulty d) {
     switch (d) {
-        case Difficulty::easy: return kEasy;
-        case Difficulty::arcade: return kArcade;
-        case Difficulty::normal: break;
+        case Difficulty::easy:
+            return kEasy;
+        case Difficulty::arcade:
+            return kArcade;
+        case Difficulty::normal:
+            break;
     }
     return kNormal;
 }
@@ -34,9 +37,12 @@ const Scale& scale_of(Difficulty d) {
 
 std::string_view difficulty_name(Difficulty d) {
     switch (d) {
-        case Difficulty::easy: return "easy";
-        case Difficulty::arcade: return "arcade";
-        case Difficulty::normal: break;
+        case Difficulty::easy:
+            return "easy";
+        case Difficulty::arcade:
+            return "arcade";
+        case Difficulty::normal:
+            break;
     }
     return "normal";
 }

@@ -70,9 +70,8 @@ ProbeSummary probe_summary(const level::Level& level, const Assets& assets, Diff
     double total = 0.0;
     out.min_first_death_s = options.max_seconds;
     for (int i = 0; i < games; ++i) {
-        const ProbeRun r =
-            probe_game(level, assets, difficulty, first_seed + static_cast<std::uint64_t>(i),
-                       pilot, options);
+        const ProbeRun r = probe_game(level, assets, difficulty,
+                                      first_seed + static_cast<std::uint64_t>(i), pilot, options);
         const double t = r.first_death_s.value_or(options.max_seconds);
         total += t;
         out.min_first_death_s = std::min(out.min_first_death_s, t);

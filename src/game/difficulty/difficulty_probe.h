@@ -15,12 +15,12 @@ namespace bz::game {
 enum class Pilot : std::uint8_t { idle, autopilot };
 
 struct ProbeRun {
-    std::optional<double> first_death_s;  // none: alive after the time limit
-    int spawns = 0;                       // hostiles that appeared
-    int rear_spawns = 0;                  // ... of them inside the 90 degrees behind the player
-    std::optional<double> saucer_score_s;  // when the score reached the saucer's score
-    std::optional<double> saucer_seen_s;   // when a saucer first appeared
-    std::optional<double> bonus_score_s;   // when the score reached the first bonus score
+    std::optional<double> first_death_s;    // none: alive after the time limit
+    int spawns = 0;                         // hostiles that appeared
+    int rear_spawns = 0;                    // ... of them inside the 90 degrees behind the player
+    std::optional<double> saucer_score_s;   // when the score reached the saucer's score
+    std::optional<double> saucer_seen_s;    // when a saucer first appeared
+    std::optional<double> bonus_score_s;    // when the score reached the first bonus score
     std::optional<double> bonus_awarded_s;  // when the first bonus tank was awarded
     int score = 0;
     double seconds = 0.0;  // simulated

@@ -65,8 +65,8 @@ class Reader {
         }
         flush_table();
         if (dropped_ > 0) {
-            out_.errors.back() = name_ + ": error: " + std::to_string(dropped_ + 1) +
-                                 " more errors not shown";
+            out_.errors.back() =
+                name_ + ": error: " + std::to_string(dropped_ + 1) + " more errors not shown";
         }
         return std::move(out_);
     }
@@ -109,7 +109,8 @@ class Reader {
         }
         const std::string_view digits = line.substr(6, 16);
         std::uint64_t rules = 0;
-        const auto [p, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), rules, 16);
+        const auto [p, ec] =
+            std::from_chars(digits.data(), digits.data() + digits.size(), rules, 16);
         if (ec != std::errc() || p != digits.data() + digits.size()) {
             return error(7, "rules hash '" + printable(digits) + "' is not 16 hex digits");
         }
@@ -128,14 +129,14 @@ class Reader {
     void read_entry(std::string_view line) {
         if (!have_key_) return error(1, "an entry before the first 'level' line");
         if (line.size() < 5 || line[3] != ' ') {
-            return error(1, "expected three initials, a space and a score, not '" +
-                                printable(line) + "'");
+            return error(
+                1, "expected three initials, a space and a score, not '" + printable(line) + "'");
         }
         const std::string_view initials = line.substr(0, 3);
         for (std::size_t i = 0; i < initials.size(); ++i) {
             if (!is_initial(initials[i])) {
-                return error(i + 1, "initials must be A-Z, 0-9 or space, not '" +
-                                        printable(initials) + "'");
+                return error(
+                    i + 1, "initials must be A-Z, 0-9 or space, not '" + printable(initials) + "'");
             }
         }
         const std::string_view digits = line.substr(4);
@@ -243,8 +244,8 @@ HighScoreLoad load_highscores(const fs::path& file) {
     } else {
         saved = "; it held no valid entry";
     }
-    out.message = "high scores file is damaged: " + out.errors.front() + more +
-                  "; kept as " + aside.filename().string() + saved;
+    out.message = "high scores file is damaged: " + out.errors.front() + more + "; kept as " +
+                  aside.filename().string() + saved;
     return out;
 }
 

@@ -2,8 +2,8 @@
 
 #include <system_error>
 
-#include "core/io/file_io.h"
 #include "core/hash.h"
+#include "core/io/file_io.h"
 #include "game/assets/assets.h"
 #include "game/difficulty/difficulty.h"
 #include "game/records/level_rules.h"

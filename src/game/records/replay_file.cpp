@@ -95,8 +95,8 @@ std::string text_value(const LineError& err, std::string_view value, std::size_t
                                " bytes long, over the limit of " + std::to_string(max_bytes));
     }
     if (has_control_character(value)) {
-        err.fail_at(value, std::string(what) + " '" + printable(value) +
-                               "' holds a control character");
+        err.fail_at(value,
+                    std::string(what) + " '" + printable(value) + "' holds a control character");
     }
     return std::string(value);
 }
@@ -143,8 +143,8 @@ Replay parse(std::string_view text, const std::string& name) {
         const std::string_view key = f[0];
         if (!magic) {
             if (key != kMagic)
-                err.fail_at(key, "not a beamzone replay (expected '" + std::string(kMagic) +
-                                     " 1')");
+                err.fail_at(key,
+                            "not a beamzone replay (expected '" + std::string(kMagic) + " 1')");
             if (f.size() != 2) err.fail_at(key, "expected '" + std::string(kMagic) + " VERSION'");
             const int v = err.number<int>(f[1], "format version");
             if (v != kFormatVersion) {
@@ -157,8 +157,8 @@ Replay parse(std::string_view text, const std::string& name) {
         }
         auto want = [&](std::size_t n) {
             if (f.size() != n) {
-                err.fail_at(key, "'" + std::string(key) + "' takes " + std::to_string(n - 1) +
-                                     " value(s)");
+                err.fail_at(
+                    key, "'" + std::string(key) + "' takes " + std::to_string(n - 1) + " value(s)");
             }
         };
         if (key == "version") {
@@ -170,8 +170,8 @@ Replay parse(std::string_view text, const std::string& name) {
             have_seed = true;
         } else if (key == "level") {
             // The rest of the line: a path may contain spaces.
-            std::string_view rest = line.substr(static_cast<std::size_t>(key.data() - line.data()) +
-                                                key.size());
+            std::string_view rest =
+                line.substr(static_cast<std::size_t>(key.data() - line.data()) + key.size());
             while (!rest.empty() && (rest.front() == ' ' || rest.front() == '\t'))
                 rest.remove_prefix(1);
             if (rest.empty()) err.fail_at(key, "'level' needs a path");
@@ -215,7 +215,8 @@ Replay parse(std::string_view text, const std::string& name) {
             const auto buttons = err.number<unsigned>(f[4], "buttons", 16);
             if (count == 0) err.fail_at(f[1], "run length must be at least 1");
             if (left < -127 || left > 127) err.fail_at(f[2], "tread values must lie in -127..127");
-            if (right < -127 || right > 127) err.fail_at(f[3], "tread values must lie in -127..127");
+            if (right < -127 || right > 127)
+                err.fail_at(f[3], "tread values must lie in -127..127");
             if (buttons > 0xff) err.fail_at(f[4], "buttons must be two hex digits");
             // Compared as what is left, so a count near 2^64 cannot wrap the sum around.
             const std::uint64_t room = *declared_ticks - r.commands.size();
@@ -238,13 +239,12 @@ Replay parse(std::string_view text, const std::string& name) {
             // Checked here, not only at the end: it also bounds how many hashes are kept.
             if (s.tick > *declared_ticks) {
                 err.fail_at(f[1], "a state hash at tick " + std::to_string(s.tick) +
-                                      " lies past the declared " +
-                                      std::to_string(*declared_ticks) + " ticks");
+                                      " lies past the declared " + std::to_string(*declared_ticks) +
+                                      " ticks");
             }
             if (!r.checks.empty() && s.tick <= r.checks.back().tick) {
-                err.fail_at(f[1], "state hash ticks must increase (tick " +
-                                      std::to_string(s.tick) + " after " +
-                                      std::to_string(r.checks.back().tick) + ")");
+                err.fail_at(f[1], "state hash ticks must increase (tick " + std::to_string(s.tick) +
+                                      " after " + std::to_string(r.checks.back().tick) + ")");
             }
             r.checks.push_back(s);
         } else if (key == "end") {

@@ -77,8 +77,8 @@ void World::fire_shell(const scene::Entity& from, bool from_player, double speed
     const glm::dvec3 fwd = t.forward();
     // Straight along the gun unless told otherwise (bit for bit the gun's own direction).
     const double yaw = yaw_offset == 0.0 ? t.yaw : wrap_angle(t.yaw + yaw_offset);
-    const glm::dvec2 dir = yaw_offset == 0.0 ? glm::dvec2(fwd.x, fwd.z)
-                                             : glm::dvec2(-std::sin(yaw), -std::cos(yaw));
+    const glm::dvec2 dir =
+        yaw_offset == 0.0 ? glm::dvec2(fwd.x, fwd.z) : glm::dvec2(-std::sin(yaw), -std::cos(yaw));
     Shell s;
     s.id = cur_.next_id++;
     s.from_player = from_player;

@@ -100,8 +100,9 @@ scene::FrameList World::interpolated_frame(double alpha, double fov_y_deg,
     alpha = std::clamp(alpha, 0.0, 1.0);
     scene::FrameList f;
     f.style = style_;
-    f.time_s = (static_cast<double>(prev_.tick) + alpha * static_cast<double>(cur_.tick - prev_.tick)) /
-               tuning::kTicksPerSecond;
+    f.time_s =
+        (static_cast<double>(prev_.tick) + alpha * static_cast<double>(cur_.tick - prev_.tick)) /
+        tuning::kTicksPerSecond;
     f.seed = static_cast<std::uint32_t>(cur_.tick);
     const scene::Transform eye_t =
         lerp(field_, prev_.player.body.transform, cur_.player.body.transform, alpha);

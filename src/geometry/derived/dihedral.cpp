@@ -23,7 +23,8 @@ std::vector<float> edge_dihedral_cosines(const AdjacencyMesh& mesh) {
         const glm::dvec3 n = unit_normal(pos(adj[0]), pos(adj[2]), pos(adj[4]));
         for (int e = 0; e < 3; ++e) {
             const std::uint32_t v0 = adj[2 * e], across = adj[2 * e + 1], v1 = adj[(2 * e + 2) % 6];
-            if (mesh.edge_kinds[t * 3 + static_cast<std::size_t>(e)] != EdgeKind::interior) continue;
+            if (mesh.edge_kinds[t * 3 + static_cast<std::size_t>(e)] != EdgeKind::interior)
+                continue;
             const glm::dvec3 m = unit_normal(pos(v0), pos(across), pos(v1));
             out[t * 3 + static_cast<std::size_t>(e)] = static_cast<float>(glm::dot(n, m));
         }

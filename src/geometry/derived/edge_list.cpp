@@ -22,7 +22,8 @@ std::vector<MeshEdge> build_edge_list(const AdjacencyMesh& mesh) {
             m.opp_a = adj[(2 * e + 4) % 6];
             const EdgeKind kind = mesh.edge_kinds[slot];
             if (kind == EdgeKind::interior) {
-                // The neighbour walks b -> a, so exactly one of the two half-edges runs low -> high.
+                // The neighbour walks b -> a, so exactly one of the two half-edges runs low ->
+                // high.
                 if (m.a > m.b) continue;
                 m.opp_b = adj[2 * e + 1];
                 m.cos_dihedral = cosines[slot];

@@ -26,10 +26,10 @@ inline constexpr std::uint32_t kEdgeInconsistent = 3u;
 
 // 24 bytes, the std430 layout of shaders/lines/edges.comp's MeshEdge.
 struct MeshEdge {
-    std::uint32_t a = 0, b = 0;  // the edge, in face A's winding
-    std::uint32_t opp_a = 0;     // face A's third vertex
+    std::uint32_t a = 0, b = 0;       // the edge, in face A's winding
+    std::uint32_t opp_a = 0;          // face A's third vertex
     std::uint32_t opp_b = kNoVertex;  // face B's third vertex; kNoVertex when there is no face B
-    float cos_dihedral = 2.0f;   // unit normals' dot (double, object space); 2 without face B
+    float cos_dihedral = 2.0f;        // unit normals' dot (double, object space); 2 without face B
     std::uint32_t flags = kEdgeInterior;  // kEdge* (the EdgeKind of the triangle edge)
 };
 static_assert(sizeof(MeshEdge) == 24);

@@ -1,7 +1,8 @@
 #include "geometry/import/confined_io.h"
 
-#include <assimp/IOStream.hpp>
 #include <unistd.h>
+
+#include <assimp/IOStream.hpp>
 #include <cstdio>
 #include <memory>
 #include <utility>
@@ -27,7 +28,7 @@ class FileStream final : public Assimp::IOStream {
     }
     size_t Write(const void*, size_t, size_t) override { return 0; }
     aiReturn Seek(size_t offset, aiOrigin origin) override {
-        const int whence = origin == aiOrigin_SET ? SEEK_SET
+        const int whence = origin == aiOrigin_SET   ? SEEK_SET
                            : origin == aiOrigin_CUR ? SEEK_CUR
                                                     : SEEK_END;
         return std::fseek(file_, static_cast<long>(offset), whence) == 0 ? aiReturn_SUCCESS
@@ -137,6 +138,8 @@ Assimp::IOStream* ConfinedIOSystem::Open(const char* file, const char* mode) {
     return new FileStream(f, size);
 }
 
-void ConfinedIOSystem::Close(Assimp::IOStream* stream) { delete stream; }
+void ConfinedIOSystem::Close(Assimp::IOStream* stream) {
+    delete stream;
+}
 
 }  // namespace bz::geo::detail

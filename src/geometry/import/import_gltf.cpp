@@ -155,7 +155,9 @@ struct Counter {
 
 }  // namespace
 
-bool looks_like_glb(std::string_view head) { return head.substr(0, 4) == "glTF"; }
+bool looks_like_glb(std::string_view head) {
+    return head.substr(0, 4) == "glTF";
+}
 
 std::optional<std::string> glb_json_chunk(int fd, std::uintmax_t file_size) {
     unsigned char header[20];
@@ -184,14 +186,20 @@ std::optional<std::string> gltf_nodes_over_limit(std::string_view text,
     bool in_string = false, escaped = false;
     for (char c : text) {
         if (in_string) {
-            if (escaped) escaped = false;
-            else if (c == '\\') escaped = true;
-            else if (c == '"') in_string = false;
+            if (escaped)
+                escaped = false;
+            else if (c == '\\')
+                escaped = true;
+            else if (c == '"')
+                in_string = false;
             continue;
         }
-        if (c == '"') in_string = true;
-        else if (c == '[' || c == '{') deepest = std::max(deepest, ++depth);
-        else if ((c == ']' || c == '}') && depth > 0) --depth;
+        if (c == '"')
+            in_string = true;
+        else if (c == '[' || c == '{')
+            deepest = std::max(deepest, ++depth);
+        else if ((c == ']' || c == '}') && depth > 0)
+            --depth;
     }
     if (deepest > 256) return "glTF JSON nested " + std::to_string(deepest) + " levels deep";
     const json doc = json::parse(text, nullptr, false);

@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <cctype>
 #include <cerrno>
@@ -9,7 +10,6 @@
 #include <cstring>
 #include <limits>
 #include <vector>
-#include <algorithm>
 
 namespace bz::geo::detail {
 namespace {
@@ -82,10 +82,22 @@ std::optional<std::uintmax_t> parse_count(std::string_view t) {
 // Bytes of one binary PLY scalar type; 0 when unknown.
 std::uintmax_t ply_type_bytes(std::string_view type) {
     static constexpr std::array<std::pair<std::string_view, std::uintmax_t>, 16> kTypes = {{
-        {"char", 1}, {"uchar", 1}, {"int8", 1}, {"uint8", 1},
-        {"short", 2}, {"ushort", 2}, {"int16", 2}, {"uint16", 2},
-        {"int", 4}, {"uint", 4}, {"int32", 4}, {"uint32", 4},
-        {"float", 4}, {"float32", 4}, {"double", 8}, {"float64", 8},
+        {"char", 1},
+        {"uchar", 1},
+        {"int8", 1},
+        {"uint8", 1},
+        {"short", 2},
+        {"ushort", 2},
+        {"int16", 2},
+        {"uint16", 2},
+        {"int", 4},
+        {"uint", 4},
+        {"int32", 4},
+        {"uint32", 4},
+        {"float", 4},
+        {"float32", 4},
+        {"double", 8},
+        {"float64", 8},
     }};
     for (const auto& [name, bytes] : kTypes) {
         if (name == type) return bytes;
@@ -115,8 +127,8 @@ std::array<std::string_view, 4> words(std::string_view line) {
 
 std::string declared_message(const std::string& format, std::uintmax_t count,
                              const std::string& what, std::uintmax_t available) {
-    return format + " header declares " + std::to_string(count) + " " + what +
-           ", more than the " + std::to_string(available) + " bytes of data in the file can hold";
+    return format + " header declares " + std::to_string(count) + " " + what + ", more than the " +
+           std::to_string(available) + " bytes of data in the file can hold";
 }
 
 bool starts_with_ci(std::string_view text, std::string_view prefix) {
@@ -165,8 +177,9 @@ std::optional<std::string> implausible_ply_header(std::string_view head, std::ui
             ascii = w[1] == "ascii";
         } else if (w[0] == "element") {
             const auto count = parse_count(w[2]);
-            if (!count) return "PLY header: element '" + std::string(w[1].substr(0, 40)) +
-                               "' has no valid count";
+            if (!count)
+                return "PLY header: element '" + std::string(w[1].substr(0, 40)) +
+                       "' has no valid count";
             elements.push_back({std::string(w[1].substr(0, 40)), *count, 0});
         } else if (w[0] == "property" && !elements.empty()) {
             // ascii: a number and a separator at least ("0 "); binary: the type's size; a
@@ -181,8 +194,8 @@ std::optional<std::string> implausible_ply_header(std::string_view head, std::ui
     }
     if (!ended) {
         if (head.size() >= kGuardHeadBytes) {
-            return "PLY header has no end_header in its first " +
-                   std::to_string(kGuardHeadBytes) + " bytes";
+            return "PLY header has no end_header in its first " + std::to_string(kGuardHeadBytes) +
+                   " bytes";
         }
         return std::nullopt;  // a truncated header: Assimp says what is wrong
     }
@@ -240,7 +253,8 @@ std::optional<std::string> too_many_lines(int fd, std::uintmax_t max_lines) {
         at += n;
         const char* p = buf.data();
         const char* end = p + n;
-        while ((p = static_cast<const char*>(std::memchr(p, '\n', static_cast<std::size_t>(end - p))))) {
+        while ((p = static_cast<const char*>(
+                    std::memchr(p, '\n', static_cast<std::size_t>(end - p))))) {
             ++p;
             if (++lines > max_lines) {
                 return "more than " + std::to_string(max_lines) + " lines, over the limit";

@@ -83,7 +83,8 @@ void check_before_import(const fs::path& path, const RegularFile& file,
         if (auto why = gltf_nodes_over_limit(json, limits.max_node_instances)) fail(path, *why);
     }
     if (ext == ".obj") {
-        if (auto why = too_many_lines(file.fd(), limits.max_text_lines)) fail(path, "OBJ has " + *why);
+        if (auto why = too_many_lines(file.fd(), limits.max_text_lines))
+            fail(path, "OBJ has " + *why);
     }
 }
 

@@ -9,18 +9,18 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
-#include <csignal>
 #include <chrono>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <exception>
 #include <new>
 #include <optional>
-#include <utility>
-#include <algorithm>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/error.h"
@@ -164,7 +164,9 @@ std::string seconds_text(double seconds) {
     return text;
 }
 
-std::string megabytes(std::uint64_t bytes) { return std::to_string(bytes >> 20) + " MB"; }
+std::string megabytes(std::uint64_t bytes) {
+    return std::to_string(bytes >> 20) + " MB";
+}
 
 // Reads the child's one frame as it arrives: the header, then straight into the mesh.
 class Receiver {
@@ -197,9 +199,7 @@ class Receiver {
         return true;
     }
 
-    bool complete() const {
-        return header_got_ == kHeaderBytes && segment_ == segments_.size();
-    }
+    bool complete() const { return header_got_ == kHeaderBytes && segment_ == segments_.size(); }
     Frame kind() const { return static_cast<Frame>(header_[0]); }
     TriMesh& mesh() { return mesh_; }
     const std::string& text() const { return text_; }
@@ -272,8 +272,8 @@ class Child {
         // A pidfd becomes readable when the child exits: no polling interval to wait out.
         const int pidfd = static_cast<int>(::syscall(SYS_pidfd_open, pid_, 0));
         if (pidfd >= 0) {
-            const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
-                deadline - Clock::now());
+            const auto left =
+                std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now());
             pollfd p{pidfd, POLLIN, 0};
             ::poll(&p, 1, static_cast<int>(std::max<long long>(left.count(), 0)));
             ::close(pidfd);
@@ -310,7 +310,8 @@ std::string signal_text(int sig) {
 TriMesh run_isolated(const fs::path& path, const ImportLimits& limits,
                      const std::function<TriMesh()>& work) {
     int fds[2];
-    if (::pipe2(fds, O_CLOEXEC) != 0) fail(path, std::string("cannot create a pipe: ") + std::strerror(errno));
+    if (::pipe2(fds, O_CLOEXEC) != 0)
+        fail(path, std::string("cannot create a pipe: ") + std::strerror(errno));
     const pid_t parent = ::getpid();
     std::fflush(nullptr);  // buffered output is written once, not once per process
     const pid_t pid = ::fork();
@@ -352,7 +353,8 @@ TriMesh run_isolated(const fs::path& path, const ImportLimits& limits,
         }
         const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - now);
         pollfd p{in.fd, POLLIN, 0};
-        const int ready = ::poll(&p, 1, static_cast<int>(std::min<long long>(left.count() + 1, kWatchMilliseconds)));
+        const int ready = ::poll(
+            &p, 1, static_cast<int>(std::min<long long>(left.count() + 1, kWatchMilliseconds)));
         if (ready < 0 && errno == EINTR) {
             // SIGINT or SIGTERM: the command is ending; do not make it wait for the import.
             child.kill_now();
@@ -392,7 +394,8 @@ TriMesh run_isolated(const fs::path& path, const ImportLimits& limits,
         case Frame::mesh: {
             TriMesh& mesh = receiver.mesh();
             for (const std::uint32_t i : mesh.indices) {
-                if (i >= mesh.positions.size()) fail(path, "the import process sent a malformed result");
+                if (i >= mesh.positions.size())
+                    fail(path, "the import process sent a malformed result");
             }
             return std::move(mesh);
         }

@@ -74,9 +74,9 @@ std::optional<std::string> zip_over_limits(int fd, std::uint64_t max_unzipped_by
                 shown.push_back(*c >= 0x20 && *c < 0x7f ? *c : '?');
             }
             return "zip entry '" + shown + "' inflates to " +
-                   std::to_string(info.uncompressed_size) + " bytes (after " + std::to_string(total) +
-                   " in the entries before it), over the limit of " + std::to_string(max_unzipped_bytes) +
-                   " uncompressed bytes";
+                   std::to_string(info.uncompressed_size) + " bytes (after " +
+                   std::to_string(total) + " in the entries before it), over the limit of " +
+                   std::to_string(max_unzipped_bytes) + " uncompressed bytes";
         }
     }
     return std::nullopt;

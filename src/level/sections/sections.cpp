@@ -16,22 +16,34 @@ constexpr std::array<std::string_view, 11> kRootKeys = {
 constexpr std::array<std::string_view, 3> kFieldKeys = {"size", "wrap", "obstacle_color"};
 constexpr std::array<std::string_view, 4> kPlayerKeys = {"position", "heading", "lives",
                                                          "bonus_scores"};
-constexpr std::array<std::string_view, 16> kEnemyKeys = {
-    "types",           "difficulty",         "super_tank_score",   "missile_score",
-    "saucer_score",    "spawn_min_distance", "spawn_max_distance", "spawn_rear_chance",
-    "aggression",      "fire_interval",      "aim_error",          "hold_fire",
-    "slow_tank_points", "super_tank_points", "missile_points",     "saucer_points"};
+constexpr std::array<std::string_view, 16> kEnemyKeys = {"types",
+                                                         "difficulty",
+                                                         "super_tank_score",
+                                                         "missile_score",
+                                                         "saucer_score",
+                                                         "spawn_min_distance",
+                                                         "spawn_max_distance",
+                                                         "spawn_rear_chance",
+                                                         "aggression",
+                                                         "fire_interval",
+                                                         "aim_error",
+                                                         "hold_fire",
+                                                         "slow_tank_points",
+                                                         "super_tank_points",
+                                                         "missile_points",
+                                                         "saucer_points"};
 constexpr std::array<std::string_view, 3> kDifficulties = {"easy", "normal", "arcade"};
 constexpr std::size_t kMaxBonusScores = 16;
 constexpr std::array<std::string_view, 4> kEnemyTypes = {"slow_tank", "super_tank", "missile",
                                                          "saucer"};
-constexpr std::array<std::string_view, 9> kRenderKeys = {"style",          "preset",         "line_width",
-                                                         "crease_angle",   "bloom_strength", "beam",
-                                                         "overlay",        "hold_41hz",      "line_method"};
+constexpr std::array<std::string_view, 9> kRenderKeys = {
+    "style", "preset",  "line_width", "crease_angle", "bloom_strength",
+    "beam",  "overlay", "hold_41hz",  "line_method"};
 // Must match bz::render::beam_look_names().
 constexpr std::array<std::string_view, 2> kBeamLooks = {"classic", "mame"};
 // Must match bz::render::parse_line_method ("geometry" is the old name of geometry_shader).
-constexpr std::array<std::string_view, 4> kLineMethods = {"compute", "geometry_shader", "auto", "geometry"};
+constexpr std::array<std::string_view, 4> kLineMethods = {"compute", "geometry_shader", "auto",
+                                                          "geometry"};
 // Must match bz::render::preset_names(); the level module may not link the renderer.
 constexpr std::array<std::string_view, 3> kPresets = {"fast", "balanced", "high"};
 
@@ -107,8 +119,8 @@ void read_bonus_scores(const toml::node& node, Level& level, Diagnostics& diag) 
     for (const auto& item : *list) {
         const auto* v = item.as_integer();
         if (!v || v->get() < 1 || v->get() > kMaxScore) {
-            diag.error(item.source(), "a bonus score is a whole number from 1 to " +
-                                          std::to_string(kMaxScore));
+            diag.error(item.source(),
+                       "a bonus score is a whole number from 1 to " + std::to_string(kMaxScore));
             return;
         }
         if (!scores.empty() && v->get() <= scores.back()) {

@@ -34,9 +34,10 @@ void set_beam_uniforms(const gl::Program& p, const BeamSettings& b, float preset
     const float lo = beam_half_width_min(b, preset_half_width_px, target_height);
     const float hi = beam_half_width_max(b, preset_half_width_px, target_height);
     const float dwell_px = b.dwell_px * static_cast<float>(target_height) / 1080.0f;
-    p.set("u_beam_width", glm::vec4(lo, hi, std::clamp(b.intensity_weight, -0.99f, 0.99f), b.nominal));
-    p.set("u_beam_shape", glm::vec4(std::clamp(b.flicker, 0.0f, 1.0f), dwell_px, std::max(b.dwell_max, 1.0f),
-                                    std::max(b.defocus, 0.0f)));
+    p.set("u_beam_width",
+          glm::vec4(lo, hi, std::clamp(b.intensity_weight, -0.99f, 0.99f), b.nominal));
+    p.set("u_beam_shape", glm::vec4(std::clamp(b.flicker, 0.0f, 1.0f), dwell_px,
+                                    std::max(b.dwell_max, 1.0f), std::max(b.defocus, 0.0f)));
     p.set("u_beam_seed", static_cast<unsigned>(seed));
     p.set("u_beam_lengthen", std::max(b.end_lengthening, 0.0f));
 }

@@ -12,7 +12,8 @@ BloomKernel bloom_kernel(int taps, float sigma) {
     std::vector<double> w(static_cast<std::size_t>(radius) + 1);
     double total = 0.0;
     for (int i = 0; i <= radius; ++i) {
-        w[static_cast<std::size_t>(i)] = std::exp(-0.5 * i * i / (static_cast<double>(sigma) * sigma));
+        w[static_cast<std::size_t>(i)] =
+            std::exp(-0.5 * i * i / (static_cast<double>(sigma) * sigma));
         total += (i == 0 ? 1.0 : 2.0) * w[static_cast<std::size_t>(i)];
     }
     for (auto& x : w) x /= total;

@@ -12,8 +12,10 @@ void pass_hud(const PassContext& ctx) {
     gl::apply(state);
     const gl::Program& p = ctx.programs.hud;
     p.use();
-    p.set("u_viewport", glm::vec2(static_cast<float>(ctx.targets.width), static_cast<float>(ctx.targets.height)));
-    set_beam_uniforms(p, ctx.settings.beam, ctx.settings.line_half_width_px, ctx.targets.height, ctx.seed, false);
+    p.set("u_viewport",
+          glm::vec2(static_cast<float>(ctx.targets.width), static_cast<float>(ctx.targets.height)));
+    set_beam_uniforms(p, ctx.settings.beam, ctx.settings.line_half_width_px, ctx.targets.height,
+                      ctx.seed, false);
     ctx.hud_vao.bind();
     glDrawArrays(GL_LINES, 0, ctx.hud_vertex_count);
 }

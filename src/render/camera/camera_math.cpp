@@ -1,7 +1,6 @@
 #include "render/camera/camera_math.h"
 
 #include <cmath>
-
 #include <glm/gtc/matrix_transform.hpp>
 
 namespace bz::render {

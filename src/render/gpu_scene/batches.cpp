@@ -103,8 +103,8 @@ FrameBatches build_batches(const scene::FrameList& frame, const scene::MeshLibra
         if (out.batches.empty() || !settings.instancing || out.batches.back().mesh != item.mesh ||
             out.batches.back().lod != v.lod || out.batches.back().occluder != item.occluder ||
             out.batches.back().eye_outside != v.eye_outside) {
-            out.batches.push_back({item.mesh, static_cast<GLuint>(out.instances.size()), 0, item.occluder,
-                                   v.lod, v.eye_outside});
+            out.batches.push_back({item.mesh, static_cast<GLuint>(out.instances.size()), 0,
+                                   item.occluder, v.lod, v.eye_outside});
         }
         ++out.batches.back().instance_count;
         out.instances.push_back(v.data);

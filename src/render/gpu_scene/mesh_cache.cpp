@@ -5,9 +5,7 @@
 #include "geometry/derived/closure.h"
 #include "geometry/derived/dihedral.h"
 #include "geometry/derived/edge_list.h"
-
 #include "geometry/derived/simplify.h"
-#include "geometry/derived/edge_list.h"
 
 namespace bz::render {
 
@@ -16,8 +14,9 @@ namespace {
 void instance_attributes(gl::VertexArray& vao, const gl::Buffer& instances, bool with_color) {
     vao.bind_buffer(1, instances, sizeof(InstanceData), 0, 1);
     for (GLuint col = 0; col < 4; ++col) {
-        vao.float_attribute(1 + col, 1, 4, static_cast<GLuint>(offsetof(InstanceData, model_view) +
-                                                               col * sizeof(glm::vec4)));
+        vao.float_attribute(
+            1 + col, 1, 4,
+            static_cast<GLuint>(offsetof(InstanceData, model_view) + col * sizeof(glm::vec4)));
     }
     if (with_color) {
         vao.float_attribute(5, 1, 4, offsetof(InstanceData, color));
@@ -49,12 +48,15 @@ const GpuMesh& MeshCache::get(const scene::MeshLibrary& library, scene::MeshId i
         }
     }
     if (slot.simplified && edge_lists_ && !slot.simplified->has_edge_list) {
-        if (auto reduced = geo::simplify_line_mesh(library.mesh(id))) upload_edges(*slot.simplified, *reduced);
+        if (auto reduced = geo::simplify_line_mesh(library.mesh(id)))
+            upload_edges(*slot.simplified, *reduced);
     }
     return slot.simplified ? *slot.simplified : *slot.full;
 }
 
-void MeshCache::set_edge_lists(bool on) { edge_lists_ = on; }
+void MeshCache::set_edge_lists(bool on) {
+    edge_lists_ = on;
+}
 
 void MeshCache::upload_edges(GpuMesh& gpu, const geo::AdjacencyMesh& mesh) {
     const std::vector<geo::MeshEdge> edges = geo::build_edge_list(mesh);

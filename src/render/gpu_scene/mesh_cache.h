@@ -33,7 +33,7 @@ struct GpuMesh {
     GLuint edge_count = 0;
     gl::Buffer adjacency;
     gl::Buffer triangles;
-    gl::Buffer edge_cosines;  // 3 per triangle, read by the geometry shader (binding 0)
+    gl::Buffer edge_cosines;     // 3 per triangle, read by the geometry shader (binding 0)
     bool has_edge_list = false;  // edge_list is filled (uploaded on first use with edge lists on)
     gl::VertexArray lines_vao;
     gl::VertexArray prepass_vao;
@@ -42,11 +42,13 @@ struct GpuMesh {
     bool outward_closed = false;  // geo::is_outward_closed: back faces hidden from outside
     GLsizei adjacency_count = 0;
     GLsizei triangle_index_count = 0;
-    std::size_t triangle_count() const { return static_cast<std::size_t>(triangle_index_count) / 3; }
+    std::size_t triangle_count() const {
+        return static_cast<std::size_t>(triangle_index_count) / 3;
+    }
 };
 
 class MeshCache {
-public:
+  public:
     explicit MeshCache(const gl::Buffer& instances) : instances_(&instances) {}
     // Uploads on first use and when the library's version for `id` changed. lod 1 is the
     // simplified mesh when the mesh has one, else the mesh itself.
@@ -57,7 +59,7 @@ public:
     // GPU meshes uploaded so far (each model once, plus its simplified version if used).
     std::size_t uploads() const { return uploads_; }
 
-private:
+  private:
     struct Slot {
         std::unique_ptr<GpuMesh> full;
         std::unique_ptr<GpuMesh> simplified;  // null: none built yet, or none possible

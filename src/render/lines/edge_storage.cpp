@@ -18,8 +18,8 @@ std::uint32_t grown(std::uint32_t current, std::size_t want, std::uint32_t max) 
 EdgeStorage::EdgeStorage() {
     GLint64 max_block = 0;
     glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &max_block);
-    max_capacity_ = static_cast<std::uint32_t>(
-        std::min<GLint64>(max_block / static_cast<GLint64>(sizeof(EdgeRecord)), 0x7FFFFFFF / kVerticesPerEdge));
+    max_capacity_ = static_cast<std::uint32_t>(std::min<GLint64>(
+        max_block / static_cast<GLint64>(sizeof(EdgeRecord)), 0x7FFFFFFF / kVerticesPerEdge));
     max_samples_ = static_cast<std::uint32_t>(std::min<GLint64>(max_block / 4, 0x7FFFFFFF));
     const EdgeDrawCommand cmd;
     command_.set_data(&cmd, sizeof(cmd), GL_DYNAMIC_DRAW);
@@ -33,15 +33,18 @@ void EdgeStorage::reserve(std::size_t records) {
     const std::uint32_t next = grown(capacity_, records, max_capacity_);
     if (next == capacity_) return;
     capacity_ = next;
-    records_.set_data(nullptr, static_cast<std::size_t>(capacity_) * sizeof(EdgeRecord), GL_DYNAMIC_COPY);
-    spans_.set_data(nullptr, static_cast<std::size_t>(capacity_) * 8 * sizeof(std::uint32_t), GL_DYNAMIC_COPY);
+    records_.set_data(nullptr, static_cast<std::size_t>(capacity_) * sizeof(EdgeRecord),
+                      GL_DYNAMIC_COPY);
+    spans_.set_data(nullptr, static_cast<std::size_t>(capacity_) * 8 * sizeof(std::uint32_t),
+                    GL_DYNAMIC_COPY);
 }
 
 void EdgeStorage::reserve_samples(std::size_t samples) {
     const std::uint32_t next = grown(sample_capacity_, samples, max_samples_);
     if (next == sample_capacity_) return;
     sample_capacity_ = next;
-    samples_.set_data(nullptr, static_cast<std::size_t>(sample_capacity_) * sizeof(std::uint32_t), GL_DYNAMIC_COPY);
+    samples_.set_data(nullptr, static_cast<std::size_t>(sample_capacity_) * sizeof(std::uint32_t),
+                      GL_DYNAMIC_COPY);
 }
 
 void EdgeStorage::reset() {
@@ -59,9 +62,13 @@ EdgeDrawCommand EdgeStorage::read_now() const {
     return cmd;
 }
 
-std::size_t EdgeStorage::appended() const { return read_now().vertex_count / kVerticesPerEdge; }
+std::size_t EdgeStorage::appended() const {
+    return read_now().vertex_count / kVerticesPerEdge;
+}
 
-std::size_t EdgeStorage::samples_used() const { return read_now().samples_used; }
+std::size_t EdgeStorage::samples_used() const {
+    return read_now().samples_used;
+}
 
 void EdgeStorage::keep_count() {
     has_previous_ = true;

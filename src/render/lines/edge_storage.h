@@ -13,7 +13,7 @@
 namespace bz::render {
 
 class EdgeStorage {
-public:
+  public:
     EdgeStorage();
     // Room for at least `records` (capped at what one shader storage block may hold).
     void reserve(std::size_t records);
@@ -47,15 +47,16 @@ public:
     const gl::Buffer& samples() const { return samples_; }
     const gl::Buffer& spans() const { return spans_; }
 
-private:
+  private:
     EdgeDrawCommand read_now() const;
 
     gl::Buffer records_;
     gl::Buffer command_;
     gl::Buffer kept_count_;
     gl::Buffer readback_;  // appended() and samples_used() read the counters from here
-    gl::Buffer samples_;  // one uint per spine sample: 1 visible, 0 hidden
-    gl::Buffer spans_;    // per record: 2 uvec4, sampled stretch, first and last visible sample, count
+    gl::Buffer samples_;   // one uint per spine sample: 1 visible, 0 hidden
+    gl::Buffer
+        spans_;  // per record: 2 uvec4, sampled stretch, first and last visible sample, count
     std::uint32_t capacity_ = 0;
     std::uint32_t max_capacity_ = 0;
     std::uint32_t sample_capacity_ = 0;

@@ -9,7 +9,7 @@ namespace {
 // The edge buffer is sized for every edge of the frame when that is small, else for this many
 // and grown when a frame appends more (EdgeStorage::keep_count).
 constexpr std::size_t kInitialRecords = std::size_t{1} << 16;
-constexpr GLuint kGroupSize = 64;  // local_size_x of edges.comp
+constexpr GLuint kGroupSize = 64;     // local_size_x of edges.comp
 constexpr GLuint kMaxGroups = 65535;  // the smallest GL_MAX_COMPUTE_WORK_GROUP_COUNT allowed
 
 }  // namespace
@@ -19,21 +19,25 @@ constexpr GLuint kMaxGroups = 65535;  // the smallest GL_MAX_COMPUTE_WORK_GROUP_
 void pass_edges(const PassContext& ctx) {
     std::size_t worst = 0;
     for (const Batch& b : ctx.batches.batches) {
-        worst += static_cast<std::size_t>(ctx.gpu_meshes.get(ctx.meshes, b.mesh, b.lod).edge_count) *
-                 static_cast<std::size_t>(b.instance_count);
+        worst +=
+            static_cast<std::size_t>(ctx.gpu_meshes.get(ctx.meshes, b.mesh, b.lod).edge_count) *
+            static_cast<std::size_t>(b.instance_count);
     }
     // A previous frame that overflowed asks for more; a frame that cannot overflow gets it all.
     const EdgeDrawCommand previous = ctx.edges.previous();
-    ctx.edges.reserve(
-        std::min(worst, std::max(kInitialRecords, std::size_t{previous.vertex_count / kVerticesPerEdge} + 1024)));
+    ctx.edges.reserve(std::min(
+        worst,
+        std::max(kInitialRecords, std::size_t{previous.vertex_count / kVerticesPerEdge} + 1024)));
     const bool samples = wants_spine_samples(ctx);
-    if (samples) ctx.edges.reserve_samples(std::size_t{previous.samples_used} + previous.samples_used / 4);
+    if (samples)
+        ctx.edges.reserve_samples(std::size_t{previous.samples_used} + previous.samples_used / 4);
     ctx.edges.reset();
 
     const gl::Program& program = ctx.programs.edges;
     program.use();
     program.set("u_proj", ctx.cam.proj);
-    program.set("u_viewport", glm::vec2(static_cast<float>(ctx.targets.width), static_cast<float>(ctx.targets.height)));
+    program.set("u_viewport", glm::vec2(static_cast<float>(ctx.targets.width),
+                                        static_cast<float>(ctx.targets.height)));
     program.set("u_near", ctx.cam.near);
     program.set("u_far", ctx.cam.far);
     program.set("u_capacity", ctx.edges.capacity());
@@ -51,7 +55,8 @@ void pass_edges(const PassContext& ctx) {
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEdgeListBinding, mesh.edge_list.id());
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEdgePositionsBinding, mesh.positions.id());
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kVertexNormalsBinding, mesh.vertex_normals.id());
-        program.set("u_skip_back_faces", (ctx.occlusion && b.eye_outside && mesh.outward_closed) ? 1 : 0);
+        program.set("u_skip_back_faces",
+                    (ctx.occlusion && b.eye_outside && mesh.outward_closed) ? 1 : 0);
         program.set("u_mesh_id", static_cast<unsigned>(b.mesh));
         // Chunks keep both work-group counts within the limit every implementation allows.
         const GLuint per_x = kGroupSize * kMaxGroups;
@@ -59,8 +64,10 @@ void pass_edges(const PassContext& ctx) {
             const GLuint edges = std::min(per_x, mesh.edge_count - edge0);
             program.set("u_edge_base", edge0);
             program.set("u_edge_count", mesh.edge_count);
-            for (GLuint inst0 = 0; inst0 < static_cast<GLuint>(b.instance_count); inst0 += kMaxGroups) {
-                const GLuint instances = std::min(kMaxGroups, static_cast<GLuint>(b.instance_count) - inst0);
+            for (GLuint inst0 = 0; inst0 < static_cast<GLuint>(b.instance_count);
+                 inst0 += kMaxGroups) {
+                const GLuint instances =
+                    std::min(kMaxGroups, static_cast<GLuint>(b.instance_count) - inst0);
                 program.set("u_first_instance", b.first_instance + inst0);
                 glDispatchCompute((edges + kGroupSize - 1) / kGroupSize, instances, 1);
             }

@@ -17,8 +17,8 @@ void set_spine_tolerances(const gl::Program& p, const PassContext& ctx) {
     // step is relative and covered by plane_tolerance_rel, except for the rounding of the
     // constant a, which is an absolute error.
     const double step = s.depth == DepthFormat::conventional_d24 ? std::ldexp(1.0, -21) : 0.0;
-    const double tol_abs = (step + 1e-6 * std::abs(static_cast<double>(ctx.cam.proj_a))) *
-                           std::abs(inv_b);
+    const double tol_abs =
+        (step + 1e-6 * std::abs(static_cast<double>(ctx.cam.proj_a))) * std::abs(inv_b);
     p.set("u_tol_rel", s.plane_tolerance_rel);
     p.set("u_tol_abs", static_cast<float>(tol_abs));
     p.set("u_tol_px", s.plane_tolerance_px);
@@ -29,7 +29,8 @@ void set_spine_tolerances(const gl::Program& p, const PassContext& ctx) {
 
 void set_line_uniforms(const gl::Program& p, const PassContext& ctx, float half_width) {
     p.set("u_proj", ctx.cam.proj);
-    p.set("u_viewport", glm::vec2(static_cast<float>(ctx.targets.width), static_cast<float>(ctx.targets.height)));
+    p.set("u_viewport",
+          glm::vec2(static_cast<float>(ctx.targets.width), static_cast<float>(ctx.targets.height)));
     p.set("u_half_width", half_width);  // the mask's quads; lines take theirs from the beam
     p.set("u_near", ctx.cam.near);
     p.set("u_far", ctx.cam.far);
@@ -41,7 +42,8 @@ void set_line_uniforms(const gl::Program& p, const PassContext& ctx, float half_
     p.set("u_proj_inv_b", 1.0f / ctx.cam.proj_b);
     p.set("u_depth_zero_to_one", ctx.cam.zero_to_one ? 1 : 0);
     // View ray through window position (x, y): ndc = pixel * 2 / size - 1, ray = ndc / P.
-    const float w = static_cast<float>(ctx.targets.width), h = static_cast<float>(ctx.targets.height);
+    const float w = static_cast<float>(ctx.targets.width),
+                h = static_cast<float>(ctx.targets.height);
     const float px = ctx.cam.proj[0][0], py = ctx.cam.proj[1][1];
     p.set("u_ray", glm::vec4(2.0f / (w * px), 2.0f / (h * py), -1.0f / px, -1.0f / py));
     p.set("u_depth_max", glm::ivec2(ctx.targets.width - 1, ctx.targets.height - 1));
@@ -56,7 +58,8 @@ constexpr float kMaskHalfWidth = 0.75f;
 void begin_line_target(const PassContext& ctx, const gl::Program& program, bool mask_mode) {
     (mask_mode ? ctx.targets.mask_fbo : ctx.targets.lines_fbo).bind();
     gl::PipelineState state;
-    state.blend = !mask_mode && ctx.settings.beam.blend == BeamBlend::additive ? gl::Blend::add : gl::Blend::max;
+    state.blend = !mask_mode && ctx.settings.beam.blend == BeamBlend::additive ? gl::Blend::add
+                                                                               : gl::Blend::max;
     state.depth_zero_to_one = ctx.cam.zero_to_one;
     gl::apply(state);
     glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
@@ -68,9 +71,10 @@ void begin_line_target(const PassContext& ctx, const gl::Program& program, bool 
     }
     program.use();
     set_line_uniforms(program, ctx, mask_mode ? kMaskHalfWidth : ctx.settings.line_half_width_px);
-    set_beam_uniforms(program, ctx.settings.beam, ctx.settings.line_half_width_px, ctx.targets.height, ctx.seed,
-                      mask_mode);
-    if (mask_mode) program.set("u_beam_width", glm::vec4(kMaskHalfWidth, kMaskHalfWidth, 0.0f, 1.0f));
+    set_beam_uniforms(program, ctx.settings.beam, ctx.settings.line_half_width_px,
+                      ctx.targets.height, ctx.seed, mask_mode);
+    if (mask_mode)
+        program.set("u_beam_width", glm::vec4(kMaskHalfWidth, kMaskHalfWidth, 0.0f, 1.0f));
     ctx.targets.depth.bind(0);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, ctx.instances.id());
 }
@@ -85,10 +89,12 @@ void pass_lines(const PassContext& ctx, bool mask_mode) {
     for (const Batch& b : ctx.batches.batches) {
         const GpuMesh& mesh = ctx.gpu_meshes.get(ctx.meshes, b.mesh, b.lod);
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, mesh.edge_cosines.id());
-        program.set("u_skip_back_faces", (ctx.occlusion && b.eye_outside && mesh.outward_closed) ? 1 : 0);
+        program.set("u_skip_back_faces",
+                    (ctx.occlusion && b.eye_outside && mesh.outward_closed) ? 1 : 0);
         mesh.lines_vao.bind();
         glDrawElementsInstancedBaseInstance(GL_TRIANGLES_ADJACENCY, mesh.adjacency_count,
-                                            GL_UNSIGNED_INT, nullptr, b.instance_count, b.first_instance);
+                                            GL_UNSIGNED_INT, nullptr, b.instance_count,
+                                            b.first_instance);
     }
 }
 

@@ -28,8 +28,9 @@ void draw_batch_triangles(const PassContext& ctx, gl::PipelineState state, bool 
             gl::apply(state);
         }
         (mesh.*vao).bind();
-        glDrawElementsInstancedBaseInstance(GL_TRIANGLES, mesh.triangle_index_count, GL_UNSIGNED_INT,
-                                            nullptr, b.instance_count, b.first_instance);
+        glDrawElementsInstancedBaseInstance(GL_TRIANGLES, mesh.triangle_index_count,
+                                            GL_UNSIGNED_INT, nullptr, b.instance_count,
+                                            b.first_instance);
     }
 }
 

@@ -44,8 +44,8 @@ void pass_spine_visibility(const PassContext& ctx) {
     // A fixed number of groups, each reading the appended count itself: no indirect dispatch,
     // no read-back.
     const std::size_t previous = edges.previous().vertex_count / kVerticesPerEdge;
-    glDispatchCompute(static_cast<GLuint>(std::clamp<std::size_t>(previous / 2, kMinVisibilityGroups,
-                                                                  kMaxVisibilityGroups)),
+    glDispatchCompute(static_cast<GLuint>(std::clamp<std::size_t>(
+                          previous / 2, kMinVisibilityGroups, kMaxVisibilityGroups)),
                       1, 1);
     // The quad pass reads the samples in its fragments and the spans in its vertices.
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);

@@ -8,9 +8,11 @@ void begin_strokes(const PassContext& ctx, const gl::Program& p) {
     p.set("u_capacity", ctx.edges.capacity());
     p.set("u_light_dir", glm::normalize(ctx.style.light_dir));
     const OutlineParams& o = ctx.style.outline;
-    p.set("u_width_px", ctx.style.lines == LinePass::sketch ? ctx.style.sketch.width_px : o.width_px);
+    p.set("u_width_px",
+          ctx.style.lines == LinePass::sketch ? ctx.style.sketch.width_px : o.width_px);
     p.set("u_overdraw", o.overdraw);
-    p.set("u_one_sided", o.quad == OutlineQuad::one_sided || ctx.settings.one_sided_outlines ? 1 : 0);
+    p.set("u_one_sided",
+          o.quad == OutlineQuad::one_sided || ctx.settings.one_sided_outlines ? 1 : 0);
     p.set("u_ink", o.ink);
     const SketchParams& s = ctx.style.sketch;
     p.set("u_jitter_px", s.jitter_px);

@@ -6,7 +6,9 @@ namespace bz::render {
 
 namespace {
 
-StyleDef vector_style() { return StyleDef{}; }
+StyleDef vector_style() {
+    return StyleDef{};
+}
 
 StyleDef vector_xray() {
     StyleDef s;

@@ -70,8 +70,10 @@ StyleTextures make_style_textures() {
         for (int x = 0; x < kOffsetSize; ++x) {
             const double u = 6.283185307 * x / kOffsetSize, w = 6.283185307 * y / kOffsetSize;
             const std::size_t k = (static_cast<std::size_t>(y) * kOffsetSize + x) * 2;
-            offset[k] = static_cast<float>(0.6 * std::sin(u + ph[0]) + 0.4 * std::sin(2.0 * w + ph[1]));
-            offset[k + 1] = static_cast<float>(0.6 * std::sin(w + ph[2]) + 0.4 * std::sin(2.0 * u + ph[3]));
+            offset[k] =
+                static_cast<float>(0.6 * std::sin(u + ph[0]) + 0.4 * std::sin(2.0 * w + ph[1]));
+            offset[k + 1] =
+                static_cast<float>(0.6 * std::sin(w + ph[2]) + 0.4 * std::sin(2.0 * u + ph[3]));
         }
     }
     t.offset = gl::Texture2D(kOffsetSize, kOffsetSize, GL_RG16F, gl::Filter::linear);

@@ -44,7 +44,8 @@ TEST(PlayLook, LevelStyleBeatsTheSettingsFileButNotTheCommandLine) {
     EXPECT_EQ(look.style, scene::LineStyle::arcade);
     EXPECT_EQ(look.render.preset, "fast") << "the player's machine decides the speed";
     EXPECT_EQ(look.summary,
-              "style arcade (level), preset fast (settings file), beam mame (default), line width 3 px (level), "
+              "style arcade (level), preset fast (settings file), beam mame (default), line width "
+              "3 px (level), "
               "crease angle 45 deg (level), bloom strength 0.5 (level)");
 
     s.cli_style = "occluded";
@@ -78,12 +79,14 @@ TEST(PlayLook, LevelPresetFillsInOnlyWhereTheSettingsNameNone) {
     PlayLook look = choose_look(from_settings("style = \"arcade\"\n"), &lv);
     EXPECT_EQ(look.render.preset, "fast");
     EXPECT_EQ(look.style, scene::LineStyle::arcade) << "the level names no style";
-    EXPECT_EQ(look.summary, "style arcade (settings file), preset fast (level), beam mame (default)");
+    EXPECT_EQ(look.summary,
+              "style arcade (settings file), preset fast (level), beam mame (default)");
 
     look = choose_look(from_settings("preset = \"high\"\n"), &lv);
     EXPECT_EQ(look.render.preset, "high");
     EXPECT_EQ(look.style, scene::LineStyle::occluded);
-    EXPECT_EQ(look.summary, "style vector (default), preset high (settings file), beam mame (default)");
+    EXPECT_EQ(look.summary,
+              "style vector (default), preset high (settings file), beam mame (default)");
 }
 
 TEST(PlayLook, DefaultsWithNoLevelAndNoChoices) {
@@ -94,12 +97,14 @@ TEST(PlayLook, DefaultsWithNoLevelAndNoChoices) {
         const PlayLook look = choose_look(LookSources{}, lv);
         EXPECT_EQ(look.style, scene::LineStyle::occluded);
         EXPECT_EQ(look.render.preset, "balanced");
-        EXPECT_EQ(look.summary, "style vector (default), preset balanced (default), beam mame (default)");
+        EXPECT_EQ(look.summary,
+                  "style vector (default), preset balanced (default), beam mame (default)");
     }
 }
 
 TEST(PlayLook, BeamIsMameByDefaultAndFollowsCommandLineThenSettingsThenLevel) {
-    const level::Level lv = load("version = 1\nname = \"L\"\n[render]\nbeam = \"classic\"\noverlay = true\n");
+    const level::Level lv =
+        load("version = 1\nname = \"L\"\n[render]\nbeam = \"classic\"\noverlay = true\n");
     ASSERT_EQ(lv.render.beam, std::optional<std::string>("classic"));
     PlayLook look = choose_look(LookSources{}, nullptr);
     EXPECT_EQ(look.render.beam.look, "mame");
@@ -116,7 +121,9 @@ TEST(PlayLook, BeamIsMameByDefaultAndFollowsCommandLineThenSettingsThenLevel) {
     EXPECT_EQ(look.render.beam.look, "mame");
     EXPECT_TRUE(look.render.beam.overlay) << "the level's overlay still applies";
     EXPECT_FLOAT_EQ(look.render.beam.refresh_hz, 41.0f);
-    EXPECT_NE(look.summary.find("beam mame (settings file), overlay, 41 Hz hold"), std::string::npos) << look.summary;
+    EXPECT_NE(look.summary.find("beam mame (settings file), overlay, 41 Hz hold"),
+              std::string::npos)
+        << look.summary;
 
     s.cli_beam = "classic";
     EXPECT_EQ(choose_look(s, &lv).render.beam.look, "classic");

@@ -21,10 +21,12 @@ TEST(PrintableText, ControlCharactersBecomeEscapes) {
 
 TEST(PrintableText, InvalidUtf8AndC1ControlsBecomeEscapes) {
     EXPECT_EQ(printable("\xff\xfe"), "\\xff\\xfe");
-    EXPECT_EQ(printable("\xc2\x9b" "31m"), "\\xc2\\x9b31m");  // 8-bit CSI, U+009B
-    EXPECT_EQ(printable("\xc0\xaf"), "\\xc0\\xaf");            // overlong '/'
-    EXPECT_EQ(printable("\xed\xa0\x80"), "\\xed\\xa0\\x80");   // a surrogate
-    EXPECT_EQ(printable("\xe2\x86"), "\\xe2\\x86");            // cut short
+    EXPECT_EQ(printable("\xc2\x9b"
+                        "31m"),
+              "\\xc2\\x9b31m");                               // 8-bit CSI, U+009B
+    EXPECT_EQ(printable("\xc0\xaf"), "\\xc0\\xaf");           // overlong '/'
+    EXPECT_EQ(printable("\xed\xa0\x80"), "\\xed\\xa0\\x80");  // a surrogate
+    EXPECT_EQ(printable("\xe2\x86"), "\\xe2\\x86");           // cut short
 }
 
 TEST(PrintableText, HugeTextIsCutWithACount) {

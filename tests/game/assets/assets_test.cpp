@@ -8,10 +8,10 @@
 #include "game/assets/backdrop.h"
 #include "game/assets/models.h"
 #include "game/assets/obstacle_factories.h"
+#include "game/test_world.h"
 #include "geometry/line_mesh/line_mesh.h"
 #include "level/kinds.h"
 #include "scene/shapes.h"
-#include "game/test_world.h"
 
 namespace bz::game {
 namespace {

@@ -13,8 +13,8 @@
 #include "core/error.h"
 #include "game/assets/assets.h"
 #include "game/game.h"
-#include "support/scratch_dir.h"
 #include "game/test_world.h"
+#include "support/scratch_dir.h"
 
 namespace bz::game {
 namespace {

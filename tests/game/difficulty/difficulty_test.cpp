@@ -4,12 +4,13 @@
 //   - classic on normal gives an idle player at least 20 s before the first death on average;
 //   - enemies appear inside the rear 90 degrees at most a quarter of the time;
 //   - the saucer and a bonus tank appear in autopilot games that reach their scores.
+#include "game/difficulty/difficulty.h"
+
 #include <gtest/gtest.h>
 
 #include <cstdio>
 #include <filesystem>
 
-#include "game/difficulty/difficulty.h"
 #include "game/difficulty/difficulty_probe.h"
 #include "game/records/replay.h"
 #include "level/loader.h"
@@ -115,8 +116,8 @@ TEST(DifficultyGoals, TutorialNeverKillsAnIdlePlayerIn120Seconds) {
     const Assets assets(lv.backdrop);
     for (const Difficulty d : {Difficulty::easy, Difficulty::normal, Difficulty::arcade}) {
         const ProbeSummary s = probe_summary(lv, assets, d, Pilot::idle, kSeeds);
-        EXPECT_EQ(s.survived, kSeeds) << difficulty_name(d) << ": first death after "
-                                      << s.min_first_death_s << " s";
+        EXPECT_EQ(s.survived, kSeeds)
+            << difficulty_name(d) << ": first death after " << s.min_first_death_s << " s";
         EXPECT_GT(s.spawns, 0) << "the tutorial must still send tanks";
     }
 }
@@ -177,9 +178,10 @@ TEST(DifficultyGoals, SaucerAndBonusTankAppearWhenTheAutopilotReachesTheirScores
             EXPECT_FALSE(r.bonus_awarded_s) << "seed " << seed;
         }
     }
-    std::printf("autopilot on classic, normal: %d of %d games reached the saucer's score, %d saw "
-                "it; %d reached the first bonus score\n",
-                reached_saucer, kSeeds, saw_saucer, reached_bonus);
+    std::printf(
+        "autopilot on classic, normal: %d of %d games reached the saucer's score, %d saw "
+        "it; %d reached the first bonus score\n",
+        reached_saucer, kSeeds, saw_saucer, reached_bonus);
     ASSERT_GT(reached_saucer, kSeeds / 2) << "the autopilot should reach the saucer's score";
     EXPECT_EQ(saw_saucer, reached_saucer);
     ASSERT_GT(reached_bonus, 0) << "no autopilot game reached the first bonus score";

@@ -7,8 +7,8 @@
 #include <algorithm>
 
 #include "game/hud/hud_layout.h"
-#include "game/world/tuning.h"
 #include "game/test_world.h"
+#include "game/world/tuning.h"
 
 namespace bz::game {
 namespace {

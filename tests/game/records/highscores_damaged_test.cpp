@@ -57,8 +57,7 @@ TEST(HighScoresDamagedFile, OneBadLineKeepsEveryValidEntryAndTheFileAside) {
     EXPECT_EQ(load_highscores(f).book.table(kClassic), t);
     EXPECT_TRUE(load_highscores(f).errors.empty());
     EXPECT_TRUE(load.may_save);
-    EXPECT_NE(load.message.find("kept as highscores.toml.bad-"), std::string::npos)
-        << load.message;
+    EXPECT_NE(load.message.find("kept as highscores.toml.bad-"), std::string::npos) << load.message;
     EXPECT_NE(load.message.find("2 valid entries"), std::string::npos) << load.message;
 }
 

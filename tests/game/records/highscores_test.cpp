@@ -68,13 +68,12 @@ TEST(HighScores, CorruptOrPartialFilesAreReportedWithLineAndColumn) {
         std::string expect;
     };
     const Case cases[] = {
-        {good.substr(0, good.size() / 2), "hs:"},           // cut mid-line
-        {good.substr(0, good.find("EDR")), "cut short"},    // cut at a line end
+        {good.substr(0, good.size() / 2), "hs:"},         // cut mid-line
+        {good.substr(0, good.find("EDR")), "cut short"},  // cut at a line end
         {"garbage\n", "hs:1:1: error: not a beamzone high-score file"},
         {"beamzone-highscores 1\nABC 12x\nend\n", "hs:2:5: error: score '12x'"},
         {"beamzone-highscores 1\nab 5\nend\n", "hs:2:1: error: expected three initials"},
-        {std::string("beamzone-highscores 1\nA") + '\0' + "C 5\nend\n",
-         "hs:2:2: error: initials"},
+        {std::string("beamzone-highscores 1\nA") + '\0' + "C 5\nend\n", "hs:2:2: error: initials"},
         {"beamzone-highscores 2\nABC 5\nend\n", "hs:2:1: error: an entry before the first"},
         {"", "hs:1:1: error: empty"},
     };

@@ -35,13 +35,12 @@ bool printable_only(const std::string& s) {
 
 TEST(ReplayHugeCounts, RunLengthNearTwoToTheSixtyFourIsRefusedAtItsColumn) {
     for (const char* count : {"18446744073709551615", "18446744073709551600", "11"}) {
-        const std::string msg =
-            error_of(kHeader + "ticks 10\nc " + count + " 0 0 00\nend\n");
+        const std::string msg = error_of(kHeader + "ticks 10\nc " + count + " 0 0 00\nend\n");
         EXPECT_EQ(msg.rfind("r.bzr:9:3: error: run length", 0), 0u) << msg;
     }
     // Two runs whose sum wraps around 2^64.
-    const std::string msg = error_of(kHeader +
-                                     "ticks 10\nc 5 0 0 00\nc 18446744073709551612 0 0 00\nend\n");
+    const std::string msg =
+        error_of(kHeader + "ticks 10\nc 5 0 0 00\nc 18446744073709551612 0 0 00\nend\n");
     EXPECT_EQ(msg.rfind("r.bzr:10:3: error: run length", 0), 0u) << msg;
 }
 

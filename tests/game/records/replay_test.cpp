@@ -5,8 +5,8 @@
 #include <filesystem>
 
 #include "core/error.h"
-#include "core/io/file_io.h"
 #include "core/hash.h"
+#include "core/io/file_io.h"
 #include "core/rng.h"
 #include "game/difficulty/autopilot.h"
 #include "game/records/highscores.h"
@@ -111,7 +111,8 @@ std::string error_of(const std::string& text) {
 TEST(Replay, BadFilesGiveFileLineMessages) {
     const std::string good = replay::serialise(record_game(120));
     EXPECT_EQ(error_of(""), "r.bzr:1:1: error: empty file, not a beamzone replay");
-    EXPECT_NE(error_of("hello\n").find("r.bzr:1:1: error: not a beamzone replay"), std::string::npos);
+    EXPECT_NE(error_of("hello\n").find("r.bzr:1:1: error: not a beamzone replay"),
+              std::string::npos);
     EXPECT_NE(error_of("beamzone-replay 9\n").find("r.bzr:1:17: error: replay format 9"),
               std::string::npos);
     // Cut short: drop the "end" line.
@@ -132,7 +133,8 @@ TEST(Replay, BadFilesGiveFileLineMessages) {
     EXPECT_NE(error_of(good + "junk\n").find("after 'end'"), std::string::npos);
     std::string unknown = good;
     unknown.insert(unknown.find("seed"), "colour red\n");
-    EXPECT_NE(error_of(unknown).find("r.bzr:3:1: error: unknown record 'colour'"), std::string::npos);
+    EXPECT_NE(error_of(unknown).find("r.bzr:3:1: error: unknown record 'colour'"),
+              std::string::npos);
 }
 
 TEST(Replay, LoadOfMissingFileIsAUserError) {

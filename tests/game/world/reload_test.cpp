@@ -9,10 +9,10 @@
 
 #include "core/error.h"
 #include "game/difficulty/autopilot.h"
-#include "game/world/collision.h"
 #include "game/game.h"
-#include "game/world/tuning.h"
 #include "game/test_world.h"
+#include "game/world/collision.h"
+#include "game/world/tuning.h"
 
 namespace bz::game {
 namespace {

@@ -3,8 +3,8 @@
 #include <cmath>
 
 #include "game/fixed_step.h"
-#include "game/world/tick_command.h"
 #include "game/test_world.h"
+#include "game/world/tick_command.h"
 
 namespace bz::game {
 namespace {

@@ -4,8 +4,8 @@
 
 #include <cmath>
 
-#include "game/world/tuning.h"
 #include "game/test_world.h"
+#include "game/world/tuning.h"
 
 namespace bz::game {
 namespace {

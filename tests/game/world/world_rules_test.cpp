@@ -5,8 +5,8 @@
 #include <cmath>
 
 #include "game/difficulty/autopilot.h"
-#include "game/world/tuning.h"
 #include "game/test_world.h"
+#include "game/world/tuning.h"
 
 namespace bz::game {
 namespace {

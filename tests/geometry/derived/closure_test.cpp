@@ -1,10 +1,11 @@
 // is_outward_closed decides whether the renderer may cull back faces: only for watertight
 // meshes every piece of which encloses a positive volume.
+#include "geometry/derived/closure.h"
+
 #include <gtest/gtest.h>
 
-#include "geometry/derived/closure.h"
-#include "geometry/line_mesh/line_mesh.h"
 #include "geometry/generated/primitives.h"
+#include "geometry/line_mesh/line_mesh.h"
 
 namespace {
 

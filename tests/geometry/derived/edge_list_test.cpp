@@ -6,8 +6,8 @@
 #include <map>
 #include <set>
 
-#include "geometry/line_mesh/line_mesh.h"
 #include "geometry/generated/primitives.h"
+#include "geometry/line_mesh/line_mesh.h"
 
 namespace bz::geo {
 namespace {
@@ -16,7 +16,8 @@ namespace {
 std::multiset<std::pair<std::uint32_t, std::uint32_t>> half_edges(const AdjacencyMesh& m) {
     std::multiset<std::pair<std::uint32_t, std::uint32_t>> out;
     for (std::size_t t = 0; t < m.triangle_count(); ++t) {
-        for (int e = 0; e < 3; ++e) out.insert({m.triangles[3 * t + e], m.triangles[3 * t + (e + 1) % 3]});
+        for (int e = 0; e < 3; ++e)
+            out.insert({m.triangles[3 * t + e], m.triangles[3 * t + (e + 1) % 3]});
     }
     return out;
 }

@@ -2,8 +2,8 @@
 
 #include <gtest/gtest.h>
 
-#include "geometry/line_mesh/line_mesh.h"
 #include "geometry/generated/primitives.h"
+#include "geometry/line_mesh/line_mesh.h"
 
 namespace bz::geo {
 namespace {

@@ -21,15 +21,18 @@ inline std::string triangle_buffer() {
 inline std::string gltf_json(const std::string& buffer, const std::string& nodes,
                              const std::string& scene_nodes) {
     return R"({"asset": {"version": "2.0"},
-  "buffers": [)" + buffer + R"(],
+  "buffers": [)" +
+           buffer + R"(],
   "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 36, "target": 34962},
                   {"buffer": 0, "byteOffset": 36, "byteLength": 6, "target": 34963}],
   "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
                  "min": [0, 0, 0], "max": [1, 1, 0]},
                 {"bufferView": 1, "componentType": 5123, "count": 3, "type": "SCALAR"}],
   "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1, "mode": 4}]}],
-  "nodes": )" + nodes + R"(,
-  "scenes": [{"nodes": )" + scene_nodes + R"(}],
+  "nodes": )" +
+           nodes + R"(,
+  "scenes": [{"nodes": )" +
+           scene_nodes + R"(}],
   "scene": 0})";
 }
 

@@ -59,15 +59,16 @@ TEST(Confinement, LongReferenceIsQuotedWithBothEnds) {
 
 TEST(Confinement, MtllibNamingEtcPasswdRelativelyIsRefused) {
     Layout l;
-    const auto p = l.dir.write("level/m.obj", "mtllib ../../../../../../../../etc/passwd\n" + kTriangleObj);
+    const auto p =
+        l.dir.write("level/m.obj", "mtllib ../../../../../../../../etc/passwd\n" + kTriangleObj);
     expect_refusal(import_error(p, l.options()), p, "etc/passwd': leads outside");
 }
 
 TEST(Confinement, GltfBufferUriEscapingIsRefused) {
     Layout l;
     const auto p = l.dir.write(
-        "level/m.gltf",
-        test::gltf_json(R"({"uri": "../outside/secret.bin", "byteLength": 42})", R"([{"mesh": 0}])", "[0]"));
+        "level/m.gltf", test::gltf_json(R"({"uri": "../outside/secret.bin", "byteLength": 42})",
+                                        R"([{"mesh": 0}])", "[0]"));
     expect_refusal(import_error(p, l.options()), p, "secret.bin': leads outside");
 }
 
@@ -91,7 +92,8 @@ TEST(Confinement, SymlinkLeadingOutsideIsRefused) {
     Layout l;
     std::filesystem::create_symlink(l.dir.path() / "outside" / "secret.bin", l.level / "tri.bin");
     const auto p = l.dir.write(
-        "level/m.gltf", test::gltf_json(R"({"uri": "tri.bin", "byteLength": 42})", R"([{"mesh": 0}])", "[0]"));
+        "level/m.gltf",
+        test::gltf_json(R"({"uri": "tri.bin", "byteLength": 42})", R"([{"mesh": 0}])", "[0]"));
     expect_refusal(import_error(p, l.options()), p, "tri.bin': leads outside");
 }
 
@@ -106,9 +108,11 @@ TEST(Confinement, ReferencesInsideAnyAllowedFolderLoad) {
     // The level folder and a data folder: a model in one may use a file in the other.
     l.dir.write("data/shared.mtl", "newmtl green\nKd 0 1 0\n");
     l.dir.write("level/tri.bin", test::triangle_buffer());
-    const auto obj = l.dir.write("level/m.obj", "mtllib ../data/shared.mtl\nusemtl green\n" + kTriangleObj);
+    const auto obj =
+        l.dir.write("level/m.obj", "mtllib ../data/shared.mtl\nusemtl green\n" + kTriangleObj);
     const auto gltf = l.dir.write(
-        "level/m.gltf", test::gltf_json(R"({"uri": "tri.bin", "byteLength": 42})", R"([{"mesh": 0}])", "[0]"));
+        "level/m.gltf",
+        test::gltf_json(R"({"uri": "tri.bin", "byteLength": 42})", R"([{"mesh": 0}])", "[0]"));
     ImportOptions o = l.options();
     o.allowed_folders.push_back(l.dir.path() / "data");
     EXPECT_EQ(import_model(obj, o).triangle_count(), 1u);

@@ -17,10 +17,11 @@ using namespace test;  // ScratchDir, import_error, expect_refusal, quick, secon
 TEST(DeclaredCounts, PlyAsciiDeclaringBillionsOfVerticesIsRefusedAtOnce) {
     ScratchDir dir;
     // The 190-byte shape of the file that grew the game to 17.6 GB.
-    const auto p = dir.write("huge.ply",
-                             "ply\nformat ascii 1.0\nelement vertex 1500000000\nproperty float x\n"
-                             "property float y\nproperty float z\nelement face 1\n"
-                             "property list uchar int vertex_indices\nend_header\n0 0 0\n3 0 0 0\n");
+    const auto p =
+        dir.write("huge.ply",
+                  "ply\nformat ascii 1.0\nelement vertex 1500000000\nproperty float x\n"
+                  "property float y\nproperty float z\nelement face 1\n"
+                  "property list uchar int vertex_indices\nend_header\n0 0 0\n3 0 0 0\n");
     const auto start = Clock::now();
     expect_refusal(import_error(p, quick()), p, "PLY header declares 1500000000 'vertex' elements");
     EXPECT_LT(seconds_since(start), 3.0);
@@ -38,7 +39,8 @@ TEST(DeclaredCounts, PlyBinaryHeaderIsBoundedByItsPropertySizes) {
     const auto d = dir.write("doubles.ply",
                              "ply\nformat binary_little_endian 1.0\nelement vertex 2000000\n"
                              "property double x\nproperty double y\nproperty double z\n"
-                             "end_header\n" + body);
+                             "end_header\n" +
+                                 body);
     expect_refusal(import_error(d, quick()), d, "PLY header declares 2000000 'vertex' elements");
     // Elements without properties still cost memory per instance.
     const auto q = dir.write("empty_elements.ply",
@@ -56,8 +58,7 @@ TEST(DeclaredCounts, PlyGuardAcceptsRealFiles) {
         std::string head(detail::kGuardHeadBytes, '\0');
         in.read(head.data(), static_cast<std::streamsize>(head.size()));
         head.resize(static_cast<std::size_t>(in.gcount()));
-        EXPECT_FALSE(detail::implausible_ply_header(head, fs::file_size(e.path())))
-            << e.path();
+        EXPECT_FALSE(detail::implausible_ply_header(head, fs::file_size(e.path()))) << e.path();
         ++checked;
     }
     EXPECT_GE(checked, 5u);
@@ -74,7 +75,8 @@ TEST(DeclaredCounts, PlyHeaderWithoutEndInTheGuardedPrefixIsRefused) {
 
 TEST(DeclaredCounts, OffWithDimensionPrefixIsGuardedToo) {
     EXPECT_TRUE(detail::implausible_off_header("nOFF 3 900000000 1 0\n", 100));
-    EXPECT_FALSE(detail::implausible_off_header("nOFF 3 3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", 41));
+    EXPECT_FALSE(
+        detail::implausible_off_header("nOFF 3 3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", 41));
 }
 
 TEST(DeclaredCounts, OffDeclaringHalfABillionVerticesIsRefused) {

@@ -23,7 +23,8 @@ TEST(SpecialFiles, FifoAsTheModelIsRefusedWithoutBlocking) {
 TEST(SpecialFiles, FifoAsMtllibIsRefused) {
     ScratchDir dir;
     make_fifo(dir, "materials.mtl");
-    const auto p = dir.write("model.obj", "mtllib materials.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    const auto p =
+        dir.write("model.obj", "mtllib materials.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
     const auto start = Clock::now();
     const std::string m = import_error(p, quick());
     expect_refusal(m, p, "reference '");
@@ -35,7 +36,8 @@ TEST(SpecialFiles, FifoAsGltfBufferUriIsRefused) {
     ScratchDir dir;
     make_fifo(dir, "tri.bin");
     const auto p = dir.write(
-        "model.gltf", test::gltf_json(R"({"uri": "tri.bin", "byteLength": 42})", R"([{"mesh": 0}])", "[0]"));
+        "model.gltf",
+        test::gltf_json(R"({"uri": "tri.bin", "byteLength": 42})", R"([{"mesh": 0}])", "[0]"));
     const auto start = Clock::now();
     const std::string m = import_error(p, quick());
     expect_refusal(m, p, "tri.bin': not a regular file (a FIFO)");

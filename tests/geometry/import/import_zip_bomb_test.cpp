@@ -18,9 +18,9 @@ using namespace test;  // ScratchDir, import_error, expect_refusal, quick, secon
 // A real bomb: `zeros` bytes of zeros, deflated (about 1000:1).
 void add_zeros(zipFile zf, const char* name, std::size_t zeros) {
     zip_fileinfo info{};
-    ASSERT_EQ(zipOpenNewFileInZip64(zf, name, &info, nullptr, 0, nullptr, 0, nullptr, Z_DEFLATED,
-                                    9, 1),
-              ZIP_OK);
+    ASSERT_EQ(
+        zipOpenNewFileInZip64(zf, name, &info, nullptr, 0, nullptr, 0, nullptr, Z_DEFLATED, 9, 1),
+        ZIP_OK);
     const std::vector<char> block(1 << 20, '\0');
     for (std::size_t left = zeros; left > 0;) {
         const std::size_t n = std::min(left, block.size());
@@ -33,8 +33,7 @@ void add_zeros(zipFile zf, const char* name, std::size_t zeros) {
 // A lying entry: three stored bytes declared as `declared` uncompressed bytes.
 void add_lie(zipFile zf, const char* name, std::uint64_t declared) {
     zip_fileinfo info{};
-    ASSERT_EQ(zipOpenNewFileInZip2_64(zf, name, &info, nullptr, 0, nullptr, 0, nullptr, 0, 0, 1,
-                                      1),
+    ASSERT_EQ(zipOpenNewFileInZip2_64(zf, name, &info, nullptr, 0, nullptr, 0, nullptr, 0, 0, 1, 1),
               ZIP_OK);
     ASSERT_EQ(zipWriteInFileInZip(zf, "abc", 3), ZIP_OK);
     ASSERT_EQ(zipCloseFileInZipRaw64(zf, declared, 0x352441c2u), ZIP_OK);
@@ -53,7 +52,8 @@ TEST(ZipBomb, ThreeMfInflatingPastTheCapIsRefusedBeforeInflating) {
     ImportOptions o = quick();
     o.limits.max_unzipped_bytes = std::uint64_t{16} << 20;
     const auto start = Clock::now();
-    expect_refusal(import_error(p, o), p, "zip entry '3D/3dmodel.model' inflates to 50331648 bytes");
+    expect_refusal(import_error(p, o), p,
+                   "zip entry '3D/3dmodel.model' inflates to 50331648 bytes");
     EXPECT_LT(seconds_since(start), 3.0);
 }
 

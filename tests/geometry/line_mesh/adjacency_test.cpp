@@ -5,8 +5,8 @@
 #include <stdexcept>
 
 #include "core/rng.h"
-#include "geometry/line_mesh/line_mesh.h"
 #include "geometry/generated/primitives.h"
+#include "geometry/line_mesh/line_mesh.h"
 #include "reference_adjacency.h"
 
 namespace bz::geo {

@@ -4,8 +4,8 @@
 #include <gtest/gtest.h>
 #include <meshoptimizer.h>
 
-#include "geometry/line_mesh/line_mesh.h"
 #include "geometry/generated/primitives.h"
+#include "geometry/line_mesh/line_mesh.h"
 
 namespace bz::geo {
 namespace {

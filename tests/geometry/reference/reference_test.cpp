@@ -9,12 +9,12 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <random>
 
-#include "geometry/line_mesh/line_mesh.h"
 #include "geometry/generated/primitives.h"
+#include "geometry/generated/subdivide.h"
+#include "geometry/line_mesh/line_mesh.h"
 #include "geometry/reference/reference_bvh.h"
 #include "geometry/reference/reference_edges.h"
 #include "geometry/reference/reference_raster.h"
-#include "geometry/generated/subdivide.h"
 
 namespace bz::geo {
 namespace {

@@ -73,18 +73,18 @@ TEST(EnemyRules, BadValuesPointAtTheValue) {
     EXPECT_TRUE(has_one_error(load_text(level_text("[enemies]\ndifficulty = \"hard\"\n")), 4, 14,
                               "difficulty"));
     EXPECT_TRUE(has_one_error(load_text(level_text("[player]\nlives = 0\n")), 4, 9, "lives"));
-    EXPECT_TRUE(has_one_error(
-        load_text(level_text("[player]\nbonus_scores = [20000, 10000]\n")), 4, 24, "increase"));
+    EXPECT_TRUE(has_one_error(load_text(level_text("[player]\nbonus_scores = [20000, 10000]\n")), 4,
+                              24, "increase"));
     EXPECT_TRUE(has_one_error(load_text(level_text("[player]\nbonus_scores = [1.5]\n")), 4, 17,
                               "whole number"));
-    EXPECT_TRUE(has_one_error(load_text(level_text("[player]\nbonus_scores = 15000\n")), 4, 16,
-                              "array"));
+    EXPECT_TRUE(
+        has_one_error(load_text(level_text("[player]\nbonus_scores = 15000\n")), 4, 16, "array"));
     EXPECT_TRUE(has_one_error(load_text(level_text("[enemies]\nspawn_rear_chance = 2\n")), 4, 21,
                               "spawn_rear_chance"));
     EXPECT_TRUE(has_one_error(load_text(level_text("[enemies]\nfire_interval = 0.1\n")), 4, 17,
                               "fire_interval"));
-    EXPECT_TRUE(has_one_error(load_text(level_text("[enemies]\nhold_fire = 1\n")), 4, 13,
-                              "hold_fire"));
+    EXPECT_TRUE(
+        has_one_error(load_text(level_text("[enemies]\nhold_fire = 1\n")), 4, 13, "hold_fire"));
 }
 
 }  // namespace

@@ -5,8 +5,8 @@
 
 #include <filesystem>
 
-#include "level/loader.h"
 #include "level/level_test_util.h"
+#include "level/loader.h"
 
 namespace bz::level {
 namespace {

@@ -1,8 +1,8 @@
 // Syntax errors: exact positions, and every one of them rather than only the first.
 #include <gtest/gtest.h>
 
-#include "level/loader.h"
 #include "level/level_test_util.h"
+#include "level/loader.h"
 
 namespace bz::level {
 namespace {
@@ -11,7 +11,9 @@ using test::has_one_error;
 using test::level_text;
 
 using test::load_text;
-LoadResult load(std::string_view text) { return load_text(text); }
+LoadResult load(std::string_view text) {
+    return load_text(text);
+}
 
 TEST(LoaderSyntax, MissingValue) {
     const auto r = load(level_text("[field]\nsize =\n"));
@@ -85,8 +87,9 @@ TEST(LoaderSyntax, UnclosedArrayDoesNotCascade) {
 }
 
 TEST(LoaderSyntax, MissingBracketBeforeACommentOrBlankLines) {
-    const auto r = load(level_text("[enemies]\ntypes = [\"slow_tank\", \"missile\"   # two\n\n"
-                                   "aggression = 0.5\n"));
+    const auto r =
+        load(level_text("[enemies]\ntypes = [\"slow_tank\", \"missile\"   # two\n\n"
+                        "aggression = 0.5\n"));
     ASSERT_EQ(r.errors.size(), 1u) << format(r.errors[0]);
     EXPECT_EQ(r.errors[0].pos.line, 4);
     EXPECT_EQ(r.errors[0].pos.column, 32);

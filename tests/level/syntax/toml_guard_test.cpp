@@ -2,9 +2,9 @@
 // everything around them still works: Unicode in strings and comments, a byte order mark.
 #include <gtest/gtest.h>
 
+#include "level/level_test_util.h"
 #include "level/loader.h"
 #include "level/syntax/toml_scan.h"
-#include "level/level_test_util.h"
 
 namespace bz::level {
 namespace {
@@ -13,7 +13,9 @@ using test::has_one_error;
 using test::level_text;
 
 using test::load_text;
-LoadResult load(std::string_view text) { return load_text(text); }
+LoadResult load(std::string_view text) {
+    return load_text(text);
+}
 
 TEST(TomlGuard, NonAsciiOutsideStringsIsASyntaxError) {
     // U+00DD after a number sent toml++ into __builtin_unreachable() (found by the fuzzer).

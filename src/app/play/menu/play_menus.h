@@ -48,8 +48,8 @@ struct Env {
     std::vector<LevelChoice> levels;
     std::filesystem::path current_level;  // empty: the built-in level
     const game::HighScoreTable* high_scores = nullptr;
-    std::string high_scores_level;           // whose table that is (kept per level)
-    std::string save_status;                 // shown on the options page ("SAVED", why not)
+    std::string high_scores_level;  // whose table that is (kept per level)
+    std::string save_status;        // shown on the options page ("SAVED", why not)
 };
 
 class PlayMenus {
