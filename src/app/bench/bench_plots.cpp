@@ -54,18 +54,21 @@ struct Box {
     }
 };
 
-// Puts each label next to its point where it covers no other label or point: tries places
-// around the point, then further out, and keeps the first free one.
+// Puts each label next to its point where it covers no other label or point and stays between
+// the canvas's sides and below `top` (the chart's title): tries places around the point, then
+// further out, and keeps the first free one. Points crowd at F1 = 1, right under the title.
 std::vector<glm::vec2> place_labels(const Canvas& canvas, const std::vector<glm::vec2>& points,
-                                    const std::vector<std::string>& labels, float height) {
+                                    const std::vector<std::string>& labels, float height,
+                                    float top) {
     std::vector<Box> taken;
     for (const glm::vec2& p : points) taken.push_back({p - 6.0f, p + 6.0f});
     std::vector<glm::vec2> out;
     for (std::size_t i = 0; i < points.size(); ++i) {
         const float w = canvas.text_width(labels[i], height);
-        glm::vec2 best = points[i] + glm::vec2(9.0f, 6.0f);
+        // With no free place (a crowd of points), below the point: above it is the title.
+        glm::vec2 best = points[i] + glm::vec2(9.0f, -height - 8.0f);
         bool found = false;
-        for (float ring = 1.0f; ring <= 6.0f && !found; ring += 1.0f) {
+        for (float ring = 1.0f; ring <= 20.0f && !found; ring += 1.0f) {
             const float dy = (height + 4.0f) * ring;
             const glm::vec2 offsets[] = {
                 {9.0f, dy - height - 2.0f}, {9.0f, -dy + 2.0f},     {-9.0f - w, dy - height - 2.0f},
@@ -74,6 +77,7 @@ std::vector<glm::vec2> place_labels(const Canvas& canvas, const std::vector<glm:
                 const glm::vec2 at = points[i] + o;
                 const Box b{at - glm::vec2(2.0f), at + glm::vec2(w + 2.0f, height + 2.0f)};
                 if (b.lo.x < 0.0f || b.hi.x > static_cast<float>(canvas.width())) continue;
+                if (b.lo.y < 0.0f || b.hi.y > top) continue;
                 if (std::any_of(taken.begin(), taken.end(),
                                 [&](const Box& t) { return t.overlaps(b); }))
                     continue;
@@ -115,7 +119,8 @@ void plot_tradeoff(const std::vector<TradeoffPoint>& points, const std::string& 
         labels.push_back(p.label);
     }
     constexpr float kLabel = 11.0f;
-    const std::vector<glm::vec2> where = place_labels(canvas, at, labels, kLabel);
+    const std::vector<glm::vec2> where =
+        place_labels(canvas, at, labels, kLabel, chart.title_bottom());
     for (std::size_t i = 0; i < points.size(); ++i) {
         canvas.text(labels[i], where[i], kLabel, series_color(i));
     }
@@ -144,7 +149,8 @@ void plot_scaling(const std::vector<ScalingPoint>& points, const LineFit& fit,
         canvas.disc(at.back(), 5.0f, series_color(0));
         labels.push_back(p.label);
     }
-    const std::vector<glm::vec2> where = place_labels(canvas, at, labels, 11.0f);
+    const std::vector<glm::vec2> where =
+        place_labels(canvas, at, labels, 11.0f, chart.title_bottom());
     for (std::size_t i = 0; i < points.size(); ++i) canvas.text(labels[i], where[i], 11.0f, kInk);
     char buf[128];
     std::snprintf(buf, sizeof buf, "fit: %.2f ms per 100k triangles + %.1f ms (r2 %.3f)",

@@ -74,8 +74,17 @@ void Chart::draw_frame() {
     canvas_.text(x_.label, {(lo_.x + hi_.x) * 0.5f, 18.0f}, 13.0f, kInk, scene::TextAlign::center);
     canvas_.text(y_.label, {28.0f, (lo_.y + hi_.y) * 0.5f}, 13.0f, kInk, scene::TextAlign::center,
                  true);
-    canvas_.text(title_, {(lo_.x + hi_.x) * 0.5f, static_cast<float>(canvas_.height()) - 30.0f},
-                 15.0f, kInk, scene::TextAlign::center);
+    canvas_.text(title_, {(lo_.x + hi_.x) * 0.5f, title_baseline()}, kTitleHeight, kInk,
+                 scene::TextAlign::center);
+}
+
+float Chart::title_baseline() const {
+    return static_cast<float>(canvas_.height()) - 30.0f;
+}
+
+// Descenders (g, y, comma) reach about a third of the letter height below the baseline.
+float Chart::title_bottom() const {
+    return title_baseline() - kTitleHeight * 0.35f - 2.0f;
 }
 
 void Chart::legend_entry(int row, const std::string& name, glm::vec3 color) {

@@ -31,8 +31,14 @@ class Chart {
     void legend_entry(int row, const std::string& name, glm::vec3 color);
     glm::vec2 plot_lo() const { return lo_; }
     glm::vec2 plot_hi() const { return hi_; }
+    // The lowest y the title's letters reach (y grows upward): labels must stay below it.
+    float title_bottom() const;
+
+    static constexpr float kTitleHeight = 15.0f;
 
   private:
+    float title_baseline() const;
+
     Canvas& canvas_;
     Axis x_, y_;
     std::string title_;
