@@ -8,9 +8,16 @@ bool starts_with_at(std::string_view text, std::size_t i, std::string_view what)
     return text.substr(i, what.size()) == what;
 }
 
-bool opens_string(char previous) {
+bool opens_string(const ScanState& s) {
+    const char previous = s.previous_code;
     return previous == ' ' || previous == '\t' || previous == '\n' || previous == '\r' ||
-           previous == '=' || previous == '[' || previous == '{' || previous == ',';
+           previous == '=' || previous == '[' || previous == '{' || previous == ',' ||
+           (previous == '.' && s.key_position);
+}
+
+// A new line: a key may start it unless a value (an array) is still open.
+void new_line(ScanState& s) {
+    s.key_position = s.brackets.empty();
 }
 
 // Steps over one character (or a three-quote delimiter); returns how many were consumed.
@@ -19,7 +26,7 @@ std::size_t step(std::string_view text, std::size_t i, ScanState& s) {
     const char c = text[i];
     switch (s.in) {
         case In::code:
-            if ((c == '"' || c == '\'') && !opens_string(s.previous_code)) {
+            if ((c == '"' || c == '\'') && !opens_string(s)) {
                 s.previous_code = c;
                 return 1;
             }
@@ -40,14 +47,26 @@ std::size_t step(std::string_view text, std::size_t i, ScanState& s) {
                 s.in = In::literal;
             } else if (c == '[' || c == '{') {
                 ++s.depth;
+                s.brackets.push_back(c);
+                // '[' keeps the position: a table header's keys, or an array's values.
+                if (c == '{') s.key_position = true;
             } else if ((c == ']' || c == '}') && s.depth > 0) {
                 --s.depth;
+                if (!s.brackets.empty()) s.brackets.pop_back();
+                s.key_position = false;
+            } else if (c == '=') {
+                s.key_position = false;
+            } else if (c == ',') {
+                s.key_position = !s.brackets.empty() && s.brackets.back() == '{';
+            } else if (c == '\n') {
+                new_line(s);
             }
             return 1;
         case In::comment:
             if (c == '\n') {
                 s.in = In::code;
                 s.previous_code = c;
+                new_line(s);
             }
             return 1;
         case In::basic:
@@ -59,6 +78,7 @@ std::size_t step(std::string_view text, std::size_t i, ScanState& s) {
             } else if (s.in == In::basic && (c == '"' || c == '\n')) {
                 s.in = In::code;
                 s.previous_code = c;
+                if (c == '\n') new_line(s);
             } else if (s.in == In::multiline_basic && starts_with_at(text, i, "\"\"\"")) {
                 s.in = In::code;
                 s.previous_code = c;
@@ -69,6 +89,7 @@ std::size_t step(std::string_view text, std::size_t i, ScanState& s) {
             if (c == '\'' || c == '\n') {
                 s.in = In::code;
                 s.previous_code = c;
+                if (c == '\n') new_line(s);
             }
             return 1;
         case In::multiline_literal:

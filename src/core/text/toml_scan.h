@@ -5,6 +5,7 @@
 // after it and report the next syntax error too.
 #include <cstddef>
 #include <optional>
+#include <string>
 #include <string_view>
 
 namespace bz {
@@ -18,6 +19,11 @@ struct ScanState {
     // whitespace, '=', '[', '{' or ','; elsewhere (as in 1:*'x') toml++ is still reading a
     // bare value and so is this scanner.
     char previous_code = '\n';
+    // Where a key may stand: at a line's start (until '='), after '{' or a ',' in an inline
+    // table, inside a table header. There a quote after a dot opens a quoted key segment
+    // (a." b" = 1); in a value toml++ reads 1."b" on as one bare value.
+    bool key_position = true;
+    std::string brackets;  // the open '[' and '{', innermost last
     // A value that spans lines (open brackets, multi-line string) is still being read.
     bool inside_value() const {
         return depth > 0 || in == In::multiline_basic || in == In::multiline_literal;

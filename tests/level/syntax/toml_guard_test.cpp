@@ -28,6 +28,26 @@ TEST(TomlGuard, NonAsciiOutsideStringsIsASyntaxError) {
                               "non-ASCII character outside"));
 }
 
+TEST(TomlGuard, AQuotedKeySegmentAfterADotIsAString) {
+    // v." =" is a dotted key whose second part is quoted: the value after it lies outside any
+    // string. The scanner took that quote for code and the next one for a string's start, so
+    // toml++ got the non-ASCII value and hit __builtin_unreachable() (found by the fuzzer).
+    EXPECT_TRUE(has_one_error(load(level_text("v.\" =\"=\xca\x9c\n")), 3, 8,
+                              "non-ASCII character outside"));
+    EXPECT_TRUE(has_one_error(load(level_text("x = {a.\" =\"=\xca\x9c}\n")), 3, 13,
+                              "non-ASCII character outside"));
+    EXPECT_TRUE(has_one_error(load(level_text("[a.\"=\"]\xca\x9c\n")), 3, 8,
+                              "non-ASCII character outside"));
+    // In a value a quote after a dot is still part of a bare value, as toml++ reads it.
+    EXPECT_TRUE(has_one_error(load(level_text("x = 1.\"\xca\x9c\"\n")), 3, 8,
+                              "non-ASCII character outside"));
+    EXPECT_TRUE(has_one_error(load(level_text("x = [1, 2.\"\xca\x9c\"]\n")), 3, 12,
+                              "non-ASCII character outside"));
+    // A quoted key segment with Unicode in it is fine.
+    const auto r = load(level_text("[backdrop]\n\"\xc3\xa9\".x = 1\n"));
+    EXPECT_TRUE(r.errors.empty() || r.errors.at(0).message.find("non-ASCII") == std::string::npos);
+}
+
 TEST(TomlGuard, NonAsciiAfterABackslashInAMultiLineString) {
     EXPECT_TRUE(has_one_error(load("version = 1\nname = \"\"\"a\\\xc3\x9d\"\"\"\n"), 2, 13,
                               "non-ASCII character after a backslash"));
