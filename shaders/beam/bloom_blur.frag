@@ -5,6 +5,7 @@
 // on llvmpipe a loop over uniform arrays costs three times as much as the unrolled constants.
 // The last direction writes the encoded 8-bit image the composite reads (u_encode).
 #include "bloom_encoding.glsl"
+#include "glow_persistence.glsl"
 
 in vec2 v_uv;
 uniform sampler2D u_source;
@@ -23,5 +24,5 @@ void main() {
         vec2 off = step_uv * kOffsets[i];
         sum += (texture(u_source, v_uv + off) + texture(u_source, v_uv - off)) * kWeights[i];
     }
-    o_color = u_encode ? vec4(encode_bloom(max(sum.rgb - u_floor, 0.0)), 1.0) : sum;
+    o_color = u_encode ? vec4(persist_glow(encode_bloom(max(sum.rgb - u_floor, 0.0))), 1.0) : sum;
 }

@@ -3,17 +3,6 @@
 // Bilinear fetches at texel corners average 2x2 texels each; `u_factor` (1, 2 or 4) picks how
 // many. With a threshold, only light above it glows (soft knee), so dim lines - a far floor
 // grating - stay lines on black instead of a haze.
-// With PHOSPHOR the first level glows from a phosphor of its own at the bloom resolution: the
-// brighter of this block of the beam image and last frame's block picture, decayed
-// (phosphor.glsl), which it stores for the next frame. A still picture glows exactly as
-// without the phosphor; a moving one's trail glows from blocks instead of pixels. (The
-// composite computes the exact picture per pixel; reading the full-resolution history here
-// too would double this pass's cost.)
-#ifdef PHOSPHOR
-#include "phosphor.glsl"
-uniform sampler2D u_history_box;  // last frame's block picture (rgb, a = age)
-layout(location = 2) out vec4 o_picture_box;
-#endif
 in vec2 v_uv;
 uniform sampler2D u_source;
 uniform int u_factor;
@@ -48,9 +37,5 @@ vec3 above_threshold(vec3 c) {
 void main() {
     vec3 c = box(v_uv);
     o_lit = vec4(max(c.r, max(c.g, c.b)) > 0.0 ? 1.0 : 0.0);
-#ifdef PHOSPHOR
-    o_picture_box = phosphor_picture(c, texelFetch(u_history_box, ivec2(gl_FragCoord.xy), 0));
-    c = o_picture_box.rgb;
-#endif
     o_color = vec4(u_threshold > 0.0 ? above_threshold(c) : c, 1.0);
 }

@@ -4,6 +4,7 @@
 // every level. A step is drawn with additive blending into level k (u_final = false), or, for
 // level 0, written as the finished, 8-bit encoded bloom (u_final = true).
 #include "bloom_encoding.glsl"
+#include "glow_persistence.glsl"
 
 in vec2 v_uv;
 uniform sampler2D u_coarser;  // S_{k+1}
@@ -21,5 +22,5 @@ void main() {
         return;
     }
     vec3 level = texelFetch(u_level, ivec2(gl_FragCoord.xy), 0).rgb;
-    o_color = vec4(encode_bloom(max((level + up) * u_weight - u_floor, 0.0)), 1.0);
+    o_color = vec4(persist_glow(encode_bloom(max((level + up) * u_weight - u_floor, 0.0))), 1.0);
 }

@@ -87,6 +87,7 @@ void bloom(const PassContext& ctx) {
 
 void composite(const PassContext& ctx) {
     const PhosphorStep* step = phosphor(ctx);
+    if (step && !ctx.picture->bloom) ctx.targets.glow_history_valid = false;
     pass_composite(ctx, *ctx.picture->texture, ctx.picture->bloom, ctx.target_fbo,
                    ctx.targets.width, ctx.targets.height, step);
     if (step) ctx.picture->texture = &finish_phosphor(ctx, *step);

@@ -18,15 +18,15 @@
 
 namespace bz::render {
 
-// One frame's step of phosphor persistence (pass_phosphor.cpp): the bloom's first downsample
-// glows from it and the composite computes and stores the new picture.
+// One frame's step of phosphor persistence (pass_phosphor.cpp): the composite computes and
+// stores the new picture, and the bloom's glow fades by glow_factor.
 struct PhosphorStep {
-    int block_to = 0;  // the block picture (Targets::block_picture) the bloom writes now
     bool power_law = false;
-    float dt = 0.0f;          // seconds, capped
-    float exp_factor = 1.0f;  // exponential: exp(-dt / tau)
-    float t0_inv = 0.0f;      // power law: 1 / t0
-    float exponent = 1.0f;    // power law: p
+    float dt = 0.0f;           // seconds, capped
+    float exp_factor = 1.0f;   // exponential: exp(-dt / tau)
+    float t0_inv = 0.0f;       // power law: 1 / t0
+    float exponent = 1.0f;     // power law: p
+    float glow_factor = 1.0f;  // the glow's decay this step (glow_persistence.glsl)
 };
 
 // What the beam passes hand on within one frame: the picture bloom and composite read (the
@@ -96,12 +96,12 @@ void pass_spine_visibility(const PassContext& ctx);
 void pass_edge_quads(const PassContext& ctx, bool mask_mode);
 void pass_hud(const PassContext& ctx);
 // Beam passes (the vector-monitor look, BeamSettings); each reads the image it is given, so a
-// style may skip any of them. Phosphor persistence is no pass of its own: on llvmpipe a
-// full-screen pass costs per pixel, so the composite computes the new picture where it
-// shades anyway and stores it, and the bloom's first downsample glows from it.
+// style may skip any of them. Phosphor persistence is no pass of its own: on llvmpipe every
+// pass costs per pixel it shades, so the composite computes the new picture where it shades
+// anyway and stores it, and the bloom's last step keeps last frame's glow, decayed alike.
 // phosphor_step sets up one frame's step; set_phosphor_uniforms hands it to a program
-// (shaders/beam/phosphor.glsl); finish_phosphor records the bloom's block picture and returns
-// the picture the composite updated in place.
+// (shaders/beam/phosphor.glsl); finish_phosphor returns the picture the composite updated in
+// place. The bloom's glow persists with the picture (shaders/beam/glow_persistence.glsl).
 PhosphorStep phosphor_step(const PassContext& ctx, double dt_seconds);
 void set_phosphor_uniforms(const gl::Program& program, const PhosphorStep& step);
 const gl::Texture2D& finish_phosphor(const PassContext& ctx, const PhosphorStep& step);

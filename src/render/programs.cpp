@@ -21,14 +21,16 @@ std::string glsl_array(const std::vector<float>& v) {
 
 }  // namespace
 
-gl::Program load_bloom_blur(const RenderSettings& settings) {
+gl::Program load_bloom_blur(const RenderSettings& settings, bool glow_persistence) {
     const BloomKernel k = bloom_kernel(settings.bloom_taps, settings.bloom_sigma_px);
     const auto dir = shaders_dir();
-    return gl::Program(
-        {{GL_VERTEX_SHADER, dir / "fullscreen.vert"},
-         {GL_FRAGMENT_SHADER, dir / "beam/bloom_blur.frag"}},
-        {"BLOOM_FETCHES " + std::to_string(k.weights.size()),
-         "BLOOM_OFFSETS " + glsl_array(k.offsets), "BLOOM_WEIGHTS " + glsl_array(k.weights)});
+    std::vector<std::string> defines = {"BLOOM_FETCHES " + std::to_string(k.weights.size()),
+                                        "BLOOM_OFFSETS " + glsl_array(k.offsets),
+                                        "BLOOM_WEIGHTS " + glsl_array(k.weights)};
+    if (glow_persistence) defines.push_back("GLOW_PHOSPHOR 1");
+    return gl::Program({{GL_VERTEX_SHADER, dir / "fullscreen.vert"},
+                        {GL_FRAGMENT_SHADER, dir / "beam/bloom_blur.frag"}},
+                       std::move(defines));
 }
 
 Programs load_programs(const RenderSettings& settings) {
@@ -55,7 +57,8 @@ Programs load_programs(const RenderSettings& settings) {
                          stage(GL_FRAGMENT_SHADER, "hud/hud.frag")});
     p.bloom_down = gl::Program({stage(GL_VERTEX_SHADER, "fullscreen.vert"),
                                 stage(GL_FRAGMENT_SHADER, "beam/bloom_down.frag")});
-    p.bloom_blur = load_bloom_blur(settings);
+    p.bloom_blur = load_bloom_blur(settings, false);
+    p.bloom_blur_glow = load_bloom_blur(settings, true);
     p.composite = gl::Program({stage(GL_VERTEX_SHADER, "fullscreen.vert"),
                                stage(GL_FRAGMENT_SHADER, "beam/composite.frag")});
     const std::string tile_size = "TILE_SIZE " + std::to_string(kScreenTileSize);
@@ -71,14 +74,13 @@ Programs load_programs(const RenderSettings& settings) {
             composite("fullscreen.vert", {tile_size, "PHOSPHOR 1", decay});
         p.composite_tiles_phosphor[power_law] =
             composite("beam/composite_tiles.vert", {tile_size, "PHOSPHOR 1", decay});
-        p.bloom_down_phosphor[power_law] =
-            gl::Program({stage(GL_VERTEX_SHADER, "fullscreen.vert"),
-                         stage(GL_FRAGMENT_SHADER, "beam/bloom_down.frag")},
-                        {"PHOSPHOR 1", decay});
     }
     p.tiles = gl::Program({stage(GL_COMPUTE_SHADER, "beam/tiles.comp")}, {tile_size});
     p.bloom_up = gl::Program({stage(GL_VERTEX_SHADER, "fullscreen.vert"),
                               stage(GL_FRAGMENT_SHADER, "beam/bloom_up.frag")});
+    p.bloom_up_glow = gl::Program({stage(GL_VERTEX_SHADER, "fullscreen.vert"),
+                                   stage(GL_FRAGMENT_SHADER, "beam/bloom_up.frag")},
+                                  {"GLOW_PHOSPHOR 1"});
     p.outline_prepass = gl::Program({stage(GL_VERTEX_SHADER, "styles/outline_prepass.vert"),
                                      stage(GL_FRAGMENT_SHADER, "styles/outline_prepass.frag")});
     p.image_outline = gl::Program({stage(GL_VERTEX_SHADER, "fullscreen.vert"),

@@ -19,16 +19,17 @@ struct Programs {
     gl::Program hud;
     gl::Program bloom_down;
     gl::Program bloom_blur;
+    gl::Program bloom_blur_glow;  // ... whose last direction keeps the glow's persistence
     gl::Program composite;
     gl::Program composite_tiles;  // the same fragment stage over the lit screen tiles only
-    // ... both advancing the phosphor (PHOSPHOR), and the first downsample of the phosphor's
-    // picture; [0] exponential, [1] power law (POWER_LAW): the decay is compiled in, because
-    // llvmpipe runs a uniform branch's both sides per pixel (about 0.5 ms at 1280x720).
+    // ... both advancing the phosphor (PHOSPHOR); [0] exponential, [1] power law (POWER_LAW):
+    // the decay is compiled in, because llvmpipe runs a uniform branch's both sides per pixel
+    // (about 0.5 ms at 1280x720).
     std::array<gl::Program, 2> composite_phosphor;
     std::array<gl::Program, 2> composite_tiles_phosphor;
-    std::array<gl::Program, 2> bloom_down_phosphor;
     gl::Program tiles;               // tiles.comp: which screen tiles are lit
     gl::Program bloom_up;            // one step up the bloom chain (BloomKind::mip_chain)
+    gl::Program bloom_up_glow;       // ... whose last step keeps the glow's persistence
     gl::Program outline_prepass;     // image-space baseline: depth + face normals
     gl::Program image_outline;       // ... Sobel into the lines target
     gl::Program image_outline_mask;  // ... Sobel into the mask
@@ -51,6 +52,7 @@ struct Programs {
 // Throws UserError naming file:line:col of every compile error. The bloom kernel is baked
 // into its program as constants, so it depends on the settings.
 Programs load_programs(const RenderSettings& settings);
-gl::Program load_bloom_blur(const RenderSettings& settings);
+// `glow_persistence`: the variant with GLOW_PHOSPHOR (shaders/beam/glow_persistence.glsl).
+gl::Program load_bloom_blur(const RenderSettings& settings, bool glow_persistence);
 
 }  // namespace bz::render

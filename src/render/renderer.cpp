@@ -154,7 +154,10 @@ void Renderer::set_settings(const RenderSettings& settings) {
         (settings.beam.phosphor == PhosphorDecay::off) != (old_beam.phosphor == PhosphorDecay::off);
     const bool new_kernel = settings.bloom_taps != impl_->settings.bloom_taps ||
                             settings.bloom_sigma_px != impl_->settings.bloom_sigma_px;
-    if (new_kernel) impl_->programs.bloom_blur = load_bloom_blur(settings);
+    if (new_kernel) {
+        impl_->programs.bloom_blur = load_bloom_blur(settings, false);
+        impl_->programs.bloom_blur_glow = load_bloom_blur(settings, true);
+    }
     impl_->settings = settings;
     impl_->frame_settings = settings;
     if (remake) {

@@ -60,12 +60,10 @@ Targets make_targets(int width, int height, const RenderSettings& s) {
         glClearTexImage(t.phosphor.id(), 0, GL_RGBA, GL_FLOAT, nullptr);
         t.picture_lit = gl::Texture2D(tiles_x, tiles_y, GL_R8UI, gl::Filter::nearest);
         glClearTexImage(t.picture_lit.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_BYTE, nullptr);
-        for (std::size_t i = 0; i < 2; ++i) {
-            t.block_picture[i] = gl::Texture2D(bw, bh, GL_RGBA16F, gl::Filter::nearest);
-            glClearTexImage(t.block_picture[i].id(), 0, GL_RGBA, GL_FLOAT, nullptr);
-            t.first_down_phosphor_fbo[i] =
-                gl::Framebuffer({&first_level, &t.lit, &t.block_picture[i]}, nullptr);
-        }
+        glClearTexImage(t.bloom_out.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+        t.bloom_last = gl::Texture2D(bw, bh, GL_RGBA8, gl::Filter::linear);
+        glClearTexImage(t.bloom_last.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+        t.bloom_last_fbo = gl::Framebuffer({&t.bloom_last}, nullptr);
     }
     if (s.method == LineMethod::image_outline) {
         t.normals = gl::Texture2D(width, height, GL_RGBA8, gl::Filter::nearest);

@@ -46,11 +46,11 @@ struct Targets {
     // Which screen tiles of the picture hold light (R8UI): read by tiles.comp (those must be
     // decayed this frame), then cleared and marked again by the composite as it stores.
     gl::Texture2D picture_lit;
-    // The bloom's own phosphor at its resolution (RGBA16F, a = age), a pair swapped each frame
-    // (written as a render target of the first downsample, with its framebuffer).
-    std::array<gl::Texture2D, 2> block_picture;
-    std::array<gl::Framebuffer, 2> first_down_phosphor_fbo;
-    int block_front = 0;  // which block picture holds the last one
+    // Last frame's finished bloom (like bloom_out, which it swaps with each frame): the glow
+    // persists with the phosphor (shaders/beam/glow_persistence.glsl).
+    gl::Texture2D bloom_last;
+    gl::Framebuffer bloom_last_fbo;
+    bool glow_history_valid = true;  // false after a phosphor frame drawn without bloom
     // Sparse composite (pass_tiles.cpp): where the beam image holds light, one R8 texel per
     // bloom texel (written by the bloom's first downsample), and the screen tiles to shade
     // (R8UI, one texel per kScreenTileSize square). Tiles only where the bloom resolution
@@ -58,7 +58,7 @@ struct Targets {
     gl::Texture2D lit;
     gl::Texture2D tiles;
     bool tiles_valid = false;  // they describe the current bloom (pass_tiles ran on it)
-    // The bloom's first level and `lit` (and, with the phosphor, block_picture[i]).
+    // The bloom's first level and `lit`.
     gl::Framebuffer first_down_fbo;
 };
 

@@ -211,3 +211,47 @@ TEST_F(SparseCompositeTest, InPlacePhosphorFadesToExactBlackAndLightsAgainAsTheF
         }
     }
 }
+
+// The glow persists with the phosphor (shaders/beam/glow_persistence.glsl): beside a line that
+// went out, where the picture itself is black, the glow fades over the next frames instead of
+// vanishing at once; without the phosphor it vanishes at once, and a frame drawn without bloom
+// leaves no stale glow for the next one to bring back.
+TEST_F(SparseCompositeTest, GlowBesideALineThatWentOutFadesWithThePhosphor) {
+    bz::scene::MeshLibrary meshes;
+    bz::scene::FrameList lit;
+    lit.hud.push_back({hud_at(60, 120), hud_at(260, 120), {0.2f, 1.0f, 0.2f}, 1.5f});
+    const auto glow_beside = [&](bz::render::Renderer& r) {
+        const std::vector<std::uint8_t> c = r.read_color();
+        return int{c[(static_cast<std::size_t>(120 + 4) * kW + 160) * 4 + 1]};  // 4 px below
+    };
+    const auto picture_beside = [&](bz::render::Renderer& r) {
+        return r.read_picture_hdr()[(static_cast<std::size_t>(120 + 4) * kW + 160) * 4 + 1];
+    };
+    for (const bool phosphor : {true, false}) {
+        auto s = bz::render::preset("balanced");
+        s.beam = bz::render::beam_look("mame");
+        s.beam.persistence_ms = 100.0f;
+        if (!phosphor) s.beam.phosphor = bz::render::PhosphorDecay::off;
+        bz::render::Renderer r(s, kW, kH, bz::gl::TimingMethod::off);
+        r.render(lit, meshes, bz::render::Renderer::kOffscreen);
+        const int first = glow_beside(r);
+        ASSERT_GT(first, 8) << "the line's glow reaches 4 px";
+        EXPECT_EQ(picture_beside(r), 0.0f) << "4 px off, the picture itself is black";
+        r.render(empty_frame(1.0 / 60.0), meshes, bz::render::Renderer::kOffscreen);
+        const int next = glow_beside(r);
+        if (!phosphor) {
+            EXPECT_EQ(next, 0) << "without the phosphor the glow goes out with the line";
+            continue;
+        }
+        EXPECT_GT(next, 0) << "the glow went out at once";
+        EXPECT_LT(next, first) << "the glow did not fade";
+        // One frame without bloom: the glow history is stale afterwards.
+        auto dark = s;
+        dark.bloom_strength = 0.0f;
+        r.set_settings(dark);
+        r.render(empty_frame(2.0 / 60.0), meshes, bz::render::Renderer::kOffscreen);
+        r.set_settings(s);
+        r.render(empty_frame(3.0 / 60.0), meshes, bz::render::Renderer::kOffscreen);
+        EXPECT_EQ(glow_beside(r), 0) << "a stale glow came back after a frame without bloom";
+    }
+}

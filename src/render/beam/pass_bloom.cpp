@@ -1,32 +1,42 @@
+#include <cmath>
+#include <utility>
+
 #include "render/passes.h"
 
 namespace bz::render {
 
 namespace {
 
-// The first downsample, from the full-resolution picture into the first level, also marking
-// the lit blocks (Targets::lit); with the phosphor, it glows from its own block phosphor.
-void first_downsample(const PassContext& ctx, const gl::Texture2D& source,
-                      const PhosphorStep* phosphor, float threshold) {
+// The first downsample, from this frame's beam image into the first level, also marking the
+// lit blocks (Targets::lit).
+void first_downsample(const PassContext& ctx, const gl::Texture2D& source, float threshold) {
     const Targets& t = ctx.targets;
-    (phosphor ? t.first_down_phosphor_fbo[static_cast<std::size_t>(phosphor->block_to)]
-              : t.first_down_fbo)
-        .bind();
-    const gl::Program& down = phosphor
-                                  ? ctx.programs.bloom_down_phosphor[phosphor->power_law ? 1 : 0]
-                                  : ctx.programs.bloom_down;
+    t.first_down_fbo.bind();
+    const gl::Program& down = ctx.programs.bloom_down;
     down.use();
     down.set("u_source", 0);
     down.set("u_factor", static_cast<int>(ctx.settings.bloom_resolution));
     down.set("u_threshold", threshold);
     down.set("u_knee", ctx.settings.beam.bloom_knee);
     source.bind(0);
-    if (phosphor) {
-        down.set("u_history_box", 1);
-        set_phosphor_uniforms(down, *phosphor);
-        t.block_picture[static_cast<std::size_t>(1 - phosphor->block_to)].bind(1);
-    }
     glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+// The program of the bloom's last step, which writes the finished bloom: with the phosphor,
+// the variant that keeps last frame's glow, decayed (glow_persistence.glsl).
+const gl::Program& last_step(const PassContext& ctx, const gl::Program& plain,
+                             const gl::Program& glow, const PhosphorStep* phosphor) {
+    if (!phosphor) {
+        plain.use();
+        return plain;
+    }
+    glow.use();
+    glow.set("u_glow_last", 2);
+    // A history from before a frame without bloom is stale: start from black.
+    glow.set("u_glow_sqrt_factor",
+             ctx.targets.glow_history_valid ? std::sqrt(phosphor->glow_factor) : 0.0f);
+    ctx.targets.bloom_last.bind(2);
+    return glow;
 }
 
 // Downsample to the bloom resolution, then a separable linear-sampled Gaussian: horizontal
@@ -34,7 +44,7 @@ void first_downsample(const PassContext& ctx, const gl::Texture2D& source,
 void gaussian_bloom(const PassContext& ctx, const gl::Texture2D& source,
                     const PhosphorStep* phosphor) {
     Targets& t = ctx.targets;
-    first_downsample(ctx, source, phosphor, ctx.settings.beam.bloom_threshold);
+    first_downsample(ctx, source, ctx.settings.beam.bloom_threshold);
 
     const gl::Program& blur = ctx.programs.bloom_blur;  // kernel baked in (programs.cpp)
     blur.use();
@@ -47,9 +57,11 @@ void gaussian_bloom(const PassContext& ctx, const gl::Texture2D& source,
     glDrawArrays(GL_TRIANGLES, 0, 3);
 
     t.bloom_out_fbo.bind();
-    blur.set("u_encode", 1);
-    blur.set("u_floor", ctx.settings.beam.bloom_floor);
-    blur.set("u_direction", glm::vec2(0.0f, 1.0f));
+    const gl::Program& last = last_step(ctx, blur, ctx.programs.bloom_blur_glow, phosphor);
+    last.set("u_source", 0);
+    last.set("u_encode", 1);
+    last.set("u_floor", ctx.settings.beam.bloom_floor);
+    last.set("u_direction", glm::vec2(0.0f, 1.0f));
     t.bloom_b.bind(0);
     glDrawArrays(GL_TRIANGLES, 0, 3);
 }
@@ -63,7 +75,7 @@ void mip_chain_bloom(const PassContext& ctx, const gl::Texture2D& source,
     const auto& w = ctx.settings.beam.mip_weights;
     const std::size_t n = t.bloom_mips.size();
     // Only the first level filters by brightness; the rest downsample what it kept.
-    first_downsample(ctx, source, phosphor, ctx.settings.beam.bloom_threshold);
+    first_downsample(ctx, source, ctx.settings.beam.bloom_threshold);
     const gl::Program& down = ctx.programs.bloom_down;
     down.use();
     down.set("u_source", 0);
@@ -94,10 +106,13 @@ void mip_chain_bloom(const PassContext& ctx, const gl::Texture2D& source,
     }
     gl::apply(gl::PipelineState{});
     t.bloom_out_fbo.bind();
-    up.set("u_final", 1);
-    up.set("u_floor", ctx.settings.beam.bloom_floor);
-    up.set("u_ratio", n > 1 ? mip_weight(w, 1) / mip_weight(w, 0) : 0.0f);
-    up.set("u_weight", mip_weight(w, 0) / total);
+    const gl::Program& last = last_step(ctx, up, ctx.programs.bloom_up_glow, phosphor);
+    last.set("u_coarser", 0);
+    last.set("u_level", 1);
+    last.set("u_final", 1);
+    last.set("u_floor", ctx.settings.beam.bloom_floor);
+    last.set("u_ratio", n > 1 ? mip_weight(w, 1) / mip_weight(w, 0) : 0.0f);
+    last.set("u_weight", mip_weight(w, 0) / total);
     t.bloom_mips[n > 1 ? 1 : 0].bind(0);
     t.bloom_mips[0].bind(1);
     glDrawArrays(GL_TRIANGLES, 0, 3);
@@ -113,11 +128,19 @@ float mip_weight(const std::vector<float>& weights, std::size_t level) {
 void pass_bloom(const PassContext& ctx, const gl::Texture2D& source, const PhosphorStep* phosphor) {
     gl::apply(gl::PipelineState{});
     ctx.empty_vao.bind();
+    if (phosphor) {
+        // Last frame's finished bloom becomes the glow history; this frame's is written over
+        // the one before it.
+        Targets& t = ctx.targets;
+        std::swap(t.bloom_out, t.bloom_last);
+        std::swap(t.bloom_out_fbo, t.bloom_last_fbo);
+    }
     if (ctx.settings.beam.bloom == BloomKind::mip_chain && !ctx.targets.bloom_mips.empty()) {
         mip_chain_bloom(ctx, source, phosphor);
     } else {
         gaussian_bloom(ctx, source, phosphor);
     }
+    if (phosphor) ctx.targets.glow_history_valid = true;
 }
 
 }  // namespace bz::render

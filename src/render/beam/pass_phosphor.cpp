@@ -15,9 +15,8 @@ constexpr double kMaxDtSeconds = 0.25;
 
 // Phosphor persistence (shaders/beam/phosphor.glsl): the composite reads this frame's beam image
 // and updates the picture (Targets::phosphor) in place, which is then the frame's picture
-// (held frames show it, tests read it). The bloom's block picture is a swapped pair.
+// (held frames show it, tests read it). The glow fades alike (pass_bloom.cpp).
 PhosphorStep phosphor_step(const PassContext& ctx, double dt_seconds) {
-    const Targets& t = ctx.targets;
     const BeamSettings& b = ctx.settings.beam;
     // Time running backwards (a replay restarted) or a new target: start from black.
     const double dt = dt_seconds < 0.0 ? kMaxDtSeconds : std::min(dt_seconds, kMaxDtSeconds);
@@ -26,12 +25,14 @@ PhosphorStep phosphor_step(const PassContext& ctx, double dt_seconds) {
     // Power law: (1 + t/t0)^-p is half at t = persistence, so t0 = persistence / (2^(1/p) - 1).
     const double t0 = tau / (std::pow(2.0, 1.0 / p) - 1.0);
     PhosphorStep s;
-    s.block_to = 1 - t.block_front;
     s.power_law = b.phosphor == PhosphorDecay::power_law;
     s.dt = static_cast<float>(dt);
     s.exp_factor = static_cast<float>(std::exp(-dt / tau));
     s.t0_inv = static_cast<float>(1.0 / t0);
     s.exponent = static_cast<float>(p);
+    // The power law's step depends on each pixel's age, which the glow does not keep: it fades
+    // with the same half-life instead (half at `persistence`, as the power law is).
+    s.glow_factor = static_cast<float>(s.power_law ? std::exp2(-dt / tau) : std::exp(-dt / tau));
     return s;
 }
 
@@ -42,10 +43,8 @@ void set_phosphor_uniforms(const gl::Program& program, const PhosphorStep& step)
     program.set("u_exponent", step.exponent);
 }
 
-const gl::Texture2D& finish_phosphor(const PassContext& ctx, const PhosphorStep& step) {
-    Targets& t = ctx.targets;
-    t.block_front = step.block_to;
-    return t.phosphor;
+const gl::Texture2D& finish_phosphor(const PassContext& ctx, const PhosphorStep&) {
+    return ctx.targets.phosphor;
 }
 
 }  // namespace bz::render
