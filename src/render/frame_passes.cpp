@@ -24,8 +24,9 @@ void lines_counted(const PassContext& ctx) {
 // records than it held (the mask must miss nothing; frames grow it for the next one).
 void edges_complete(const PassContext& ctx) {
     pass_edges(ctx);
-    const std::size_t n = ctx.edges.appended();
-    const std::size_t samples = wants_spine_samples(ctx) ? ctx.edges.samples_used() : 0;
+    const EdgeStorage::FillCounts counts = ctx.edges.counts();
+    const std::size_t n = counts.records;
+    const std::size_t samples = wants_spine_samples(ctx) ? counts.samples : 0;
     if (n > ctx.edges.capacity() || samples > ctx.edges.sample_capacity()) {
         ctx.edges.reserve(n);
         ctx.edges.reserve_samples(samples);

@@ -62,12 +62,9 @@ EdgeDrawCommand EdgeStorage::read_now() const {
     return cmd;
 }
 
-std::size_t EdgeStorage::appended() const {
-    return read_now().vertex_count / kVerticesPerEdge;
-}
-
-std::size_t EdgeStorage::samples_used() const {
-    return read_now().samples_used;
+EdgeStorage::FillCounts EdgeStorage::counts() const {
+    const EdgeDrawCommand cmd = read_now();
+    return {cmd.vertex_count / kVerticesPerEdge, cmd.samples_used};
 }
 
 void EdgeStorage::keep_count() {

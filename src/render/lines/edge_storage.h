@@ -21,11 +21,14 @@ class EdgeStorage {
     void reserve_samples(std::size_t samples);
     // Sets the counters to zero before a fill.
     void reset();
-    // Records the last fill appended, including any past capacity(). Reads the counter back:
-    // waits for the fill.
-    std::size_t appended() const;
-    // Spine samples the last fill asked for, including any past sample_capacity(). Waits too.
-    std::size_t samples_used() const;
+    // What the last fill asked for: the records it appended, including any past capacity(),
+    // and the spine samples, including any past sample_capacity(). One read-back of the
+    // counters: waits for the fill.
+    struct FillCounts {
+        std::size_t records = 0;
+        std::size_t samples = 0;
+    };
+    FillCounts counts() const;
     // After a fill: the counters of that fill are copied aside, to be read a frame later
     // without waiting (previous).
     void keep_count();
@@ -53,7 +56,7 @@ class EdgeStorage {
     gl::Buffer records_;
     gl::Buffer command_;
     gl::Buffer kept_count_;
-    gl::Buffer readback_;  // appended() and samples_used() read the counters from here
+    gl::Buffer readback_;  // counts() reads the counters from here
     gl::Buffer samples_;   // one uint per spine sample: 1 visible, 0 hidden
     gl::Buffer
         spans_;  // per record: 2 uvec4, sampled stretch, first and last visible sample, count
