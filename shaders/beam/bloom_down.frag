@@ -3,9 +3,13 @@
 // Bilinear fetches at texel corners average 2x2 texels each; `u_factor` (1, 2 or 4) picks how
 // many. With a threshold, only light above it glows (soft knee), so dim lines - a far floor
 // grating - stay lines on black instead of a haze.
-in vec2 v_uv;
+// The first level is drawn over the whole target or, sparse, over the screen tiles the beam
+// lit (composite_tiles.vert over beam_tiles.glsl's marks; pass_bloom.cpp): a block reads only
+// its own texels, so every other block is exactly black, which a clear writes for free.
+// Positions come from gl_FragCoord, so both give the same texels.
 uniform sampler2D u_source;
 uniform int u_factor;
+uniform vec2 u_inv_target;  // 1 / this target's size in texels
 uniform float u_threshold;  // peak-channel brightness where glow starts (0: everything glows)
 uniform float u_knee;       // half-width of the soft knee around the threshold
 layout(location = 0) out vec4 o_color;
@@ -35,7 +39,7 @@ vec3 above_threshold(vec3 c) {
 }
 
 void main() {
-    vec3 c = box(v_uv);
+    vec3 c = box(gl_FragCoord.xy * u_inv_target);
     o_lit = vec4(max(c.r, max(c.g, c.b)) > 0.0 ? 1.0 : 0.0);
     o_color = vec4(u_threshold > 0.0 ? above_threshold(c) : c, 1.0);
 }

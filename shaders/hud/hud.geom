@@ -1,6 +1,7 @@
 #version 450 core
 // Extrudes one HUD segment into a quad, exactly as the scene lines are extruded.
 #include "../beam/beam_width.glsl"
+#include "../beam/beam_tiles.glsl"
 
 layout(lines) in;
 layout(triangle_strip, max_vertices = 4) out;
@@ -24,6 +25,7 @@ void main() {
     // HUD keys start high so a HUD line never flickers in step with a scene line.
     BeamShape beam = beam_shape(v_intensity[0], len, 0x80000000u + uint(gl_PrimitiveIDIn));
     float h = beam.half_width, r = beam_end_reach(h);  // lengthened ends: beam_ends.glsl
+    mark_beam_segment(s0, s1, h, r);
     vec2 corners[4] = vec2[4](s0 - dir * r - nrm * h, s0 - dir * r + nrm * h,
                               s1 + dir * r - nrm * h, s1 + dir * r + nrm * h);
     for (int k = 0; k < 4; ++k) {

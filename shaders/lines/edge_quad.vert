@@ -29,6 +29,7 @@ flat out vec4 g_stretch;
 flat out uvec4 g_samples;
 
 #include "edge_geometry.glsl"
+#include "../beam/beam_tiles.glsl"
 
 // Two triangles of the strip-ordered corners 0 1 2 3.
 const int kCorner[6] = int[6](0, 1, 2, 2, 1, 3);
@@ -81,6 +82,9 @@ void main() {
     }
     // Past a true end the quad reaches over the lengthened beam (beam_ends.glsl); past a
     // visible stretch's inner end the fragments are hidden anyway.
+    // One vertex of the quad marks its tiles: the visible stretch, lengthened at true ends.
+    if (uint(gl_VertexID) % EDGE_VERTICES == 0u)
+        mark_beam_segment(q0, q1, beam.half_width, beam_end_reach(beam.half_width));
     vec2 corner = quad_corner(q0, q1, dir, nrm, beam.half_width, beam_end_reach(beam.half_width),
                               kCorner[uint(gl_VertexID) % EDGE_VERTICES]);
 #ifndef MASK_MODE

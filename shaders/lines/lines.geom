@@ -48,6 +48,7 @@ flat out vec3 g_color;
 flat out vec3 g_beam;            // half-width (px), gain, softness (beam_width.glsl)
 
 #include "edge_geometry.glsl"
+#include "../beam/beam_tiles.glsl"
 
 // kind: 0 = crease (faces on both sides), 1 = silhouette, 2 = boundary-like (one face).
 // `face` is this triangle's plane, `other` the neighbour's (creases only); `opp` is this
@@ -73,6 +74,7 @@ void emit_edge(int i0, int i1, int kind, vec3 face, vec3 other, vec3 opp) {
     g_inv_depth = 1.0 / e.w;
     g_color = instance_color(instance).rgb;
     g_beam = vec3(beam.half_width, beam.gain, beam.softness);
+    mark_beam_segment(e.s0, e.s1, beam.half_width, beam_end_reach(beam.half_width));
     for (int k = 0; k < 4; ++k) {
         g_pixel = quad_corner(e.s0, e.s1, dir, nrm, beam.half_width, beam_end_reach(beam.half_width), k);
         gl_Position = vec4(g_pixel / u_viewport * 2.0 - 1.0, 0.0, 1.0);

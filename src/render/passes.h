@@ -82,6 +82,9 @@ void pass_lines(const PassContext& ctx, bool mask_mode);
 // `program` and sets the uniforms of the line fragment stage, the beam and the shared edge
 // geometry.
 void begin_line_target(const PassContext& ctx, const gl::Program& program, bool mask_mode);
+// Binds Targets::beam_tiles where the beam's fragment stages mark the tiles they light
+// (shaders/beam/beam_tiles.glsl, image unit 3).
+void bind_beam_tiles(const Targets& targets);
 void set_line_uniforms(const gl::Program& program, const PassContext& ctx, float half_width);
 // Fills the edge buffer from every batch's edge list (edges.comp): the strokes of the filled
 // styles and LineMethod::compute read it.

@@ -38,9 +38,13 @@ Programs load_programs(const RenderSettings& settings) {
     auto stage = [&](GLenum type, const char* file) { return gl::StageFile{type, dir / file}; };
     Programs p;
     p.prepass = gl::Program({stage(GL_VERTEX_SHADER, "lines/prepass.vert")});
-    p.lines = gl::Program({stage(GL_VERTEX_SHADER, "lines/lines.vert"),
-                           stage(GL_GEOMETRY_SHADER, "lines/lines.geom"),
-                           stage(GL_FRAGMENT_SHADER, "lines/lines.frag")});
+    // The beam's line stages mark the screen tiles they light (shaders/beam/beam_tiles.glsl).
+    const std::vector<std::string> beam_tiles = {"BEAM_TILES 1",
+                                                 "TILE_SIZE " + std::to_string(kScreenTileSize)};
+    p.lines = gl::Program(
+        {stage(GL_VERTEX_SHADER, "lines/lines.vert"), stage(GL_GEOMETRY_SHADER, "lines/lines.geom"),
+         stage(GL_FRAGMENT_SHADER, "lines/lines.frag")},
+        beam_tiles);
     p.mask = gl::Program(
         {stage(GL_VERTEX_SHADER, "lines/lines.vert"), stage(GL_GEOMETRY_SHADER, "lines/lines.geom"),
          stage(GL_FRAGMENT_SHADER, "lines/lines.frag")},
@@ -48,13 +52,15 @@ Programs load_programs(const RenderSettings& settings) {
     p.edges = gl::Program({stage(GL_COMPUTE_SHADER, "lines/edges.comp")});
     p.spine_visibility = gl::Program({stage(GL_COMPUTE_SHADER, "lines/spine_visibility.comp")});
     p.edge_quads = gl::Program({stage(GL_VERTEX_SHADER, "lines/edge_quad.vert"),
-                                stage(GL_FRAGMENT_SHADER, "lines/edge_quad.frag")});
+                                stage(GL_FRAGMENT_SHADER, "lines/edge_quad.frag")},
+                               beam_tiles);
     p.edge_quads_mask = gl::Program({stage(GL_VERTEX_SHADER, "lines/edge_quad.vert"),
                                      stage(GL_FRAGMENT_SHADER, "lines/edge_quad.frag")},
                                     {"MASK_MODE 1"});
-    p.hud = gl::Program({stage(GL_VERTEX_SHADER, "hud/hud.vert"),
-                         stage(GL_GEOMETRY_SHADER, "hud/hud.geom"),
-                         stage(GL_FRAGMENT_SHADER, "hud/hud.frag")});
+    p.hud = gl::Program(
+        {stage(GL_VERTEX_SHADER, "hud/hud.vert"), stage(GL_GEOMETRY_SHADER, "hud/hud.geom"),
+         stage(GL_FRAGMENT_SHADER, "hud/hud.frag")},
+        beam_tiles);
     p.bloom_down = gl::Program({stage(GL_VERTEX_SHADER, "fullscreen.vert"),
                                 stage(GL_FRAGMENT_SHADER, "beam/bloom_down.frag")});
     p.bloom_blur = load_bloom_blur(settings, false);
@@ -68,6 +74,9 @@ Programs load_programs(const RenderSettings& settings) {
             std::move(defines));
     };
     p.composite_tiles = composite("beam/composite_tiles.vert", {tile_size});
+    p.bloom_down_tiles = gl::Program({stage(GL_VERTEX_SHADER, "beam/composite_tiles.vert"),
+                                      stage(GL_FRAGMENT_SHADER, "beam/bloom_down.frag")},
+                                     {tile_size});
     for (std::size_t power_law = 0; power_law < 2; ++power_law) {
         const std::string decay = "POWER_LAW " + std::to_string(power_law);
         p.composite_phosphor[power_law] =

@@ -18,6 +18,7 @@ struct Programs {
     gl::Program edge_quads_mask;   // ... with MASK_MODE
     gl::Program hud;
     gl::Program bloom_down;
+    gl::Program bloom_down_tiles;  // the first downsample under the beam's screen tiles only
     gl::Program bloom_blur;
     gl::Program bloom_blur_glow;  // ... whose last direction keeps the glow's persistence
     gl::Program composite;

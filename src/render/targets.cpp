@@ -22,6 +22,7 @@ Targets make_targets(int width, int height, const RenderSettings& s) {
     t.lit = gl::Texture2D(bw, bh, GL_R8, gl::Filter::nearest);
     if (width % f == 0 && height % f == 0)
         t.tiles = gl::Texture2D(tiles_x, tiles_y, GL_R8UI, gl::Filter::nearest);
+    t.beam_tiles = gl::Texture2D(tiles_x, tiles_y, GL_R8UI, gl::Filter::nearest);
     t.mask = gl::Texture2D(width, height, GL_R8, gl::Filter::nearest);
     t.output = gl::Texture2D(width, height, GL_RGBA8, gl::Filter::nearest);
     t.depth_fbo = gl::Framebuffer({}, &t.depth);

@@ -57,6 +57,12 @@ struct Targets {
     // divides the size, so that the downsample's blocks cover every pixel exactly.
     gl::Texture2D lit;
     gl::Texture2D tiles;
+    // The screen tiles the beam lights (R8UI, like `tiles`): cleared by the line pass, marked by
+    // the line and HUD fragments (shaders/beam/beam_tiles.glsl), and valid until the bloom's
+    // first downsample has read them (a frame whose lines come from elsewhere, the image-space
+    // outline, leaves them invalid: the downsample then reads every pixel).
+    gl::Texture2D beam_tiles;
+    bool beam_tiles_valid = false;
     bool tiles_valid = false;  // they describe the current bloom (pass_tiles ran on it)
     // The bloom's first level and `lit`.
     gl::Framebuffer first_down_fbo;

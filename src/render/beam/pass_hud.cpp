@@ -16,6 +16,7 @@ void pass_hud(const PassContext& ctx) {
           glm::vec2(static_cast<float>(ctx.targets.width), static_cast<float>(ctx.targets.height)));
     set_beam_uniforms(p, ctx.settings.beam, ctx.settings.line_half_width_px, ctx.targets.height,
                       ctx.seed, false);
+    bind_beam_tiles(ctx.targets);
     ctx.hud_vao.bind();
     glDrawArrays(GL_LINES, 0, ctx.hud_vertex_count);
 }

@@ -55,6 +55,10 @@ void set_line_uniforms(const gl::Program& p, const PassContext& ctx, float half_
 // the beam.
 constexpr float kMaskHalfWidth = 0.75f;
 
+void bind_beam_tiles(const Targets& targets) {
+    glBindImageTexture(3, targets.beam_tiles.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R8UI);
+}
+
 void begin_line_target(const PassContext& ctx, const gl::Program& program, bool mask_mode) {
     (mask_mode ? ctx.targets.mask_fbo : ctx.targets.lines_fbo).bind();
     gl::PipelineState state;
@@ -64,6 +68,13 @@ void begin_line_target(const PassContext& ctx, const gl::Program& program, bool 
     gl::apply(state);
     glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
     glClear(GL_COLOR_BUFFER_BIT);
+    if (!mask_mode) {
+        // The beam's fragments mark the tiles they light, afresh each frame.
+        Targets& t = ctx.targets;
+        glClearTexImage(t.beam_tiles.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_BYTE, nullptr);
+        bind_beam_tiles(t);
+        t.beam_tiles_valid = true;
+    }
     if (!mask_mode && ctx.view_rows > 0 && ctx.view_rows < ctx.targets.height) {
         state.scissor_rows = ctx.view_rows;  // after the clear, which must cover every row
         state.scissor_width = ctx.targets.width;
