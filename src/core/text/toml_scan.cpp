@@ -46,13 +46,11 @@ std::size_t step(std::string_view text, std::size_t i, ScanState& s) {
                 }
                 s.in = In::literal;
             } else if (c == '[' || c == '{') {
-                ++s.depth;
                 s.brackets.push_back(c);
                 // '[' keeps the position: a table header's keys, or an array's values.
                 if (c == '{') s.key_position = true;
-            } else if ((c == ']' || c == '}') && s.depth > 0) {
-                --s.depth;
-                if (!s.brackets.empty()) s.brackets.pop_back();
+            } else if ((c == ']' || c == '}') && !s.brackets.empty()) {
+                s.brackets.pop_back();
                 s.key_position = false;
             } else if (c == '=') {
                 s.key_position = false;

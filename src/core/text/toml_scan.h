@@ -13,7 +13,6 @@ namespace bz {
 struct ScanState {
     enum class In { code, comment, basic, literal, multiline_basic, multiline_literal };
     In in = In::code;
-    int depth = 0;         // open [ and { (arrays, inline tables, table headers)
     bool escaped = false;  // the previous character was a backslash inside a basic string
     // The last character seen outside strings and comments. A quote opens a string only after
     // whitespace, '=', '[', '{' or ','; elsewhere (as in 1:*'x') toml++ is still reading a
@@ -23,10 +22,10 @@ struct ScanState {
     // table, inside a table header. There a quote after a dot opens a quoted key segment
     // (a." b" = 1); in a value toml++ reads 1."b" on as one bare value.
     bool key_position = true;
-    std::string brackets;  // the open '[' and '{', innermost last
+    std::string brackets;  // the open '[' and '{' (arrays, inline tables, headers), innermost last
     // A value that spans lines (open brackets, multi-line string) is still being read.
     bool inside_value() const {
-        return depth > 0 || in == In::multiline_basic || in == In::multiline_literal;
+        return !brackets.empty() || in == In::multiline_basic || in == In::multiline_literal;
     }
 };
 

@@ -88,7 +88,7 @@ TEST(TomlScan, StatesAcrossStringsCommentsAndBrackets) {
     ScanState s;
     const std::string_view text = "a = [1, \"]\", '[' # ]\n";
     scan(text, 0, text.size(), s);
-    EXPECT_EQ(s.depth, 1);
+    EXPECT_EQ(s.brackets, "[");
     EXPECT_TRUE(s.inside_value());
     ScanState m;
     const std::string_view ml = "x = \"\"\"open\n";
