@@ -91,7 +91,7 @@ void composite(const PassContext& ctx) {
     if (step && !ctx.picture->bloom) ctx.targets.glow_history_valid = false;
     pass_composite(ctx, *ctx.picture->texture, ctx.picture->bloom, ctx.target_fbo,
                    ctx.targets.width, ctx.targets.height, step);
-    if (step) ctx.picture->texture = &finish_phosphor(ctx, *step);
+    if (step) ctx.picture->texture = &ctx.targets.phosphor;  // updated in place
 }
 
 void outline_baseline(const PassContext& ctx) {

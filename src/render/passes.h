@@ -103,17 +103,21 @@ void pass_hud(const PassContext& ctx);
 // pass costs per pixel it shades, so the composite computes the new picture where it shades
 // anyway and stores it, and the bloom's last step keeps last frame's glow, decayed alike.
 // phosphor_step sets up one frame's step; set_phosphor_uniforms hands it to a program
-// (shaders/beam/phosphor.glsl); finish_phosphor returns the picture the composite updated in
-// place. The bloom's glow persists with the picture (shaders/beam/glow_persistence.glsl).
+// (shaders/beam/phosphor.glsl). The composite updates the picture (Targets::phosphor) in place;
+// the bloom's glow persists with it (shaders/beam/glow_persistence.glsl).
 PhosphorStep phosphor_step(const PassContext& ctx, double dt_seconds);
 void set_phosphor_uniforms(const gl::Program& program, const PhosphorStep& step);
-const gl::Texture2D& finish_phosphor(const PassContext& ctx, const PhosphorStep& step);
 void pass_bloom(const PassContext& ctx, const gl::Texture2D& source,
                 const PhosphorStep* phosphor = nullptr);
 // The weight of one level of the bloom chain (never zero: the chain divides by it).
 float mip_weight(const std::vector<float>& weights, std::size_t level);
 // The screen tiles the sparse composite shades (after bloom; needs Targets::tiles).
 void pass_tiles(const PassContext& ctx);
+// Draws shaders/beam/composite_tiles.vert's quads over the tiles that `tiles` marks (R8UI, one
+// texel per kScreenTileSize square of a `screen`-pixel screen), read on texture unit `unit`,
+// with `program` in use: the sparse composite and the sparse first downsample.
+void draw_tile_quads(const gl::Program& program, const gl::Texture2D& tiles, glm::ivec2 screen,
+                     int unit);
 // `bloom`: false draws the picture without glow (bloom_out is not read). With bloom and the
 // tiles of pass_tiles it shades only the lit tiles (RenderSettings::sparse_composite).
 // With `phosphor`, `picture` is this frame's beam image and the composite also updates the

@@ -30,10 +30,7 @@ void first_downsample(const PassContext& ctx, const gl::Texture2D& source, float
     }
     glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
     glClear(GL_COLOR_BUFFER_BIT);
-    down.set("u_tiles", 1);
-    down.set("u_screen", glm::ivec2(t.width, t.height));
-    t.beam_tiles.bind(1);
-    glDrawArraysInstanced(GL_TRIANGLES, 0, 6, t.beam_tiles.width() * t.beam_tiles.height());
+    draw_tile_quads(down, t.beam_tiles, glm::ivec2(t.width, t.height), 1);
 }
 
 // The program of the bloom's last step, which writes the finished bloom: with the phosphor,

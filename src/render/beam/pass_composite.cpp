@@ -45,11 +45,7 @@ void pass_composite(const PassContext& ctx, const gl::Texture2D& picture, bool b
     } else {
         glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
         glClear(GL_COLOR_BUFFER_BIT);
-        const gl::Texture2D& tiles = t.tiles;
-        p.set("u_tiles", 2);
-        p.set("u_screen", glm::ivec2(width, height));
-        tiles.bind(2);
-        glDrawArraysInstanced(GL_TRIANGLES, 0, 6, tiles.width() * tiles.height());
+        draw_tile_quads(p, t.tiles, glm::ivec2(width, height), 2);
     }
     // The picture is loaded as an image next frame, shown as a texture by held frames and read
     // back by tests; its lit tiles are read as a texture by next frame's tiles.comp.

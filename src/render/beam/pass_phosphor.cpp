@@ -43,8 +43,4 @@ void set_phosphor_uniforms(const gl::Program& program, const PhosphorStep& step)
     program.set("u_exponent", step.exponent);
 }
 
-const gl::Texture2D& finish_phosphor(const PassContext& ctx, const PhosphorStep&) {
-    return ctx.targets.phosphor;
-}
-
 }  // namespace bz::render

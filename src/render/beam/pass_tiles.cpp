@@ -7,6 +7,14 @@ namespace bz::render {
 // With the phosphor, also those where the picture held light last frame (Targets::picture_lit):
 // the composite must decay them, and every other tile of the picture is exactly black.
 // One invocation per tile; the composite reads the result in its vertex stage.
+void draw_tile_quads(const gl::Program& program, const gl::Texture2D& tiles, glm::ivec2 screen,
+                     int unit) {
+    program.set("u_tiles", unit);
+    program.set("u_screen", screen);
+    tiles.bind(unit);
+    glDrawArraysInstanced(GL_TRIANGLES, 0, 6, tiles.width() * tiles.height());
+}
+
 void pass_tiles(const PassContext& ctx) {
     Targets& t = ctx.targets;
     if (!t.tiles) return;
