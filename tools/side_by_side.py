@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Joins PNG pictures of the same height left to right into one RGB PNG, for the README's
+"""Joins PNG pictures of the same height left to right into one RGB PNG, for the docs'
 comparisons (tools/beam_frames). Only the standard library: 8-bit RGB or RGBA, not interlaced,
 which is what beamzone writes.
 

@@ -42,7 +42,7 @@ const std::vector<LineMethod>& feature_line_methods();
 // scales with llvmpipe's threads; the geometry shader runs on one thread at a cost per
 // triangle. On a hardware GPU auto always draws with compute: on an NVIDIA H100 it was the
 // faster method at every size measured, the 468-triangle classic level included. Measured:
-// see the README's "line methods".
+// see docs/pipeline.md, "Line methods".
 inline constexpr std::size_t kAutoComputeFromTriangles = 4000;
 // The method that draws a frame of `triangles_submitted` triangles: `method` itself unless it
 // is LineMethod::automatic. Depends on the frame's content and the renderer only, never on
@@ -52,7 +52,7 @@ LineMethod resolve_line_method(LineMethod method, std::size_t triangles_submitte
 
 // The method presets use: auto, which on llvmpipe is as fast as the geometry shader on small
 // game frames and as the compute method on large scenes, and on a hardware GPU is the compute
-// method; see the README's "line methods" for the measurements behind it.
+// method; see docs/measurements/line-methods.md for the measurements behind it.
 inline constexpr LineMethod kDefaultLineMethod = LineMethod::automatic;
 
 // The vector beam: how a line's intensity becomes width and brightness, how lines combine,

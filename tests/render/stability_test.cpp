@@ -1,8 +1,8 @@
 // Numerical stability of the line pipeline at extreme values: every scene is rendered, its
 // mask scored against the exact CPU reference (F1 at 1 px), and the HDR line target checked
 // for NaN and Inf. Each case runs with both depth formats; the default (reversed-Z float) must
-// pass them all. What the 24-bit format does is printed ("[stability] ...") for the README
-// table and asserted only where it is known to hold.
+// pass them all. What the 24-bit format does is printed ("[stability] ...") for the table in
+// docs/measurements/stability.md and asserted only where it is known to hold.
 #include <gtest/gtest.h>
 
 #include <cmath>

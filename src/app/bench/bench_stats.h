@@ -1,5 +1,5 @@
 #pragma once
-// Frame-time statistics, defined once here and in the README:
+// Frame-time statistics, defined once here and in docs/benchmark.md:
 //  - mean: arithmetic mean of the frame times;
 //  - pN: the nearest-rank percentile: the smallest frame time t such that at least N% of the
 //    frames took <= t (p50 is the median);
