@@ -1,9 +1,9 @@
 #version 450 core
 // The fill of a filled style, display-referred colour into the canvas. One file, three looks
 // (compile-time FILL_TOON, FILL_POP_ART or FILL_PAPER):
-//   toon:    2-4 cel bands of the object's colour from the light direction (seed 002)
+//   toon:    2-4 cel bands of the object's colour from the light direction (Castro & Macedo)
 //   pop-art: flat diffuse colour, then Ben-Day dots on a screen-aligned grid whose radius
-//            grows as the shade darkens (seed 003)
+//            grows as the shade darkens (Olejnik & Litchmore)
 //   paper:   the paper tone itself, faintly shaded: the object hides what is behind it
 in vec3 v_view_pos;
 in vec3 v_view_normal;

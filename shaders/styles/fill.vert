@@ -1,7 +1,7 @@
 #version 450 core
 // Filled styles: the object's triangles with view-space position and normal, its colour and
 // whether it is shaded smooth (vertex normals) or flat (face normals, in the fragment shader).
-// With SHRINK the mesh is pulled in along its vertex normals: the halo's depth mask (seed 004).
+// With SHRINK the mesh is pulled in along its vertex normals: the halo's depth mask (Loviscach).
 layout(location = 0) in vec3 a_position;
 layout(location = 1) in mat4 a_model_view;  // locations 1-4
 layout(location = 5) in vec4 a_color;

@@ -1,5 +1,5 @@
 #version 450 core
-// Haloed outline strokes (seed 004, after McGuire & Hughes 2004). The quads are depth-tested
+// Haloed outline strokes (Loviscach, after McGuire & Hughes 2004). The quads are depth-tested
 // in hardware against the shrunk-mesh depth mask, so a stroke reaches both inside and outside
 // its silhouette and is still hidden by whatever is in front of it.
 //   default:   the ink: u_strokes strokes in one pass, each its own row of the 1D profile

@@ -1,7 +1,7 @@
 #version 450 core
 // Lays the soft halos over the canvas: where a halo was cast by a stroke nearer than the
 // surface at this pixel, that surface fades towards the paper, so lines behind a silhouette
-// break off before they reach it (seed 004). MAX blending in the halo buffer merged the halos
+// break off before they reach it (Loviscach). MAX blending in the halo buffer merged the halos
 // of neighbouring edges, so zig-zag silhouettes leave no seams.
 #include "../lines/spine_test.glsl"
 

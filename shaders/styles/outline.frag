@@ -1,8 +1,8 @@
 #version 450 core
-// Toon and pop-art outlines (seed 002): solid ink over the fill. Centred quads keep a fragment
-// when the spine test passes at its nearest spine point; one-sided silhouette quads lie
-// outside the object and are tested against the depth at the fragment itself (the seed's
-// "extruded outward, depth-tested"). Edges are antialiased over one pixel.
+// Toon and pop-art outlines (Castro & Macedo): solid ink over the fill. Centred quads keep a
+// fragment when the spine test passes at its nearest spine point; one-sided silhouette quads
+// lie outside the object and are tested against the depth at the fragment itself (Castro &
+// Macedo's "extruded outward, depth-tested"). Edges are antialiased over one pixel.
 #include "../beam/beam.glsl"
 #include "../lines/spine_test.glsl"
 #include "stroke_varyings.glsl"

@@ -1,5 +1,5 @@
 #version 450 core
-// Pencil strokes (seed 003, after Jezek et al. 2018). Each visible feature edge becomes
+// Pencil strokes (Olejnik & Litchmore, after Jezek et al. 2018). Each visible feature edge becomes
 // u_strokes overlapping strokes; each stroke is split at a random point into two pieces whose
 // end points are jittered. Every random number comes from the noise texture at texels picked
 // by the edge's stable seed, never by the frame: a still camera draws the same picture, and a

@@ -2,11 +2,11 @@
 // The stroke styles' quads: one per record of the edge buffer (shaders/lines/edge_record.glsl),
 // drawn with the count the edge-extraction compute shader appended (glDrawArraysIndirect), no
 // geometry shader. The quad is sized for what the fragment stage draws in it:
-//   STROKE_OUTLINE  toon / pop-art ink (seed 002): centred on the edge, or one-sided (pushed
+//   STROKE_OUTLINE  toon / pop-art ink (Castro & Macedo): centred on the edge, or one-sided (pushed
 //                   outward from a silhouette); extended by `overdraw` x edge length at both ends
-//   STROKE_SKETCH   several jittered pencil strokes (seed 003): widened by the jitter
+//   STROKE_SKETCH   several jittered pencil strokes (Olejnik & Litchmore): widened by the jitter
 //   STROKE_HALO     silhouette strokes reaching inside and outside, plus the soft halo, bent by
-//                   the cubic smoothing (seed 004); HALO_GLOW draws the same quad into the halo
+//                   the cubic smoothing (Loviscach); HALO_GLOW draws the same quad into the halo
 //                   buffer
 // Besides the spine test's varyings (as edge_quad.vert hands lines.frag) each quad carries the
 // edge's stable id (per-edge noise seeds), its outward direction and the smoothing slopes.

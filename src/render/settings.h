@@ -83,11 +83,11 @@ struct BeamSettings {
     float intensity_weight = 0.75f;
     float nominal = 0.75f;  // the MAME intensity (0..1) of a line of intensity 1
     float flicker = 0.0f;   // intensity -= intensity * random * flicker, per line
-    // Dwell (MAME issue #399): the beam spends a fixed time on every vector, so short vectors
+    // Dwell (after a report on MAME's tracker; docs/sources.md): the beam spends a fixed time on every vector, so short vectors
     // and dots get more energy per pixel: gain = (length + dwell) / length, at most dwell_max.
     float dwell_px = 0.0f;  // at 1080 lines
     float dwell_max = 1.0f;
-    // Overdrive (MAME issue #14180): above MAME intensity 1 the spot widens and softens
+    // Overdrive (after a report on MAME's tracker; docs/sources.md): above MAME intensity 1 the spot widens and softens
     // instead of clipping: width x (1 + defocus * excess), peak / that factor.
     float defocus = 0.0f;
     // MAME lengthens every vector by 3/8 of the beam's full width at each end
@@ -113,7 +113,7 @@ struct RenderSettings {
     std::string preset = "balanced";
     DepthFormat depth = DepthFormat::reversed_f32;
     // The spine test reads the one prepass texel under the spine point (a 2x2 bilinear filter
-    // scored no better, issue 10) and compares it with the exact plane of the edge's face;
+    // scored no better on real models) and compares it with the exact plane of the edge's face;
     // these say how far the rasterised depth may sit from it (shaders/lines/spine_test.glsl):
     float plane_tolerance_rel = 1e-5f;   // relative to the depth: float rounding
     float plane_tolerance_px = 0.0625f;  // pixels of the face's own depth slope: rasterisation
@@ -141,11 +141,11 @@ struct RenderSettings {
     // Draw every frame in this style instead of the frame list's own (bench --style, the
     // sweep's per-style rows); none: the frame's.
     std::optional<scene::Style> style;
-    // The halo style's cubic silhouette smoothing (seed 004); off to compare with the plain
+    // The halo style's cubic silhouette smoothing (Loviscach); off to compare with the plain
     // polygonal outline (render --no-smoothing, the smoothing test).
     bool cubic_smoothing = true;
     // Toon and pop-art outlines as one-sided quads (extruded outward from silhouettes and
-    // depth-tested) instead of the styles' centred, spine-tested ones (seed 002's two variants).
+    // depth-tested) instead of the styles' centred, spine-tested ones (Castro & Macedo's two variants).
     bool one_sided_outlines = false;
     BeamSettings beam;
     // Composite only the screen tiles that bloom found lit (pass_tiles.cpp); false: every

@@ -10,12 +10,12 @@
 namespace bz::scene {
 
 enum class Style : std::uint8_t {
-    vector,       // glowing vector-monitor lines, hidden lines removed (seeds 000, 001)
+    vector,       // glowing vector-monitor lines, hidden lines removed (Bernardoni 2018)
     vector_xray,  // the same without hidden-line removal: the 1980 machine hid nothing
-    toon,         // cel-shaded fill with outlines (seed 002)
-    sketch,       // pencil strokes on paper (seed 003, after Jezek et al. 2018)
-    pop_art,      // flat colour, Ben-Day dots and a fine outline (seed 003)
-    halo,         // haloed silhouette strokes, smoothed from coarse meshes (seed 004)
+    toon,         // cel-shaded fill with outlines (Castro & Macedo)
+    sketch,       // pencil strokes on paper (Olejnik & Litchmore, after Jezek et al. 2018)
+    pop_art,      // flat colour, Ben-Day dots and a fine outline (Olejnik & Litchmore)
+    halo,         // haloed silhouette strokes, smoothed from coarse meshes (Loviscach)
     // The names the first styles had; kept so old levels, settings and scripts still work.
     occluded = vector,
     arcade = vector_xray,

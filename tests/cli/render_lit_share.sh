@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # render --lit-share: the share of pixels above 1/255 (the haze figure that tools/haze reports
-# for the seed's hallway). A black frame is 0%; a glowing cube lights some but not all pixels,
+# for Bernardoni 2018's hallway). A black frame is 0%; a glowing cube lights some but not all pixels,
 # and the mame look's thresholded bloom with its black level lights fewer than classic's.
 set -euo pipefail
 bin=$1

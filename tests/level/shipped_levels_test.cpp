@@ -1,5 +1,5 @@
-// The levels in levels/ load cleanly with the real data/ folder, and each is what the issue
-// asks for.
+// The levels in levels/ load cleanly with the real data/ folder, and each is what
+// levels/README.md says it is.
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -1,4 +1,4 @@
-// The halo style's cubic smoothing (seed 004): a coarse sphere (6 bands, 8 segments) outlines
+// The halo style's cubic smoothing (Loviscach): a coarse sphere (6 bands, 8 segments) outlines
 // as a polygon without it and as a near circle with it. Measured on the ink: the outer edge of
 // the outline stroke, as a radius per angle around the sphere's centre, deviates less from a
 // circle (its spread across angles shrinks).

@@ -1,4 +1,4 @@
-// The three flaws of the seed renderer's frame, each checked so they stay fixed:
+// The three flaws of the frame of the renderer this one grew from (Bernardoni 2018), each checked so they stay fixed:
 // spurious diagonals across flat panels, dense line areas washed out to white, and stubs.
 #include <gtest/gtest.h>
 
@@ -15,7 +15,7 @@ namespace {
 
 // A flat square panel in z = 0 (two triangles sharing the diagonal (0,0)-(1,1)), plus an exact
 // duplicate of one triangle and a back-to-back twin of the other: the faces that made the
-// seed's "last write wins" adjacency draw a diagonal across a flat panel.
+// original's "last write wins" adjacency draw a diagonal across a flat panel.
 bz::geo::TriMesh dirty_panel() {
     bz::geo::TriMesh m;
     m.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 0}, {1, 1, 0}};

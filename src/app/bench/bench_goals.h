@@ -1,5 +1,5 @@
 #pragma once
-// A benchmark's goals (the targets, judged on measured numbers) and the two ways every
+// A benchmark's goals (targets, judged on measured numbers) and the two ways every
 // bench report shows them: a JSON list and one "goal NAME MET|MISSED numbers" line each.
 #include <cstdio>
 #include <string>

@@ -42,7 +42,7 @@ struct SweepRow {
     SweepScore score_4px;
 };
 
-// The goals, judged on the measured rows (missing rows make a goal unmet).
+// The sweep's goals, judged on the measured rows (missing rows make a goal unmet).
 std::vector<Goal> judge_goals(const std::vector<SweepRow>& rows);
 
 struct SweepOptions {

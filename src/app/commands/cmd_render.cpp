@@ -41,7 +41,7 @@ constexpr const char* kUsage =
     "chosen size for timing; the camera frames them all).\n"
     "--beam picks the vector beam's look (default classic; `play` defaults to mame).\n"
     "--lit-share prints the share of the picture's pixels whose brightest channel is above\n"
-    "1/255 (the haze figure; tools/haze measures the seed's hallway with it).\n";
+    "1/255 (the haze figure; tools/haze measures Bernardoni 2018's hallway with it).\n";
 
 struct RenderOptions {
     std::string input;

@@ -156,7 +156,7 @@ scene::FrameList World::interpolated_frame(double alpha, double fov_y_deg,
         const float fade =
             std::min(1.0f, static_cast<float>(d.ticks_left) / tuning::kTicksPerSecond);
         // Young debris flashes overdriven (up to 3x): with the mame beam it defocuses into a
-        // wide, soft burst, as an overdriven tube beam does (MAME issue #14180).
+        // wide, soft burst, as an overdriven tube beam does.
         const float flash = std::clamp(
             static_cast<float>(d.ticks_left - (tuning::kDebrisTicks - 90)) / 30.0f, 0.0f, 1.0f);
         add(d.body, p ? lerp(field_, p->body.transform, d.body.transform, alpha) : d.body.transform,

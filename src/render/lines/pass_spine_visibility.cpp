@@ -9,7 +9,7 @@ namespace {
 // Work groups of the visibility dispatch (8 invocations each, spine_visibility.comp); each
 // takes every n-th record. A fixed count rather than one group per record: llvmpipe sets up
 // each group's invocations anew, which costs as much as the spine tests of a short edge.
-// Measured on llvmpipe (800x600, the seed's hallway / Suzanne): 32 invocations per group
+// Measured on llvmpipe (800x600, Bernardoni 2018's hallway / Suzanne): 32 invocations per group
 // 8.0 / 3.3 ms, 8 invocations 4.6 / 1.4 ms; 128 or 1024 groups the same within the noise.
 // 1024 groups keep 8192 invocations busy on a GPU. A small frame gets fewer: about one group
 // per two records of the frame before (any count is correct, groups stride over the records),

@@ -46,7 +46,7 @@ void pass_fill(const PassContext& ctx) {
     draw_batch_triangles(ctx, state, false, &GpuMesh::fill_vao);
 }
 
-// The halo's depth mask (seed 004): the occluders again, shrunk along their vertex normals, so
+// The halo's depth mask (Loviscach): the occluders again, shrunk along their vertex normals, so
 // a stroke quad that reaches inside the silhouette stays in front of its own object.
 void pass_shrunk_depth(const PassContext& ctx) {
     ctx.targets.shrunk_fbo.bind();

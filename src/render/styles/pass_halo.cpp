@@ -14,7 +14,7 @@ gl::PipelineState halo_state(const PassContext& ctx, gl::Blend blend) {
 
 }  // namespace
 
-// Haloed strokes (seed 004), three steps:
+// Haloed strokes (Loviscach), three steps:
 //  1. the soft halo outside every visible silhouette into the off-screen halo buffer, MAX
 //     blended (so the zig-zags of extracted silhouettes merge without seams);
 //  2. the halo laid over the canvas: surfaces behind the stroke that cast it fade to paper;

@@ -10,8 +10,8 @@ namespace bz::render {
 
 enum class FillPass {
     none,     // depth prepass only: the lines float on black (vector)
-    toon,     // cel bands from a light direction (seed 002)
-    pop_art,  // flat diffuse colour with halftone Ben-Day dots (seed 003)
+    toon,     // cel bands from a light direction (Castro & Macedo)
+    pop_art,  // flat diffuse colour with halftone Ben-Day dots (Olejnik & Litchmore)
     paper,    // the object is the paper itself: it hides what is behind it (sketch, halo)
 };
 
@@ -22,7 +22,7 @@ enum class LinePass {
     halo,     // silhouette strokes with soft halos over a shrunk-mesh depth mask
 };
 
-// How an outline quad sits on its edge (seed 002).
+// How an outline quad sits on its edge (Castro & Macedo).
 enum class OutlineQuad {
     centred,    // extruded to both sides, visibility by the spine test
     one_sided,  // extruded outward only, depth-tested against the fill

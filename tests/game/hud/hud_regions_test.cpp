@@ -1,6 +1,6 @@
 // Every piece of the play HUD stays in the region the layout reserves for it, the regions do
-// not overlap, and the scene is kept under the band (issue 13: text drawn over the radar, the
-// moon inside the radar).
+// not overlap, and the scene is kept under the band (once, text was drawn over the
+// radar and the moon inside it).
 #include <gtest/gtest.h>
 
 #include "game/default_level.h"

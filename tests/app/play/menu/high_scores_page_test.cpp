@@ -1,4 +1,4 @@
-// High scores are kept per level (issue 13 point 5): the menu's table names whose it is.
+// High scores are kept per level: the menu's table names whose it is.
 #include <gtest/gtest.h>
 
 #include "app/play/menu/play_menus.h"
