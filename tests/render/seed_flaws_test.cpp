@@ -1,5 +1,6 @@
-// The three flaws of the frame of the renderer this one grew from (Bernardoni 2018), each checked so they stay fixed:
-// spurious diagonals across flat panels, dense line areas washed out to white, and stubs.
+// The three flaws of the frame of the renderer this one grew from (Bernardoni 2018), each checked
+// so they stay fixed: spurious diagonals across flat panels, dense line areas washed out to white,
+// and stubs.
 #include <gtest/gtest.h>
 
 #include <algorithm>

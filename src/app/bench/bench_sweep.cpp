@@ -183,8 +183,8 @@ SweepResult run_sweep(const BenchFrames& bf, const scene::MeshLibrary& meshes, i
             const std::vector<std::uint8_t> mask =
                 renderers[c]->render_mask(frame_of(result.sampled[k]), meshes);
             scores.push_back(geo::score_masks(mask, refs[k], width, height, 1));
-            // Wider tolerances: the sketch style's jittered strokes (Olejnik & Litchmore) are scored at
-            // 1, 2 and 4 px; the exact-line configurations gain little from them.
+            // Wider tolerances: the sketch style's jittered strokes (Olejnik & Litchmore) are
+            // scored at 1, 2 and 4 px; the exact-line configurations gain little from them.
             wide[0].push_back(geo::score_masks(mask, refs[k], width, height, 2));
             wide[1].push_back(geo::score_masks(mask, refs[k], width, height, 4));
             if (!o.masks_dir.empty()) {

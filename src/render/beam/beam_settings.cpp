@@ -37,8 +37,8 @@ BeamSettings beam_look(std::string_view name) {
         b.mip_weights = {1.00f, 0.48f, 0.32f, 0.24f, 0.16f, 0.24f, 0.32f, 0.48f, 0.64f};
         b.bloom_threshold = 0.25f;
         b.bloom_knee = 0.2f;
-        // Without it the widest levels light every pixel of a dense scene (Bernardoni 2018's hallway:
-        // 100% of pixels above 1/255). The lengthened ends add light where lines meet, and
+        // Without it the widest levels light every pixel of a dense scene (Bernardoni 2018's
+        // hallway: 100% of pixels above 1/255). The lengthened ends add light where lines meet, and
         // with 0.02 `high` (whose chain starts at half resolution, where a thin line is
         // averaged over fewer pixels than at quarter, so more of it passes the threshold)
         // lit 70.3% of the hallway; 0.025 brings it to

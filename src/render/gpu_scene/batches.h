@@ -33,8 +33,8 @@ FrameBatches build_batches(const scene::FrameList& frame, const scene::MeshLibra
                            int viewport_height);
 
 // The crease threshold an object gets at a projected radius of `radius_px` pixels: far
-// objects keep only their strongest creases, tiny ones only silhouettes (Bernardoni 2018: far models
-// look cramped with constant-width lines).
+// objects keep only their strongest creases, tiny ones only silhouettes (Bernardoni 2018: far
+// models look cramped with constant-width lines).
 float lod_cos_crease(const RenderSettings& settings, double radius_px);
 // The mesh detail an object gets at that projected radius: 0 full, 1 simplified.
 int lod_level(const RenderSettings& settings, double radius_px);

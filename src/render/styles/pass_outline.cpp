@@ -2,8 +2,8 @@
 
 namespace bz::render {
 
-// Toon and pop-art outlines (Castro & Macedo): ink quads over the fill, one per visible feature edge
-// of the edge buffer, alpha-blended so their antialiased sides sit softly on the colour.
+// Toon and pop-art outlines (Castro & Macedo): ink quads over the fill, one per visible feature
+// edge of the edge buffer, alpha-blended so their antialiased sides sit softly on the colour.
 void pass_outline(const PassContext& ctx) {
     ctx.targets.canvas_fbo.bind();
     gl::PipelineState state;

@@ -2,7 +2,7 @@
 
 namespace bz::render {
 
-// Pencil strokes over the paper (Olejnik & Litchmore), or in mask mode their centre lines into the mask.
+// Pencil strokes over the paper (Olejnik & Litchmore), or in mask mode their centre lines.
 void pass_sketch(const PassContext& ctx, bool mask_mode) {
     gl::PipelineState state;
     state.depth_zero_to_one = ctx.cam.zero_to_one;

@@ -33,7 +33,7 @@ StyleDef toon() {
                         {0.78f, 0.86f, 0.93f});  // a pale sky
     s.toon_bands = 3;
     s.outline.width_px = 3.0f;
-    s.outline.overdraw = 0.02f;  // Castro & Macedo: closes the gaps between quads on curved surfaces
+    s.outline.overdraw = 0.02f;  // closes the gaps between quads on curves (Castro & Macedo)
     s.outline.quad = OutlineQuad::centred;
     return s;
 }
