@@ -1,11 +1,15 @@
 #version 450 core
-// Edge extraction (LineMethod::compute): one invocation per edge of the mesh's unique edge list
-// (geo::build_edge_list) and instance. It classifies the edge with exactly the geometry
-// shader's definitions (shaders/lines/lines.geom: view-space facing, the crease threshold, back faces
-// skipped for outward-closed meshes seen from outside), clips it with the same code, and
-// appends each visible feature edge to the edge buffer (edge_record.glsl). Unlike the geometry
-// shader, each edge is tested once instead of once from each of its faces, and the work is
-// spread over every thread llvmpipe (or a GPU) has.
+// Edge extraction (LineMethod::compute): one work group per work item, one invocation per edge
+// of the item's stretch of the mesh's clustered edge list (geo::cluster_edges). The CPU has
+// already dropped the clusters that cannot give a feature edge (render/lines/edge_culling.h).
+// It classifies the edge with the geometry shader's definitions (shaders/lines/lines.geom:
+// facing, the crease threshold, back faces skipped for outward-closed meshes seen from
+// outside), clips it with the same code, and appends each visible feature edge to the edge
+// buffer (edge_record.glsl). Facing is tested in object space, against the eye brought into
+// the instance's space once per frame and the mesh's precomputed face normals, so an edge that
+// is no feature costs no vertex transform; only feature edges go to view space. Each edge is
+// tested once instead of once from each of its faces, and the work is spread over every
+// thread llvmpipe (or a GPU) has.
 #include "edge_record.glsl"
 #include "spine_samples.glsl"
 
@@ -17,10 +21,18 @@ struct MeshEdge {
     uint opp_b;       // face B's third vertex, 0xFFFFFFFF without face B
     float cos_dihedral;
     uint flags;       // 0 interior, 1 boundary, 2 non-manifold, 3 inconsistent
+    uint face_a;      // face A's triangle, into face_normals
+    uint face_b;      // face B's triangle, 0xFFFFFFFF without face B
+    uint id;          // stable id for per-edge seeds (the list's order before clustering)
 };
 layout(std430, binding = EDGE_LIST_BINDING) readonly buffer Edges { MeshEdge edges[]; };
 layout(std430, binding = EDGE_POSITIONS_BINDING) readonly buffer Positions { float positions[]; };
 layout(std430, binding = EDGE_VERTEX_NORMALS_BINDING) readonly buffer VertexNormals { float vertex_normals[]; };
+// Per triangle, its unnormalised object-space normal (geo::face_normals).
+layout(std430, binding = EDGE_FACE_NORMALS_BINDING) readonly buffer FaceNormals { vec4 face_normals[]; };
+// Per instance of the frame, its object-space eye (xyz) and the sign of det(model-view) (w) as
+// float bits; then the work items: x instance, y first edge, z edge count.
+layout(std430, binding = EDGE_WORK_BINDING) readonly buffer Work { uvec4 work[]; };
 // render::InstanceData: model-view in vec4 0-3, colour 4, parameters 5 (x: cos(crease angle)).
 layout(std430, binding = 1) readonly buffer Instances { vec4 instance_data[]; };
 layout(std430, binding = EDGE_RECORDS_BINDING) writeonly buffer Records { EdgeRecord records[]; };
@@ -29,9 +41,7 @@ layout(std430, binding = EDGE_RECORDS_BINDING) writeonly buffer Records { EdgeRe
 layout(std430, binding = SPINE_SPANS_BINDING) writeonly buffer Spans { uvec4 spans[]; };
 layout(std430, binding = EDGE_COMMAND_BINDING) buffer Command { EDGE_COMMAND_MEMBERS; };
 
-uniform uint u_edge_base;       // first edge of this dispatch (dispatches are chunked)
-uniform uint u_edge_count;
-uniform uint u_first_instance;  // this batch's first instance, plus the dispatch's y offset
+uniform uint u_work_base;       // this dispatch's first work item in `work`
 uniform uint u_capacity;        // records the buffer holds; later appends are counted, not written
 uniform uint u_sample_capacity; // spine samples the sample buffer holds (0: none wanted)
 uniform float u_sample_margin;  // pixels around the viewport that spine samples cover
@@ -72,25 +82,24 @@ vec2 on_screen_stretch(vec2 s0, vec2 s1) {
 }
 
 void main() {
-    uint e = u_edge_base + gl_GlobalInvocationID.x;
-    if (e >= u_edge_count) return;
-    uint inst = u_first_instance + gl_WorkGroupID.y;
+    uvec4 item = work[u_work_base + gl_WorkGroupID.x];
+    if (gl_LocalInvocationID.x >= item.z) return;
+    uint e = item.y + gl_LocalInvocationID.x;
+    uint inst = item.x;
     MeshEdge me = edges[e];
-    mat4 mv = mat4(instance_data[inst * 6u], instance_data[inst * 6u + 1u], instance_data[inst * 6u + 2u],
-                   instance_data[inst * 6u + 3u]);
-    vec3 a = (mv * vec4(position(me.a), 1.0)).xyz;
-    vec3 b = (mv * vec4(position(me.b), 1.0)).xyz;
-    vec3 oa = (mv * vec4(position(me.opp_a), 1.0)).xyz;
-    vec3 na = face_normal(a, b, oa);
-    bool front_a = faces_eye(na, a);
+    vec4 eye = uintBitsToFloat(work[inst]);
+    vec3 pa = position(me.a);
+    vec3 to_eye = eye.xyz - pa;  // both faces hold vertex a
+    vec3 obj_na = face_normals[me.face_a].xyz;
+    bool front_a = eye.w * dot(obj_na, to_eye) > 0.0;
 
-    // The geometry shader's cases, seen from the edge instead of from each face.
+    // The geometry shader's cases, seen from the edge instead of from each face; everything
+    // that is no feature edge returns before any vertex is transformed.
     uint kind;
-    vec3 p0 = a, p1 = b, opp = oa;  // emitted direction and the emitting face's third vertex
-    vec3 face_pos = plane_of(na, a), face_neg = vec3(0.0);
-    vec3 nb = vec3(0.0);
     uint flags = front_a ? EDGE_FACE_A_FRONT : 0u;
-    bool has_b = me.opp_b != kNoVertex;
+    bool has_b = me.opp_b != kNoVertex && me.face_b != kNoVertex;
+    bool front_b = false;
+    vec3 obj_nb = vec3(0.0);
     if (!has_b) {
         // Boundary, non-manifold or inconsistent: always a feature edge, one record per face.
         if (!front_a && u_skip_back_faces) return;
@@ -98,21 +107,38 @@ void main() {
         if (me.flags == 2u) flags |= EDGE_NON_MANIFOLD;
         if (me.flags == 3u) flags |= EDGE_INCONSISTENT;
     } else {
-        vec3 ob = (mv * vec4(position(me.opp_b), 1.0)).xyz;
-        nb = face_normal(a, ob, b);  // as the geometry shader tests the neighbour of face A
-        bool front_b = faces_eye(nb, a);
+        obj_nb = face_normals[me.face_b].xyz;
+        front_b = eye.w * dot(obj_nb, to_eye) > 0.0;
         flags |= EDGE_HAS_FACE_B | (front_b ? EDGE_FACE_B_FRONT : 0u);
         if (front_a != front_b) {
-            // Silhouette, emitted in the front face's winding with its third vertex.
             kind = EDGE_SILHOUETTE;
-            if (!front_a) { p0 = b; p1 = a; opp = ob; }
-            face_pos = vec3(0.0);
         } else {
             if (!front_a && u_skip_back_faces) return;
             if (!(me.cos_dihedral < instance_data[inst * 6u + 5u].x)) return;
             kind = EDGE_CREASE;  // a < b: the face that walks low -> high, as the geometry shader
-            face_neg = plane_of(nb, ob);
         }
+    }
+
+    // A feature edge: to view space. Normals go with the cofactor matrix (right for any
+    // invertible model-view), which maps the object-space cross product of a face's edges to
+    // the view-space one.
+    mat4 mv = mat4(instance_data[inst * 6u], instance_data[inst * 6u + 1u], instance_data[inst * 6u + 2u],
+                   instance_data[inst * 6u + 3u]);
+    mat3 l = mat3(mv);
+    mat3 cof = mat3(cross(l[1], l[2]), cross(l[2], l[0]), cross(l[0], l[1]));
+    vec3 a = (mv * vec4(pa, 1.0)).xyz;
+    vec3 b = (mv * vec4(position(me.b), 1.0)).xyz;
+    vec3 oa = (mv * vec4(position(me.opp_a), 1.0)).xyz;
+    vec3 na = cof * obj_na;
+    vec3 nb = has_b ? cof * obj_nb : vec3(0.0);
+    vec3 p0 = a, p1 = b, opp = oa;  // emitted direction and the emitting face's third vertex
+    vec3 face_pos = plane_of(na, a), face_neg = vec3(0.0);
+    if (kind == EDGE_SILHOUETTE) {
+        // Emitted in the front face's winding with its third vertex.
+        if (!front_a) { p0 = b; p1 = a; opp = (mv * vec4(position(me.opp_b), 1.0)).xyz; }
+        face_pos = vec3(0.0);
+    } else if (kind == EDGE_CREASE) {
+        face_neg = plane_of(nb, (mv * vec4(position(me.opp_b), 1.0)).xyz);
     }
 
     vec3 m = eye_edge_plane(p0, p1, opp);
@@ -126,9 +152,6 @@ void main() {
     if (reversed) flags = (flags & ~EDGE_FACE_B_FRONT) | EDGE_FACE_A_FRONT;
     if (s.t.x > 0.0) flags |= EDGE_CLIPPED_START;
     if (s.t.y < 1.0) flags |= EDGE_CLIPPED_END;
-    // Normals to view space with the cofactor matrix (right for any invertible model-view).
-    mat3 l = mat3(mv);
-    mat3 cof = mat3(cross(l[1], l[2]), cross(l[2], l[0]), cross(l[0], l[1]));
     uint va = reversed ? me.b : me.a, vb = reversed ? me.a : me.b;
     // Room for the spine-visibility samples of the stretch on screen; an edge that finds no
     // room is tested per fragment (samples = 0).
@@ -156,7 +179,7 @@ void main() {
     r.normal_b = vec4(unit_or_zero(reversed ? na : nb), 0.0);
     r.vertex_normal_a = vec4(unit_or_zero(cof * vertex_normal(va)), 0.0);
     r.vertex_normal_b = vec4(unit_or_zero(cof * vertex_normal(vb)), 0.0);
-    r.ids = uvec4(kind | flags, inst, e, u_mesh_id);
+    r.ids = uvec4(kind | flags, inst, me.id, u_mesh_id);
     r.vertices = uvec4(va, vb, first_sample, samples);
     records[slot] = r;
     if (samples > 0u) {  // none visible yet

@@ -10,6 +10,7 @@
 
 #include "gl/pass_timer.h"
 #include "gl/texture.h"
+#include "render/lines/edge_culling.h"
 #include "render/settings.h"
 #include "scene/frame_list.h"
 #include "scene/mesh_library.h"
@@ -26,6 +27,9 @@ struct FrameStats {
     std::size_t feature_edges = 0;
     // The method that drew the frame's lines: LineMethod::automatic's choice for it.
     LineMethod line_method = kDefaultLineMethod;
+    // LineMethod::compute: what culling before per-edge work left to the edge pass
+    // (render/lines/edge_culling.h); zero with the geometry shader.
+    EdgeCullStats edge_culling;
 };
 
 class Renderer {

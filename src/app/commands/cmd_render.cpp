@@ -127,6 +127,14 @@ void print_timings(const render::Renderer& r,
     const auto& s = r.stats();
     std::fprintf(stdout, "objects %zu, triangles %zu, feature edges %zu\n", s.objects_drawn,
                  s.triangles_submitted, s.feature_edges);
+    const render::EdgeCullStats& c = s.edge_culling;
+    if (c.clusters > 0) {
+        std::fprintf(stdout,
+                     "edge clusters %zu: %zu outside the view, %zu facing away, %zu one way; "
+                     "edges tested %zu of %zu\n",
+                     c.clusters, c.outside_frustum, c.facing_away, c.one_way, c.edges_dispatched,
+                     c.edges);
+    }
 }
 
 // Lays out `copies` instances on a square grid in the xz plane; returns their joint bounds.

@@ -24,18 +24,30 @@ inline constexpr std::uint32_t kEdgeBoundary = 1u;
 inline constexpr std::uint32_t kEdgeNonManifold = 2u;
 inline constexpr std::uint32_t kEdgeInconsistent = 3u;
 
-// 24 bytes, the std430 layout of shaders/lines/edges.comp's MeshEdge.
+// 36 bytes, the std430 layout of shaders/lines/edges.comp's MeshEdge.
 struct MeshEdge {
     std::uint32_t a = 0, b = 0;       // the edge, in face A's winding
     std::uint32_t opp_a = 0;          // face A's third vertex
     std::uint32_t opp_b = kNoVertex;  // face B's third vertex; kNoVertex when there is no face B
     float cos_dihedral = 2.0f;        // unit normals' dot (double, object space); 2 without face B
     std::uint32_t flags = kEdgeInterior;  // kEdge* (the EdgeKind of the triangle edge)
+    std::uint32_t face_a = 0;             // face A's triangle (index into face_normals)
+    std::uint32_t face_b = kNoVertex;     // face B's triangle; kNoVertex without face B
+    // The edge's place in build_edge_list's order: stable however the list is regrouped
+    // (edge_clusters.h), so per-edge seeds (sketch jitter, flicker) do not change with it.
+    std::uint32_t id = 0;
 };
-static_assert(sizeof(MeshEdge) == 24);
+static_assert(sizeof(MeshEdge) == 36);
 
 // Deterministic: triangles in order, each triangle's edges in order.
 std::vector<MeshEdge> build_edge_list(const AdjacencyMesh& mesh);
+
+// Per triangle, its unnormalised normal in object space, cross(p1 - p0, p2 - p0) (the winding's
+// normal, as the line shaders compute it), computed in double; w is 0 (vec4 for std430). An eye
+// at E sees the front of the face when dot(normal, E - p) > 0 for a vertex p of it: testing
+// against a vertex, not a stored plane offset, keeps the precision of a model far from its
+// origin.
+std::vector<glm::vec4> face_normals(const AdjacencyMesh& mesh);
 
 // Unit angle-weighted vertex normals (zero for a vertex of degenerate faces only), for the edge
 // buffer's smoothing data.

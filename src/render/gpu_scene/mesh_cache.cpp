@@ -59,9 +59,13 @@ void MeshCache::set_edge_lists(bool on) {
 }
 
 void MeshCache::upload_edges(GpuMesh& gpu, const geo::AdjacencyMesh& mesh) {
-    const std::vector<geo::MeshEdge> edges = geo::build_edge_list(mesh);
+    gpu.edge_clusters = geo::cluster_edges(mesh, geo::build_edge_list(mesh));
+    std::vector<geo::MeshEdge>& edges = gpu.edge_clusters.edges;
     gpu.edge_list.set(std::span<const geo::MeshEdge>(edges), GL_STATIC_DRAW);
     gpu.edge_count = static_cast<GLuint>(edges.size());
+    edges = {};
+    const std::vector<glm::vec4> normals = geo::face_normals(mesh);
+    gpu.face_normals.set(std::span<const glm::vec4>(normals), GL_STATIC_DRAW);
     gpu.has_edge_list = true;
 }
 

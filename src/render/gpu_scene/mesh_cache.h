@@ -8,6 +8,7 @@
 #include <memory>
 #include <vector>
 
+#include "geometry/derived/edge_clusters.h"
 #include "gl/buffer.h"
 #include "gl/vertex_array.h"
 #include "scene/mesh_library.h"
@@ -28,9 +29,15 @@ struct GpuMesh {
     gl::Buffer positions;
     gl::Buffer vertex_normals;  // smooth vertex normals (geo::vertex_normals)
     // Styles with strokes and LineMethod::compute (MeshCache::set_edge_lists): the unique edge
-    // list (geo::MeshEdge, binding kEdgeListBinding) the edge extraction reads.
+    // list (geo::MeshEdge, binding kEdgeListBinding) the edge extraction reads, grouped into
+    // clusters (geo::cluster_edges), and each triangle's object-space normal
+    // (geo::face_normals, binding kFaceNormalsBinding) it tests facing with.
     gl::Buffer edge_list;
+    gl::Buffer face_normals;
     GLuint edge_count = 0;
+    // The clusters' bounds and crease keys, for culling on the CPU each frame
+    // (render/lines/edge_culling.h); `edges` is emptied once uploaded.
+    geo::ClusteredEdges edge_clusters;
     gl::Buffer adjacency;
     gl::Buffer triangles;
     gl::Buffer edge_cosines;     // 3 per triangle, read by the geometry shader (binding 0)

@@ -93,5 +93,7 @@ inline constexpr unsigned kEdgeCommandBinding = 5;    // EdgeDrawCommand (atomic
 inline constexpr unsigned kVertexNormalsBinding = 6;  // the mesh's vertex normals (3 floats each)
 inline constexpr unsigned kSpineSamplesBinding = 7;   // one visibility word per spine sample
 inline constexpr unsigned kSpineSpansBinding = 8;     // per record: first and last visible sample
+inline constexpr unsigned kFaceNormalsBinding = 9;    // the mesh's face normals (geo::face_normals)
+inline constexpr unsigned kEdgeWorkBinding = 10;      // eyes and work items (edge_culling.h)
 
 }  // namespace bz::render

@@ -47,6 +47,10 @@ void EdgeStorage::reserve_samples(std::size_t samples) {
                       GL_DYNAMIC_COPY);
 }
 
+void EdgeStorage::set_work(std::span<const glm::uvec4> work) {
+    work_.set(work, GL_STREAM_DRAW);
+}
+
 void EdgeStorage::reset() {
     const EdgeDrawCommand cmd;
     glNamedBufferSubData(command_.id(), 0, sizeof(cmd), &cmd);

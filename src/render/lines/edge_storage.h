@@ -5,7 +5,9 @@
 // samples than fit is counted in full, so the renderer can grow the buffers.
 #include <cstddef>
 #include <cstdint>
+#include <glm/glm.hpp>
 #include <optional>
+#include <span>
 
 #include "gl/buffer.h"
 #include "render/lines/edge_buffer.h"
@@ -42,6 +44,11 @@ class EdgeStorage {
     // itself from its own counts (edges_sized) instead of from an older frame's.
     void forget_previous();
 
+    // The frame's edge-extraction work (render/lines/edge_culling.h, binding kEdgeWorkBinding):
+    // each instance's object-space eye, then the work items.
+    void set_work(std::span<const glm::uvec4> work);
+    const gl::Buffer& work() const { return work_; }
+
     std::uint32_t capacity() const { return capacity_; }
     std::uint32_t max_capacity() const { return max_capacity_; }
     std::uint32_t sample_capacity() const { return sample_capacity_; }
@@ -57,7 +64,8 @@ class EdgeStorage {
     gl::Buffer command_;
     gl::Buffer kept_count_;
     gl::Buffer readback_;  // counts() reads the counters from here
-    gl::Buffer samples_;   // one uint per spine sample: 1 visible, 0 hidden
+    gl::Buffer work_;
+    gl::Buffer samples_;  // one uint per spine sample: 1 visible, 0 hidden
     gl::Buffer
         spans_;  // per record: 2 uvec4, sampled stretch, first and last visible sample, count
     std::uint32_t capacity_ = 0;

@@ -1,5 +1,8 @@
 #include <algorithm>
+#include <glm/gtc/type_ptr.hpp>
+#include <vector>
 
+#include "render/lines/edge_culling.h"
 #include "render/passes.h"
 
 namespace bz::render {
@@ -9,20 +12,44 @@ namespace {
 // The edge buffer is sized for every edge of the frame when that is small, else for this many
 // and grown when a frame appends more (EdgeStorage::keep_count).
 constexpr std::size_t kInitialRecords = std::size_t{1} << 16;
-constexpr GLuint kGroupSize = 64;     // local_size_x of edges.comp
 constexpr GLuint kMaxGroups = 65535;  // the smallest GL_MAX_COMPUTE_WORK_GROUP_COUNT allowed
 
 }  // namespace
 
-// Edge extraction for LineMethod::compute: one dispatch per batch, one invocation per mesh
-// edge and instance (edges.comp), appending the visible feature edges to the edge buffer.
+// Edge extraction for LineMethod::compute: the CPU culls each instance's edge clusters
+// (edge_culling.h) into work items, then one dispatch per batch runs one work group per item
+// (edges.comp), appending the visible feature edges to the edge buffer.
 void pass_edges(const PassContext& ctx) {
+    // The work buffer: every instance's object-space eye first, then the batches' items.
+    const std::vector<InstanceData>& instances = ctx.batches.instances;
+    std::vector<EdgeWorkItem> work;
+    work.reserve(instances.size() * 2);
+    for (const InstanceData& d : instances)
+        work.push_back(glm::floatBitsToUint(object_space_eye(d.model_view)));
+    const CullView view{ctx.cam.proj, ctx.cam.near, ctx.cam.far};
+    EdgeCullStats cull;
+    struct Dispatch {
+        const Batch* batch;
+        std::size_t first, count;  // its items in `work`
+    };
+    std::vector<Dispatch> dispatches;
     std::size_t worst = 0;
     for (const Batch& b : ctx.batches.batches) {
-        worst +=
-            static_cast<std::size_t>(ctx.gpu_meshes.get(ctx.meshes, b.mesh, b.lod).edge_count) *
-            static_cast<std::size_t>(b.instance_count);
+        const GpuMesh& mesh = ctx.gpu_meshes.get(ctx.meshes, b.mesh, b.lod);
+        if (mesh.edge_count == 0) continue;
+        const bool skip_back_faces = ctx.occlusion && b.eye_outside && mesh.outward_closed;
+        const std::size_t first = work.size();
+        for (GLsizei i = 0; i < b.instance_count; ++i) {
+            const GLuint inst = b.first_instance + static_cast<GLuint>(i);
+            const EdgeCullStats before = cull;
+            append_edge_work(mesh.edge_clusters, instances[inst].model_view,
+                             instances[inst].params.x, skip_back_faces, view, inst, work, cull);
+            worst += cull.edges_dispatched - before.edges_dispatched;
+        }
+        if (work.size() > first) dispatches.push_back({&b, first, work.size() - first});
     }
+    if (ctx.stats) ctx.stats->edge_culling = cull;
+
     // A previous frame that overflowed asks for more; a frame that cannot overflow gets it all.
     const EdgeDrawCommand previous = ctx.edges.previous();
     ctx.edges.reserve(std::min(
@@ -32,6 +59,11 @@ void pass_edges(const PassContext& ctx) {
     if (samples)
         ctx.edges.reserve_samples(std::size_t{previous.samples_used} + previous.samples_used / 4);
     ctx.edges.reset();
+    if (dispatches.empty()) {
+        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+        return;
+    }
+    ctx.edges.set_work(work);
 
     const gl::Program& program = ctx.programs.edges;
     program.use();
@@ -49,28 +81,23 @@ void pass_edges(const PassContext& ctx) {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEdgeRecordsBinding, ctx.edges.records().id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEdgeCommandBinding, ctx.edges.command().id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSpineSpansBinding, ctx.edges.spans().id());
-    for (const Batch& b : ctx.batches.batches) {
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEdgeWorkBinding, ctx.edges.work().id());
+    for (const Dispatch& d : dispatches) {
+        const Batch& b = *d.batch;
         const GpuMesh& mesh = ctx.gpu_meshes.get(ctx.meshes, b.mesh, b.lod);
-        if (mesh.edge_count == 0) continue;
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEdgeListBinding, mesh.edge_list.id());
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEdgePositionsBinding, mesh.positions.id());
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kVertexNormalsBinding, mesh.vertex_normals.id());
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kFaceNormalsBinding, mesh.face_normals.id());
         program.set("u_skip_back_faces",
                     (ctx.occlusion && b.eye_outside && mesh.outward_closed) ? 1 : 0);
         program.set("u_mesh_id", static_cast<unsigned>(b.mesh));
-        // Chunks keep both work-group counts within the limit every implementation allows.
-        const GLuint per_x = kGroupSize * kMaxGroups;
-        for (GLuint edge0 = 0; edge0 < mesh.edge_count; edge0 += per_x) {
-            const GLuint edges = std::min(per_x, mesh.edge_count - edge0);
-            program.set("u_edge_base", edge0);
-            program.set("u_edge_count", mesh.edge_count);
-            for (GLuint inst0 = 0; inst0 < static_cast<GLuint>(b.instance_count);
-                 inst0 += kMaxGroups) {
-                const GLuint instances =
-                    std::min(kMaxGroups, static_cast<GLuint>(b.instance_count) - inst0);
-                program.set("u_first_instance", b.first_instance + inst0);
-                glDispatchCompute((edges + kGroupSize - 1) / kGroupSize, instances, 1);
-            }
+        // Chunks keep the work-group count within the limit every implementation allows.
+        for (std::size_t item0 = 0; item0 < d.count; item0 += kMaxGroups) {
+            const auto groups =
+                static_cast<GLuint>(std::min<std::size_t>(kMaxGroups, d.count - item0));
+            program.set("u_work_base", static_cast<GLuint>(d.first + item0));
+            glDispatchCompute(groups, 1, 1);
         }
     }
     // The quad pass reads the records in its vertex shader and the count as its draw command.

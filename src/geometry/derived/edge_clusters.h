@@ -1,0 +1,59 @@
+#pragma once
+// Edge clusters: the unique edge list (edge_list.h) regrouped into small clusters of nearby
+// edges whose faces point roughly one way, each with bounds that let a frame skip it before any
+// per-edge work (LineMethod::compute).
+//
+// A silhouette edge has one face towards the eye and one away. A cluster whose faces all face
+// the eye, or all face away, has no silhouette (Sander et al., "Silhouette Clipping",
+// SIGGRAPH 2000, with a normal cone per cluster): a frame then tests only the cluster's crease
+// and boundary candidates, which are kept first in the cluster, sorted by crease strength; and
+// a closed mesh seen from outside skips a cluster that faces away entirely. A cone bounds the
+// faces on the cluster's edges, including the faces across its border, so an edge on a
+// cluster's border is judged by both its faces like any other.
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "geometry/derived/edge_list.h"
+#include "geometry/mesh.h"
+
+namespace bz::geo {
+
+// At most this many edges per cluster: one compute work group (edges.comp) per cluster.
+inline constexpr std::uint32_t kMaxClusterEdges = 64;
+
+// The crease key of an edge without face B: below every threshold cosine, so such an edge (a
+// feature at every view) sorts first.
+inline constexpr float kAlwaysFeatureKey = -3.0f;
+
+struct EdgeCluster {
+    glm::vec3 center{0.0f};  // a sphere around every end point of the cluster's edges
+    float radius = 0.0f;
+    glm::vec3 axis{0.0f};  // unit axis of the cone around its faces' unit normals
+    // Cosine of the cone's half-angle, already widened for rounding; -1 when the faces have no
+    // usable cone (a degenerate face, or normals spread over a half-space): never culled by
+    // facing.
+    float cos_spread = -1.0f;
+    std::uint32_t first = 0;  // its edges: [first, first + count) of ClusteredEdges::edges
+    std::uint32_t count = 0;
+};
+
+struct ClusteredEdges {
+    std::vector<MeshEdge> edges;  // every edge of the list, cluster by cluster
+    // Per edge, what the crease test compares with the instance's cos(crease angle): the
+    // edge's cos_dihedral, kAlwaysFeatureKey without face B, 2 where the cosine is not a
+    // number. Ascending inside each cluster.
+    std::vector<float> crease_keys;
+    std::vector<EdgeCluster> clusters;
+};
+
+// Groups `edges` (build_edge_list(mesh)) with meshoptimizer's meshlet builder: each edge goes
+// with its face A's meshlet, and a meshlet's edges are split into clusters of at most
+// kMaxClusterEdges. Deterministic.
+ClusteredEdges cluster_edges(const AdjacencyMesh& mesh, std::span<const MeshEdge> edges);
+
+// Edges of the cluster that are features when no silhouette can be among them: those whose
+// crease key is below `cos_crease` (a prefix of the cluster, by the sort).
+std::uint32_t crease_prefix(const ClusteredEdges& c, const EdgeCluster& cluster, float cos_crease);
+
+}  // namespace bz::geo

@@ -1,0 +1,53 @@
+#pragma once
+// Culling before per-edge work (LineMethod::compute): a frame turns each instance's edge
+// clusters (geometry/derived/edge_clusters.h) into work items for edges.comp, one work group
+// per item, and drops what cannot give a feature edge:
+//  - a cluster outside the frustum's guard band (shaders/lines/edge_geometry.glsl clips every
+//    edge to it, so nothing of such a cluster would be drawn or counted);
+//  - the silhouette candidates of a cluster whose faces all face the eye or all face away:
+//    only its crease and boundary candidates (a prefix of the cluster) are tested;
+//  - all of a cluster facing away, for a closed mesh seen from outside (skip_back_faces).
+// Facing is tested in object space against the eye brought into the instance's space once,
+// as edges.comp does per edge, so no vertex is transformed for the test.
+#include <cstdint>
+#include <glm/glm.hpp>
+#include <vector>
+
+#include "geometry/derived/edge_clusters.h"
+
+namespace bz::render {
+
+// One work group of edges.comp: x the instance, y the first edge (into the clustered edge
+// list), z the number of edges (<= geo::kMaxClusterEdges), w unused.
+using EdgeWorkItem = glm::uvec4;
+
+struct EdgeCullStats {
+    std::size_t clusters = 0;          // (instance, cluster) pairs looked at
+    std::size_t outside_frustum = 0;   // dropped whole: outside the guard band
+    std::size_t facing_away = 0;       // dropped whole: closed mesh, every face away
+    std::size_t one_way = 0;           // only the crease and boundary candidates tested
+    std::size_t edges = 0;             // edges of the clusters looked at
+    std::size_t edges_dispatched = 0;  // edges given to edges.comp
+};
+
+// What culling needs of the view: the projection (any, perspective or not) and the depth
+// range edges are clipped to.
+struct CullView {
+    glm::mat4 proj{1.0f};
+    float near = 0.1f;
+    float far = 1000.0f;
+};
+
+// The eye in the instance's object space (xyz) and the sign of det(model_view) (w): a face
+// with object-space normal n and vertex p faces the eye when w * dot(n, xyz - p) > 0, exactly
+// when its view-space normal faces the view-space origin. w is 0 for a singular model-view
+// (no face then faces the eye, as in view space, where every normal is zero).
+glm::vec4 object_space_eye(const glm::mat4& model_view);
+
+// Appends the work items of one instance's clusters to `work`.
+void append_edge_work(const geo::ClusteredEdges& clusters, const glm::mat4& model_view,
+                      float cos_crease, bool skip_back_faces, const CullView& view,
+                      std::uint32_t instance, std::vector<EdgeWorkItem>& work,
+                      EdgeCullStats& stats);
+
+}  // namespace bz::render

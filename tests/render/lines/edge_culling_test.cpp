@@ -1,0 +1,167 @@
+// Culling before per-edge work (render/lines/edge_culling.h) on analytic scenes where the
+// answer is known: it must keep every edge that is a feature (the shader's own tests, done
+// here in double) and drop most of the rest.
+#include "render/lines/edge_culling.h"
+
+#include <gtest/gtest.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "geometry/generated/primitives.h"
+#include "geometry/line_mesh/line_mesh.h"
+
+namespace bz::render {
+namespace {
+
+struct Scene {
+    geo::AdjacencyMesh mesh;
+    geo::ClusteredEdges clusters;
+    explicit Scene(const geo::TriMesh& m)
+        : mesh(geo::build_line_mesh(m)),
+          clusters(geo::cluster_edges(mesh, geo::build_edge_list(mesh))) {}
+};
+
+CullView view_of(float fov_deg = 60.0f) {
+    CullView v;
+    v.proj = glm::perspective(glm::radians(fov_deg), 4.0f / 3.0f, 0.1f, 1000.0f);
+    v.near = 0.1f;
+    v.far = 1000.0f;
+    return v;
+}
+
+// What edges.comp does with an edge, in double in view space: a feature edge (silhouette,
+// crease below cos_crease, or boundary), with skip_back_faces as the shader applies it.
+bool is_feature(const geo::AdjacencyMesh& m, const geo::MeshEdge& e, const glm::dmat4& mv,
+                double cos_crease, bool skip_back_faces) {
+    const auto view = [&](std::uint32_t v) {
+        return glm::dvec3(mv * glm::dvec4(glm::dvec3(m.positions[v]), 1.0));
+    };
+    const glm::dvec3 a = view(e.a), b = view(e.b);
+    const auto front = [&](const glm::dvec3& p, const glm::dvec3& q, const glm::dvec3& o) {
+        return glm::dot(glm::cross(q - p, o - p), -p) > 0.0;
+    };
+    const bool front_a = front(a, b, view(e.opp_a));
+    if (e.opp_b == geo::kNoVertex) return front_a || !skip_back_faces;
+    const bool front_b = front(a, view(e.opp_b), b);
+    if (front_a != front_b) return true;
+    if (!front_a && skip_back_faces) return false;
+    return e.cos_dihedral < cos_crease;
+}
+
+struct Culled {
+    std::vector<bool> dispatched;  // per edge of the clustered list
+    EdgeCullStats stats;
+};
+
+Culled cull(const Scene& s, const glm::mat4& mv, float cos_crease, bool skip_back_faces,
+            const CullView& v = view_of()) {
+    Culled out;
+    std::vector<EdgeWorkItem> work;
+    append_edge_work(s.clusters, mv, cos_crease, skip_back_faces, v, 7u, work, out.stats);
+    out.dispatched.assign(s.clusters.edges.size(), false);
+    for (const EdgeWorkItem& w : work) {
+        EXPECT_EQ(w.x, 7u);
+        EXPECT_LE(w.z, geo::kMaxClusterEdges);
+        for (std::uint32_t i = w.y; i < w.y + w.z; ++i) out.dispatched[i] = true;
+    }
+    return out;
+}
+
+// Every feature edge is dispatched; returns how many feature edges there are.
+std::size_t expect_features_kept(const Scene& s, const glm::mat4& mv, float cos_crease,
+                                 bool skip_back_faces, const Culled& c) {
+    std::size_t features = 0;
+    for (std::size_t i = 0; i < s.clusters.edges.size(); ++i) {
+        if (!is_feature(s.mesh, s.clusters.edges[i], glm::dmat4(mv), cos_crease, skip_back_faces))
+            continue;
+        ++features;
+        EXPECT_TRUE(c.dispatched[i]) << "feature edge " << s.clusters.edges[i].id << " culled";
+    }
+    return features;
+}
+
+TEST(EdgeCulling, ASpheresSilhouetteIsKeptAndMostOfItsEdgesAreNotTested) {
+    const Scene s(geo::uv_sphere(1.0f, 96, 192));
+    for (const glm::vec3 eye : {glm::vec3(0, 0, 4), glm::vec3(3, 2, 1), glm::vec3(0, 5, 0.01f),
+                                glm::vec3(-1.3f, -1.1f, 0.9f)}) {
+        const glm::mat4 mv = glm::lookAt(eye, glm::vec3(0.0f), glm::vec3(0, 1, 0));
+        for (const bool skip : {true, false}) {
+            const Culled c = cull(s, mv, -2.0f, skip);
+            const std::size_t silhouette = expect_features_kept(s, mv, -2.0f, skip, c);
+            // One silhouette loop: at least one ring's worth of edges, far fewer than all.
+            EXPECT_GE(silhouette, 96u);
+            EXPECT_LT(c.stats.edges_dispatched * 4, s.clusters.edges.size())
+                << "eye " << eye.x << "," << eye.y << "," << eye.z << " skip " << skip;
+            EXPECT_GE(c.stats.edges_dispatched, silhouette);
+        }
+    }
+}
+
+TEST(EdgeCulling, AMirroredInstanceKeepsItsSilhouetteToo) {
+    const Scene s(geo::uv_sphere(1.0f, 48, 96));
+    const glm::mat4 mv = glm::lookAt(glm::vec3(2, 1, 3), glm::vec3(0.0f), glm::vec3(0, 1, 0)) *
+                         glm::scale(glm::mat4(1.0f), glm::vec3(-1.0f, 1.0f, 2.0f));
+    const Culled c = cull(s, mv, -2.0f, false);
+    EXPECT_GE(expect_features_kept(s, mv, -2.0f, false, c), 48u);
+    EXPECT_LT(c.stats.edges_dispatched * 3, s.clusters.edges.size());
+}
+
+TEST(EdgeCulling, CreasesOfAOneWayClusterAreStillTested) {
+    // A box far off: every cluster faces one way, but its 90 degree creases are features.
+    const Scene s(geo::box(glm::vec3(1.0f)));
+    const glm::mat4 mv = glm::lookAt(glm::vec3(4, 3, 5), glm::vec3(0.0f), glm::vec3(0, 1, 0));
+    const Culled c = cull(s, mv, 0.5f, true);
+    EXPECT_EQ(expect_features_kept(s, mv, 0.5f, true, c), 9u);  // 6 silhouette + 3 front creases
+}
+
+TEST(EdgeCulling, AThinOpenSheetKeepsItsBoundaryFromBothSides) {
+    const Scene s(geo::grid(40, 40, 0.1f, 40));  // 4 units, open: both sides drawn, never skipped
+    for (const float y : {3.0f, -3.0f}) {
+        const glm::mat4 mv =
+            glm::lookAt(glm::vec3(0.5f, y, 2.0f), glm::vec3(0.0f), glm::vec3(0, 0, -1));
+        const Culled c = cull(s, mv, -2.0f, false);
+        const std::size_t features = expect_features_kept(s, mv, -2.0f, false, c);
+        EXPECT_EQ(features, 160u);  // the rim: 4 x 40 boundary edges, nothing else
+        // A flat sheet faces one way from anywhere: only the rim is tested.
+        EXPECT_EQ(c.stats.edges_dispatched, features);
+    }
+}
+
+TEST(EdgeCulling, ClustersBeyondTheGuardBandAreDroppedAndTheEdgeOnesKept) {
+    // A strip 200 units long across the view: the guard band clips to twice the frustum, so
+    // a cluster is dropped only when every edge of it lies beyond one of its planes.
+    const Scene s(geo::grid(200, 4, 1.0f, 200));
+    const CullView v = view_of(40.0f);
+    const glm::mat4 mv = glm::lookAt(glm::vec3(0, 30, 30), glm::vec3(0.0f), glm::vec3(0, 1, 0));
+    const Culled c = cull(s, mv, -2.0f, false, v);
+    EXPECT_GT(c.stats.outside_frustum, 0u);
+    EXPECT_LT(c.stats.outside_frustum, c.stats.clusters);
+    // Every edge of a dropped cluster is outside one guard plane at both ends.
+    const glm::dmat4 pmv = glm::dmat4(v.proj) * glm::dmat4(mv);
+    for (std::size_t i = 0; i < s.clusters.edges.size(); ++i) {
+        if (c.dispatched[i]) continue;
+        const geo::MeshEdge& e = s.clusters.edges[i];
+        if (s.clusters.crease_keys[i] == geo::kAlwaysFeatureKey) {
+            const glm::dvec4 pa = pmv * glm::dvec4(glm::dvec3(s.mesh.positions[e.a]), 1.0);
+            const glm::dvec4 pb = pmv * glm::dvec4(glm::dvec3(s.mesh.positions[e.b]), 1.0);
+            const bool beyond =
+                (pa.x > 2 * pa.w && pb.x > 2 * pb.w) || (pa.x < -2 * pa.w && pb.x < -2 * pb.w) ||
+                (pa.y > 2 * pa.w && pb.y > 2 * pb.w) || (pa.y < -2 * pa.w && pb.y < -2 * pb.w) ||
+                (pa.w < 0.1 && pb.w < 0.1);
+            EXPECT_TRUE(beyond) << "boundary edge " << e.id << " dropped inside the guard band";
+        }
+    }
+}
+
+TEST(EdgeCulling, ObjectSpaceEyeAndSign) {
+    const glm::mat4 mv = glm::translate(glm::mat4(1.0f), glm::vec3(1, 2, -5)) *
+                         glm::scale(glm::mat4(1.0f), glm::vec3(2.0f, -1.0f, 1.0f));
+    const glm::vec4 e = object_space_eye(mv);
+    const glm::vec4 back = mv * glm::vec4(glm::vec3(e), 1.0f);
+    EXPECT_NEAR(glm::length(glm::vec3(back)), 0.0f, 1e-5f);
+    EXPECT_EQ(e.w, -1.0f);
+    EXPECT_EQ(object_space_eye(glm::mat4(0.0f)).w, 0.0f);
+}
+
+}  // namespace
+}  // namespace bz::render
