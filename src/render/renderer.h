@@ -1,8 +1,6 @@
 #pragma once
-// The vector-line renderer: one frame is the list of passes
-//   prepass -> [edges -> visibility ->] lines -> hud -> bloom -> [tiles ->] composite
-// for the vector styles (edges and visibility with the compute line method, tiles with the
-// sparse composite), and fill, edges and stroke passes for the others (frame_passes.cpp),
+// The vector-line renderer: one frame is the style's list of passes (frame_passes.cpp), e.g.
+//   prepass -> [edges -> visibility ->] lines -> hud -> bloom -> [tiles ->] composite,
 // each in its own file under src/render/ and timed under its own name.
 #include <memory>
 #include <string>

@@ -83,14 +83,12 @@ struct BeamSettings {
     float intensity_weight = 0.75f;
     float nominal = 0.75f;  // the MAME intensity (0..1) of a line of intensity 1
     float flicker = 0.0f;   // intensity -= intensity * random * flicker, per line
-    // Dwell (after a report on MAME's tracker; docs/sources.md): the beam spends a fixed time on
-    // every vector, so short vectors and dots get more energy per pixel: gain = (length + dwell) /
-    // length, at most dwell_max.
+    // Dwell (beyond MAME, docs/sources.md): the beam spends a fixed time on every vector, so
+    // short vectors and dots get more energy: gain = (length + dwell) / length, <= dwell_max.
     float dwell_px = 0.0f;  // at 1080 lines
     float dwell_max = 1.0f;
-    // Overdrive (after a report on MAME's tracker; docs/sources.md): above MAME intensity 1 the
-    // spot widens and softens instead of clipping: width x (1 + defocus * excess), peak / that
-    // factor.
+    // Overdrive (beyond MAME, docs/sources.md): above MAME intensity 1 the spot widens and
+    // softens instead of clipping: width x (1 + defocus * excess), peak / that factor.
     float defocus = 0.0f;
     // MAME lengthens every vector by 3/8 of the beam's full width at each end
     // (src/emu/video/vector.cpp, "extend vector line by 3/8 beam_width on both sides"): this
@@ -147,8 +145,7 @@ struct RenderSettings {
     // polygonal outline (render --no-smoothing, the smoothing test).
     bool cubic_smoothing = true;
     // Toon and pop-art outlines as one-sided quads (extruded outward from silhouettes and
-    // depth-tested) instead of the styles' centred, spine-tested ones (Castro & Macedo's two
-    // variants).
+    // depth-tested) instead of the centred, spine-tested ones (Castro & Macedo's two variants).
     bool one_sided_outlines = false;
     BeamSettings beam;
     // Composite only the screen tiles that bloom found lit (pass_tiles.cpp); false: every

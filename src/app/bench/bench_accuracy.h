@@ -86,8 +86,7 @@ std::vector<SweepConfig> accuracy_configs();
 // Needs a current GL context.
 AccuracyResult run_accuracy(const AccuracyOptions& options, gl::TimingMethod timing);
 
-// The accuracy goals (mean F1 and worst view per preset, high against balanced) judged on
-// the result.
+// The accuracy goals (mean F1, worst view, high against balanced) judged on the result.
 std::vector<Goal> judge_accuracy_goals(const AccuracyResult& result);
 
 std::string accuracy_json(const BenchMeta& meta, const AccuracyOptions& options,

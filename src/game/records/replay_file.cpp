@@ -5,6 +5,7 @@
 #include <cinttypes>
 #include <cstdio>
 #include <system_error>
+#include <utility>
 
 #include "core/error.h"
 #include "core/io/file_io.h"
@@ -101,6 +102,197 @@ std::string text_value(const LineError& err, std::string_view value, std::size_t
     return std::string(value);
 }
 
+using Fields = std::vector<std::string_view>;
+
+// Reads a replay line by line: the magic line first, then header fields, command runs and
+// state hashes in any order, then 'end'; at the end, checks that nothing is missing.
+class Reader {
+  public:
+    explicit Reader(const std::string& name) : name_(name) {}
+
+    Replay read(std::string_view text) {
+        LineReader lines(text);
+        std::string_view line;
+        while (lines.next(line)) {
+            const LineError err(name_, lines.line_number(), line);
+            const Fields f = fields(line);
+            if (f.empty() || f[0].front() == '#') continue;
+            if (ended_) err.fail_at(f[0], "text after 'end'");
+            if (!magic_) {
+                read_magic(err, f);
+            } else {
+                read_record(err, line, f);
+            }
+        }
+        check_complete(LineError(name_, lines.line_number(), {}));
+        return std::move(r_);
+    }
+
+  private:
+    void read_magic(const LineError& err, const Fields& f) {
+        const std::string_view key = f[0];
+        if (key != kMagic)
+            err.fail_at(key, "not a beamzone replay (expected '" + std::string(kMagic) + " 1')");
+        if (f.size() != 2) err.fail_at(key, "expected '" + std::string(kMagic) + " VERSION'");
+        const int v = err.number<int>(f[1], "format version");
+        if (v != kFormatVersion) {
+            err.fail_at(f[1], "replay format " + std::to_string(v) +
+                                  " is not supported (this build reads " +
+                                  std::to_string(kFormatVersion) + ")");
+        }
+        magic_ = true;
+    }
+
+    // The record's name (f[0]) with exactly n - 1 values after it.
+    static void want(const LineError& err, const Fields& f, std::size_t n) {
+        if (f.size() != n) {
+            err.fail_at(f[0],
+                        "'" + std::string(f[0]) + "' takes " + std::to_string(n - 1) + " value(s)");
+        }
+    }
+
+    void read_record(const LineError& err, std::string_view line, const Fields& f) {
+        const std::string_view key = f[0];
+        if (key == "level") {
+            read_level(err, line, key);
+        } else if (key == "ticks") {
+            read_ticks(err, f);
+        } else if (key == "c") {
+            read_run(err, f);
+        } else if (key == "h") {
+            read_state_check(err, f);
+        } else if (key == "end") {
+            want(err, f, 1);
+            ended_ = true;
+        } else {
+            read_header_value(err, f);
+        }
+    }
+
+    // The one-value header fields.
+    void read_header_value(const LineError& err, const Fields& f) {
+        const std::string_view key = f[0];
+        Header& h = r_.header;
+        if (key == "version") {
+            want(err, f, 2);
+            h.version = text_value(err, f[1], kMaxVersionBytes, "the version");
+        } else if (key == "seed") {
+            want(err, f, 2);
+            h.seed = err.number<std::uint64_t>(f[1], "seed");
+            have_seed_ = true;
+        } else if (key == "level-hash") {
+            want(err, f, 2);
+            h.level_hash = err.number<std::uint64_t>(f[1], "level hash", 16);
+            have_hash_ = true;
+        } else if (key == "lives") {
+            want(err, f, 2);
+            h.lives = err.number<int>(f[1], "lives");
+            if (h.lives < 1 || h.lives > 9) err.fail_at(f[1], "lives must be 1..9");
+        } else if (key == "difficulty") {
+            want(err, f, 2);
+            const auto d = parse_difficulty(f[1]);
+            if (!d) {
+                err.fail_at(f[1], "unknown difficulty '" + printable(f[1]) + "' (one of " +
+                                      std::string(kDifficultyNames) + ")");
+            }
+            h.difficulty = *d;
+        } else if (key == "hash-interval") {
+            want(err, f, 2);
+            h.hash_interval = err.number<int>(f[1], "hash interval");
+            if (h.hash_interval < 1) err.fail_at(f[1], "hash-interval must be at least 1");
+        } else {
+            err.fail_at(key, "unknown record '" + printable(key) + "'");
+        }
+    }
+
+    // The rest of the line: a path may contain spaces.
+    void read_level(const LineError& err, std::string_view line, std::string_view key) {
+        std::string_view rest =
+            line.substr(static_cast<std::size_t>(key.data() - line.data()) + key.size());
+        while (!rest.empty() && (rest.front() == ' ' || rest.front() == '\t'))
+            rest.remove_prefix(1);
+        if (rest.empty()) err.fail_at(key, "'level' needs a path");
+        r_.header.level = text_value(err, rest, kMaxLevelPathBytes, "the level path");
+        have_level_ = true;
+    }
+
+    void read_ticks(const LineError& err, const Fields& f) {
+        want(err, f, 2);
+        if (declared_ticks_) err.fail_at(f[0], "'ticks' given twice");
+        declared_ticks_ = err.number<std::uint64_t>(f[1], "tick count");
+        if (*declared_ticks_ > kMaxTicks) {
+            err.fail_at(f[1], "tick count " + std::to_string(*declared_ticks_) +
+                                  " is over the limit of " + std::to_string(kMaxTicks));
+        }
+        r_.commands.reserve(static_cast<std::size_t>(*declared_ticks_));
+    }
+
+    // 'c COUNT LEFT RIGHT BUTTONS': the same command for COUNT ticks.
+    void read_run(const LineError& err, const Fields& f) {
+        want(err, f, 5);
+        if (!declared_ticks_) err.fail_at(f[0], "'c' before 'ticks'");
+        const auto count = err.number<std::uint64_t>(f[1], "run length");
+        const int left = err.number<int>(f[2], "left tread");
+        const int right = err.number<int>(f[3], "right tread");
+        const auto buttons = err.number<unsigned>(f[4], "buttons", 16);
+        if (count == 0) err.fail_at(f[1], "run length must be at least 1");
+        if (left < -127 || left > 127) err.fail_at(f[2], "tread values must lie in -127..127");
+        if (right < -127 || right > 127) err.fail_at(f[3], "tread values must lie in -127..127");
+        if (buttons > 0xff) err.fail_at(f[4], "buttons must be two hex digits");
+        // Compared as what is left, so a count near 2^64 cannot wrap the sum around.
+        const std::uint64_t room = *declared_ticks_ - r_.commands.size();
+        if (count > room) {
+            err.fail_at(f[1], "run length " + std::to_string(count) +
+                                  " makes more commands than the declared " +
+                                  std::to_string(*declared_ticks_) + " ticks (" +
+                                  std::to_string(room) + " left)");
+        }
+        const PackedCommand c{static_cast<std::int8_t>(left), static_cast<std::int8_t>(right),
+                              static_cast<std::uint8_t>(buttons)};
+        r_.commands.insert(r_.commands.end(), static_cast<std::size_t>(count), c);
+    }
+
+    // 'h TICK HASH': the state hash after TICK.
+    void read_state_check(const LineError& err, const Fields& f) {
+        want(err, f, 3);
+        if (!declared_ticks_) err.fail_at(f[0], "'h' before 'ticks'");
+        StateCheck s;
+        s.tick = err.number<std::uint64_t>(f[1], "tick");
+        s.hash = err.number<std::uint64_t>(f[2], "state hash", 16);
+        if (s.tick == 0) err.fail_at(f[1], "state hashes start at tick 1");
+        // Checked here, not only at the end: it also bounds how many hashes are kept.
+        if (s.tick > *declared_ticks_) {
+            err.fail_at(f[1], "a state hash at tick " + std::to_string(s.tick) +
+                                  " lies past the declared " + std::to_string(*declared_ticks_) +
+                                  " ticks");
+        }
+        if (!r_.checks.empty() && s.tick <= r_.checks.back().tick) {
+            err.fail_at(f[1], "state hash ticks must increase (tick " + std::to_string(s.tick) +
+                                  " after " + std::to_string(r_.checks.back().tick) + ")");
+        }
+        r_.checks.push_back(s);
+    }
+
+    void check_complete(const LineError& at_end) const {
+        if (!magic_) at_end.fail("empty file, not a beamzone replay");
+        if (!ended_) at_end.fail("the replay is cut short (no 'end' line)");
+        if (!have_seed_) at_end.fail("missing 'seed'");
+        if (!have_level_) at_end.fail("missing 'level'");
+        if (!have_hash_) at_end.fail("missing 'level-hash'");
+        if (!declared_ticks_) at_end.fail("missing 'ticks'");
+        if (r_.commands.size() != *declared_ticks_) {
+            at_end.fail("'ticks' says " + std::to_string(*declared_ticks_) +
+                        " but the file holds " + std::to_string(r_.commands.size()) + " commands");
+        }
+    }
+
+    const std::string& name_;
+    Replay r_;
+    bool magic_ = false, have_seed_ = false, have_level_ = false, have_hash_ = false;
+    bool ended_ = false;
+    std::optional<std::uint64_t> declared_ticks_;
+};
+
 }  // namespace
 
 std::string serialise(const Replay& r) {
@@ -130,142 +322,7 @@ std::string serialise(const Replay& r) {
 }
 
 Replay parse(std::string_view text, const std::string& name) {
-    Replay r;
-    bool magic = false, have_seed = false, have_level = false, have_hash = false, ended = false;
-    std::optional<std::uint64_t> declared_ticks;
-    LineReader lines(text);
-    std::string_view line;
-    while (lines.next(line)) {
-        const LineError err(name, lines.line_number(), line);
-        const auto f = fields(line);
-        if (f.empty() || f[0].front() == '#') continue;
-        if (ended) err.fail_at(f[0], "text after 'end'");
-        const std::string_view key = f[0];
-        if (!magic) {
-            if (key != kMagic)
-                err.fail_at(key,
-                            "not a beamzone replay (expected '" + std::string(kMagic) + " 1')");
-            if (f.size() != 2) err.fail_at(key, "expected '" + std::string(kMagic) + " VERSION'");
-            const int v = err.number<int>(f[1], "format version");
-            if (v != kFormatVersion) {
-                err.fail_at(f[1], "replay format " + std::to_string(v) +
-                                      " is not supported (this build reads " +
-                                      std::to_string(kFormatVersion) + ")");
-            }
-            magic = true;
-            continue;
-        }
-        auto want = [&](std::size_t n) {
-            if (f.size() != n) {
-                err.fail_at(
-                    key, "'" + std::string(key) + "' takes " + std::to_string(n - 1) + " value(s)");
-            }
-        };
-        if (key == "version") {
-            want(2);
-            r.header.version = text_value(err, f[1], kMaxVersionBytes, "the version");
-        } else if (key == "seed") {
-            want(2);
-            r.header.seed = err.number<std::uint64_t>(f[1], "seed");
-            have_seed = true;
-        } else if (key == "level") {
-            // The rest of the line: a path may contain spaces.
-            std::string_view rest =
-                line.substr(static_cast<std::size_t>(key.data() - line.data()) + key.size());
-            while (!rest.empty() && (rest.front() == ' ' || rest.front() == '\t'))
-                rest.remove_prefix(1);
-            if (rest.empty()) err.fail_at(key, "'level' needs a path");
-            r.header.level = text_value(err, rest, kMaxLevelPathBytes, "the level path");
-            have_level = true;
-        } else if (key == "level-hash") {
-            want(2);
-            r.header.level_hash = err.number<std::uint64_t>(f[1], "level hash", 16);
-            have_hash = true;
-        } else if (key == "lives") {
-            want(2);
-            r.header.lives = err.number<int>(f[1], "lives");
-            if (r.header.lives < 1 || r.header.lives > 9) err.fail_at(f[1], "lives must be 1..9");
-        } else if (key == "difficulty") {
-            want(2);
-            const auto d = parse_difficulty(f[1]);
-            if (!d) {
-                err.fail_at(f[1], "unknown difficulty '" + printable(f[1]) + "' (one of " +
-                                      std::string(kDifficultyNames) + ")");
-            }
-            r.header.difficulty = *d;
-        } else if (key == "hash-interval") {
-            want(2);
-            r.header.hash_interval = err.number<int>(f[1], "hash interval");
-            if (r.header.hash_interval < 1) err.fail_at(f[1], "hash-interval must be at least 1");
-        } else if (key == "ticks") {
-            want(2);
-            if (declared_ticks) err.fail_at(key, "'ticks' given twice");
-            declared_ticks = err.number<std::uint64_t>(f[1], "tick count");
-            if (*declared_ticks > kMaxTicks) {
-                err.fail_at(f[1], "tick count " + std::to_string(*declared_ticks) +
-                                      " is over the limit of " + std::to_string(kMaxTicks));
-            }
-            r.commands.reserve(static_cast<std::size_t>(*declared_ticks));
-        } else if (key == "c") {
-            want(5);
-            if (!declared_ticks) err.fail_at(key, "'c' before 'ticks'");
-            const auto count = err.number<std::uint64_t>(f[1], "run length");
-            const int left = err.number<int>(f[2], "left tread");
-            const int right = err.number<int>(f[3], "right tread");
-            const auto buttons = err.number<unsigned>(f[4], "buttons", 16);
-            if (count == 0) err.fail_at(f[1], "run length must be at least 1");
-            if (left < -127 || left > 127) err.fail_at(f[2], "tread values must lie in -127..127");
-            if (right < -127 || right > 127)
-                err.fail_at(f[3], "tread values must lie in -127..127");
-            if (buttons > 0xff) err.fail_at(f[4], "buttons must be two hex digits");
-            // Compared as what is left, so a count near 2^64 cannot wrap the sum around.
-            const std::uint64_t room = *declared_ticks - r.commands.size();
-            if (count > room) {
-                err.fail_at(f[1], "run length " + std::to_string(count) +
-                                      " makes more commands than the declared " +
-                                      std::to_string(*declared_ticks) + " ticks (" +
-                                      std::to_string(room) + " left)");
-            }
-            const PackedCommand c{static_cast<std::int8_t>(left), static_cast<std::int8_t>(right),
-                                  static_cast<std::uint8_t>(buttons)};
-            r.commands.insert(r.commands.end(), static_cast<std::size_t>(count), c);
-        } else if (key == "h") {
-            want(3);
-            if (!declared_ticks) err.fail_at(key, "'h' before 'ticks'");
-            StateCheck s;
-            s.tick = err.number<std::uint64_t>(f[1], "tick");
-            s.hash = err.number<std::uint64_t>(f[2], "state hash", 16);
-            if (s.tick == 0) err.fail_at(f[1], "state hashes start at tick 1");
-            // Checked here, not only at the end: it also bounds how many hashes are kept.
-            if (s.tick > *declared_ticks) {
-                err.fail_at(f[1], "a state hash at tick " + std::to_string(s.tick) +
-                                      " lies past the declared " + std::to_string(*declared_ticks) +
-                                      " ticks");
-            }
-            if (!r.checks.empty() && s.tick <= r.checks.back().tick) {
-                err.fail_at(f[1], "state hash ticks must increase (tick " + std::to_string(s.tick) +
-                                      " after " + std::to_string(r.checks.back().tick) + ")");
-            }
-            r.checks.push_back(s);
-        } else if (key == "end") {
-            want(1);
-            ended = true;
-        } else {
-            err.fail_at(key, "unknown record '" + printable(key) + "'");
-        }
-    }
-    const LineError at_end(name, lines.line_number(), {});
-    if (!magic) at_end.fail("empty file, not a beamzone replay");
-    if (!ended) at_end.fail("the replay is cut short (no 'end' line)");
-    if (!have_seed) at_end.fail("missing 'seed'");
-    if (!have_level) at_end.fail("missing 'level'");
-    if (!have_hash) at_end.fail("missing 'level-hash'");
-    if (!declared_ticks) at_end.fail("missing 'ticks'");
-    if (r.commands.size() != *declared_ticks) {
-        at_end.fail("'ticks' says " + std::to_string(*declared_ticks) + " but the file holds " +
-                    std::to_string(r.commands.size()) + " commands");
-    }
-    return r;
+    return Reader(name).read(text);
 }
 
 Replay load(const std::filesystem::path& file) {

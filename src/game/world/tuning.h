@@ -35,6 +35,49 @@ inline constexpr double kTankHeight = 1.6;
 inline constexpr double kEngageDistance = 55.0;  // starts aiming and firing from here
 inline constexpr double kAimToleranceDeg = 2.5;  // fires when its gun points this close
 
+// How an enemy tank hunts (game/world/world_enemies.cpp). A slow tank is this much less
+// aggressive than the level's aggression says; a super tank is as aggressive.
+inline constexpr double kSlowTankAggression = 0.8;
+// Approach: come in at up to this angle off the direct line, straightening up from this distance
+// in, for a random stretch of these many ticks.
+inline constexpr double kApproachOffsetDeg = 40.0;
+inline constexpr double kApproachStraightenDistance = 80.0;
+inline constexpr int kApproachMinTicks = 120;
+inline constexpr int kApproachMaxTicks = 300;
+// Attack: hold off at shooting range rather than close in (a shell from afar can miss): half
+// speed beyond kHoldOffFar, still between the two, backing off inside kHoldOffNear. Beyond
+// kEngageDistance times kDisengageFactor the tank approaches again.
+inline constexpr int kAttackMinTicks = 180;
+inline constexpr int kAttackMaxTicks = 420;
+inline constexpr double kHoldOffFar = 40.0;
+inline constexpr double kHoldOffNear = 20.0;
+inline constexpr double kHoldOffFarThrottle = 0.5;
+inline constexpr double kHoldOffNearThrottle = -0.4;
+inline constexpr double kDisengageFactor = 1.4;
+// At the end of an attack stretch a tank evades (turns this far off the player) with chance
+// 1 - kEvadeAggressionWeight * aggression, else it attacks on.
+inline constexpr double kEvadeAggressionWeight = 0.6;
+inline constexpr double kEvadeTurnDeg = 100.0;
+inline constexpr int kEvadeMinTicks = 60;
+inline constexpr int kEvadeMaxTicks = 150;
+// A careful tank dodges (turns this far) when the player's gun is within kDodgeAimDeg of it,
+// with this chance per tick at aggression 0 (none at 1).
+inline constexpr double kDodgeAimDeg = 3.0;
+inline constexpr double kDodgeChancePerTick = 0.015;
+inline constexpr double kDodgeTurnDeg = 90.0;
+inline constexpr int kDodgeMinTicks = 50;
+inline constexpr int kDodgeMaxTicks = 100;
+// Blocked by an obstacle, a tank detours this far off its heading for a while.
+inline constexpr double kDetourTurnDeg = 90.0;
+inline constexpr int kDetourMinTicks = 40;
+inline constexpr int kDetourMaxTicks = 90;
+// It turns on the spot while its goal lies further than this off its nose.
+inline constexpr double kTurnOnTheSpotDeg = 60.0;
+// Reload after a shot: the level's fire interval times (kReloadBase + kReloadCalm * calm),
+// calm = 1 - aggression, plus up to a second at random.
+inline constexpr double kReloadBase = 0.75;
+inline constexpr double kReloadCalm = 0.5;
+
 // The guided missile.
 inline constexpr double kMissileSpeed = 16.0;
 inline constexpr double kMissileTurnDeg = 150.0;

@@ -108,6 +108,17 @@ class World {
     void step_player(const PackedCommand& cmd);
     void step_hostile();
     void step_tank(Hostile& h);
+    // The parts of step_tank: where the tank heads and how fast (its mode's course, which may
+    // switch mode); a dodge when the player's gun is on it; a step forward, or a detour when
+    // blocked; a shot when its gun is on the player.
+    struct TankCourse {
+        double yaw = 0.0;
+        double throttle = 1.0;  // of full speed; negative backs off
+    };
+    TankCourse tank_course(Hostile& h, double dist, double face_player, double aggression);
+    void tank_dodge(Hostile& h, glm::dvec2 to_player, double aggression);
+    void tank_drive(Hostile& h, double speed);
+    void tank_fire(Hostile& h, double dist, double face_player, double aggression);
     void step_missile(Hostile& h);
     void step_saucer();
     void step_shells();

@@ -133,8 +133,8 @@ void World::place_hostile(HostileKind kind, glm::dvec2 position, double yaw) {
     h.fire_cooldown = seconds_to_ticks(rules_.fire_interval * (2.0 + calm)) +
                       ticks_between(cur_.rng, 0, tuning::kTicksPerSecond);
     h.mode = TankMode::approach;
-    h.mode_ticks = ticks_between(cur_.rng, 120, 300);
-    h.mode_yaw = deg(cur_.rng.uniform(-40.0, 40.0));
+    h.mode_ticks = ticks_between(cur_.rng, tuning::kApproachMinTicks, tuning::kApproachMaxTicks);
+    h.mode_yaw = deg(cur_.rng.uniform(-tuning::kApproachOffsetDeg, tuning::kApproachOffsetDeg));
     h.weave_phase = cur_.rng.uniform(0.0, 2.0 * kPi);
     cur_.hostile = h;
     events_.push_back(SoundEvent::warning);
@@ -160,7 +160,8 @@ void World::step_tank(Hostile& h) {
     const bool super = h.kind == HostileKind::super_tank;
     const double speed = super ? tuning::kSuperTankSpeed : tuning::kTankSpeed;
     const double turn = deg(super ? tuning::kSuperTankTurnDeg : tuning::kTankTurnDeg) * tuning::kDt;
-    const double aggression = std::clamp(rules_.aggression, 0.0, 1.0) * (super ? 1.0 : 0.8);
+    const double aggression =
+        std::clamp(rules_.aggression, 0.0, 1.0) * (super ? 1.0 : tuning::kSlowTankAggression);
 
     const glm::dvec2 to_player = field_.delta(ground(t.position), player_ground());
     const double dist = glm::length(to_player);
@@ -168,96 +169,112 @@ void World::step_tank(Hostile& h) {
     if (h.fire_cooldown > 0) --h.fire_cooldown;
     if (h.mode_ticks > 0) --h.mode_ticks;
 
-    double target = face_player;
-    double throttle = 1.0;
+    TankCourse course = tank_course(h, dist, face_player, aggression);
+    tank_dodge(h, to_player, aggression);
+    const double err = turn_towards(t.yaw, course.yaw, turn);
+    if (std::abs(err) > deg(tuning::kTurnOnTheSpotDeg)) course.throttle = 0.0;
+    if (course.throttle != 0.0) tank_drive(h, speed * course.throttle);
+    tank_fire(h, dist, face_player, aggression);
+}
+
+World::TankCourse World::tank_course(Hostile& h, double dist, double face_player,
+                                     double aggression) {
+    using namespace tuning;
+    TankCourse course{face_player, 1.0};
     switch (h.mode) {
         case TankMode::approach:
             // Come in at an angle rather than head on, less so when close.
-            target = face_player + h.mode_yaw * std::clamp(dist / 80.0, 0.0, 1.0);
-            if (dist < tuning::kEngageDistance) {
+            course.yaw =
+                face_player + h.mode_yaw * std::clamp(dist / kApproachStraightenDistance, 0.0, 1.0);
+            if (dist < kEngageDistance) {
                 h.mode = TankMode::attack;
-                h.mode_ticks = ticks_between(cur_.rng, 180, 420);
+                h.mode_ticks = ticks_between(cur_.rng, kAttackMinTicks, kAttackMaxTicks);
             } else if (h.mode_ticks == 0) {
-                h.mode_ticks = ticks_between(cur_.rng, 120, 300);
-                h.mode_yaw = deg(cur_.rng.uniform(-40.0, 40.0));
+                h.mode_ticks = ticks_between(cur_.rng, kApproachMinTicks, kApproachMaxTicks);
+                h.mode_yaw = deg(cur_.rng.uniform(-kApproachOffsetDeg, kApproachOffsetDeg));
             }
             break;
-        case TankMode::attack: {
-            target = face_player;
-            // Hold off at shooting range rather than close in: a shell from afar can miss.
-            throttle = dist > 40.0 ? 0.5 : (dist < 20.0 ? -0.4 : 0.0);
-            if (dist > tuning::kEngageDistance * 1.4) {
+        case TankMode::attack:
+            course.throttle = dist > kHoldOffFar    ? kHoldOffFarThrottle
+                              : dist < kHoldOffNear ? kHoldOffNearThrottle
+                                                    : 0.0;
+            if (dist > kEngageDistance * kDisengageFactor) {
                 h.mode = TankMode::approach;
-                h.mode_ticks = ticks_between(cur_.rng, 120, 300);
+                h.mode_ticks = ticks_between(cur_.rng, kApproachMinTicks, kApproachMaxTicks);
             } else if (h.mode_ticks == 0) {
-                if (cur_.rng.uniform() < 1.0 - 0.6 * aggression) {
+                if (cur_.rng.uniform() < 1.0 - kEvadeAggressionWeight * aggression) {
                     h.mode = TankMode::evade;
-                    h.mode_ticks = ticks_between(cur_.rng, 60, 150);
-                    h.mode_yaw = face_player + (cur_.rng.below(2) == 0 ? 1.0 : -1.0) * deg(100.0);
+                    h.mode_ticks = ticks_between(cur_.rng, kEvadeMinTicks, kEvadeMaxTicks);
+                    h.mode_yaw =
+                        face_player + (cur_.rng.below(2) == 0 ? 1.0 : -1.0) * deg(kEvadeTurnDeg);
                 } else {
-                    h.mode_ticks = ticks_between(cur_.rng, 180, 420);
+                    h.mode_ticks = ticks_between(cur_.rng, kAttackMinTicks, kAttackMaxTicks);
                 }
             }
             break;
-        }
         case TankMode::evade:
         case TankMode::detour:
-            target = h.mode_yaw;
+            course.yaw = h.mode_yaw;
             if (h.mode_ticks == 0) {
                 h.mode = TankMode::approach;
-                h.mode_ticks = ticks_between(cur_.rng, 120, 300);
-                h.mode_yaw = deg(cur_.rng.uniform(-40.0, 40.0));
+                h.mode_ticks = ticks_between(cur_.rng, kApproachMinTicks, kApproachMaxTicks);
+                h.mode_yaw = deg(cur_.rng.uniform(-kApproachOffsetDeg, kApproachOffsetDeg));
             }
             break;
     }
+    return course;
+}
 
-    // A careful tank dodges when it sees the player's gun on it.
+void World::tank_dodge(Hostile& h, glm::dvec2 to_player, double aggression) {
+    using namespace tuning;
     const double yaw_p = cur_.player.body.transform.yaw;
     const double player_aim = wrap_angle(yaw_of(-to_player) - yaw_p);
-    if (h.mode == TankMode::attack && std::abs(player_aim) < deg(3.0) &&
-        cur_.rng.uniform() < 0.015 * (1.0 - aggression)) {
+    if (h.mode == TankMode::attack && std::abs(player_aim) < deg(kDodgeAimDeg) &&
+        cur_.rng.uniform() < kDodgeChancePerTick * (1.0 - aggression)) {
         h.mode = TankMode::evade;
-        h.mode_ticks = ticks_between(cur_.rng, 50, 100);
-        h.mode_yaw = t.yaw + (cur_.rng.below(2) == 0 ? 1.0 : -1.0) * deg(90.0);
+        h.mode_ticks = ticks_between(cur_.rng, kDodgeMinTicks, kDodgeMaxTicks);
+        h.mode_yaw =
+            h.body.transform.yaw + (cur_.rng.below(2) == 0 ? 1.0 : -1.0) * deg(kDodgeTurnDeg);
     }
+}
 
-    const double err = turn_towards(t.yaw, target, turn);
-    // Turn on the spot first when the target lies well off the nose.
-    if (std::abs(err) > deg(60.0)) throttle = 0.0;
-
-    if (throttle != 0.0) {
-        const glm::dvec3 fwd = t.forward();
-        const glm::dvec2 next =
-            ground(t.position) + glm::dvec2(fwd.x, fwd.z) * (speed * throttle * tuning::kDt);
-        if (blocked(next, tuning::kTankRadius, false)) {
-            const bool by_player = field_.distance(next, player_ground()) <
-                                   tuning::kTankRadius + tuning::kPlayerRadius;
-            if (!by_player && h.mode != TankMode::detour) {
-                h.mode = TankMode::detour;
-                h.mode_ticks = ticks_between(cur_.rng, 40, 90);
-                h.mode_yaw = t.yaw + (cur_.rng.below(2) == 0 ? 1.0 : -1.0) * deg(90.0);
-            }
-        } else {
-            const glm::dvec2 w = field_.wrap(next);
-            t.position.x = w.x;
-            t.position.z = w.y;
+void World::tank_drive(Hostile& h, double speed) {
+    using namespace tuning;
+    scene::Transform& t = h.body.transform;
+    const glm::dvec3 fwd = t.forward();
+    const glm::dvec2 next = ground(t.position) + glm::dvec2(fwd.x, fwd.z) * (speed * kDt);
+    if (blocked(next, kTankRadius, false)) {
+        const bool by_player = field_.distance(next, player_ground()) < kTankRadius + kPlayerRadius;
+        if (!by_player && h.mode != TankMode::detour) {
+            h.mode = TankMode::detour;
+            h.mode_ticks = ticks_between(cur_.rng, kDetourMinTicks, kDetourMaxTicks);
+            h.mode_yaw = t.yaw + (cur_.rng.below(2) == 0 ? 1.0 : -1.0) * deg(kDetourTurnDeg);
         }
+    } else {
+        const glm::dvec2 w = field_.wrap(next);
+        t.position.x = w.x;
+        t.position.z = w.y;
     }
+}
 
+void World::tank_fire(Hostile& h, double dist, double face_player, double aggression) {
+    using namespace tuning;
     // Fire when the gun is on the player, within range, with no shell of its own in flight.
-    const bool aimed = std::abs(wrap_angle(face_player - t.yaw)) < deg(tuning::kAimToleranceDeg);
+    const bool aimed =
+        std::abs(wrap_angle(face_player - h.body.transform.yaw)) < deg(kAimToleranceDeg);
     const bool own_shell = std::any_of(cur_.shells.begin(), cur_.shells.end(),
                                        [](const Shell& s) { return !s.from_player; });
     const bool may_fire = !rules_.hold_fire || h.provoked;
     if (may_fire && h.mode == TankMode::attack && aimed && h.fire_cooldown == 0 && !own_shell &&
-        dist < tuning::kEnemyShellRange) {
+        dist < kEnemyShellRange) {
         const double error = deg(std::max(0.0, rules_.aim_error_deg));
-        fire_shell(h.body, false, tuning::kEnemyShellSpeed, tuning::kEnemyShellRange,
+        fire_shell(h.body, false, kEnemyShellSpeed, kEnemyShellRange,
                    cur_.rng.uniform(-error, error));
         events_.push_back(SoundEvent::enemy_shot);
         const double calm = 1.0 - aggression;
-        h.fire_cooldown = seconds_to_ticks(rules_.fire_interval * (0.75 + 0.5 * calm)) +
-                          ticks_between(cur_.rng, 0, tuning::kTicksPerSecond);
+        h.fire_cooldown =
+            seconds_to_ticks(rules_.fire_interval * (kReloadBase + kReloadCalm * calm)) +
+            ticks_between(cur_.rng, 0, kTicksPerSecond);
     }
 }
 
