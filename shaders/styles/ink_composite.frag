@@ -1,11 +1,38 @@
 #version 450 core
 // Filled styles: the canvas (paper, fills, ink) is already display-referred; the HUD lines
-// (HDR, from the lines target) go on top, tone-mapped like the vector composite and laid over
-// the paper by their own strength, so green radar and score stay readable on light paper.
+// (HDR, from the lines target) go on top by their own strength.
+// With the style's ink HUD theme (scene::HudTheme) each HUD line is drawn as ink in its own
+// hue, darkened to at most u_ink_luminance (relative luminance), over a paper-toned halo
+// u_halo_px wide: text and notices then keep their contrast on light paper and over the fills
+// and strokes behind them. Without it, the HUD's tone-mapped colour goes over the paper.
 in vec2 v_uv;
 uniform sampler2D u_canvas;
 uniform sampler2D u_lines;
+uniform bool u_ink;
+uniform float u_ink_luminance;
+uniform float u_halo_px;
+uniform vec3 u_paper;  // display-referred paper tone, the halo's colour
 layout(location = 0) out vec4 o_color;
+
+const vec3 kLuminance = vec3(0.2126, 0.7152, 0.0722);
+
+float coverage(vec3 hud) {
+    return 1.0 - exp(-max(max(hud.r, hud.g), hud.b));
+}
+
+// The halo: the HUD's strongest coverage on two rings around the pixel (bilinear taps).
+float halo_coverage(ivec2 p) {
+    vec2 size = vec2(textureSize(u_lines, 0));
+    vec2 c = (vec2(p) + 0.5) / size;
+    float h = 0.0;
+    for (int i = 0; i < 8; ++i) {
+        float a = float(i) * 0.78539816;
+        vec2 d = vec2(cos(a), sin(a));
+        h = max(h, coverage(textureLod(u_lines, c + d * u_halo_px / size, 0.0).rgb));
+        h = max(h, coverage(textureLod(u_lines, c + d * 0.5 * u_halo_px / size, 0.0).rgb));
+    }
+    return h;
+}
 
 void main() {
     ivec2 p = ivec2(gl_FragCoord.xy);
@@ -13,6 +40,17 @@ void main() {
     vec3 hud = texelFetch(u_lines, p, 0).rgb;
     float peak = max(max(hud.r, hud.g), hud.b);
     float a = 1.0 - exp(-peak);
-    vec3 hud_colour = peak > 1e-6 ? pow(hud / peak, vec3(1.0 / 2.2)) * 0.8 : vec3(0.0);
-    o_color = vec4(mix(paper, hud_colour, a), 1.0);
+    if (!u_ink) {
+        vec3 hud_colour = peak > 1e-6 ? pow(hud / peak, vec3(1.0 / 2.2)) * 0.8 : vec3(0.0);
+        o_color = vec4(mix(paper, hud_colour, a), 1.0);
+        return;
+    }
+    float halo = min(1.0, 2.0 * halo_coverage(p));
+    vec3 under = mix(paper, u_paper, max(halo, a));
+    vec3 hue = peak > 1e-6 ? hud / peak : vec3(0.0);
+    float lum = dot(hue, kLuminance);
+    vec3 ink = hue * min(1.0, u_ink_luminance / max(lum, 1e-4));
+    // Ink covers fully from a little coverage on: thin text stays dark, not a faint tint.
+    float ink_a = min(1.0, 4.0 * a);
+    o_color = vec4(mix(under, pow(ink, vec3(1.0 / 2.2)), ink_a), 1.0);
 }

@@ -230,7 +230,8 @@ bool parse_vsync(std::string_view text, Vsync* out) {
 }
 
 SettingsLoad parse_settings(std::string_view text, const std::string& source,
-                            std::span<const std::string> presets) {
+                            const SettingsChoices& choices) {
+    const std::span<const std::string> presets = choices.presets;
     SettingsLoad out;
     out.file_existed = true;
     if (const auto unsafe = unsafe_toml(text, source)) {
@@ -265,11 +266,8 @@ SettingsLoad parse_settings(std::string_view text, const std::string& source,
         s.preset = presets[static_cast<std::size_t>(i)];
         out.preset_given = true;
     }
-    // scene::accepted_style_names(); platform may not link scene (tests/app checks they match).
-    const std::string styles[] = {"vector",  "vector-xray", "toon",     "sketch",
-                                  "pop-art", "halo",        "occluded", "arcade"};
-    if (const int i = r.choice(t, "style", styles, s.style); i >= 0) {
-        s.style = styles[i];
+    if (const int i = r.choice(t, "style", choices.styles, s.style); i >= 0) {
+        s.style = choices.styles[static_cast<std::size_t>(i)];
         out.style_given = true;
     }
     const std::string beams[] = {"mame", "classic"};
@@ -297,8 +295,7 @@ SettingsLoad parse_settings(std::string_view text, const std::string& source,
     return out;
 }
 
-SettingsLoad load_settings(const std::filesystem::path& file,
-                           std::span<const std::string> presets) {
+SettingsLoad load_settings(const std::filesystem::path& file, const SettingsChoices& choices) {
     std::error_code ec;
     if (!std::filesystem::exists(file, ec)) return {};
     std::string text;
@@ -310,7 +307,7 @@ SettingsLoad load_settings(const std::filesystem::path& file,
         out.errors.push_back(std::string(e.what()) + "; using default settings");
         return out;
     }
-    return parse_settings(text, file.string(), presets);
+    return parse_settings(text, file.string(), choices);
 }
 
 std::string format_settings(const Settings& s) {

@@ -47,10 +47,16 @@ struct SettingsLoad {
     bool may_save() const { return errors.empty(); }
 };
 
-// `presets` lists the valid values of `preset` (the renderer's names).
+// The valid values of the keys whose names belong to other modules: `preset` (the renderer's
+// presets) and `style` (the style table, scene/style.h, which platform may not link).
+struct SettingsChoices {
+    std::span<const std::string> presets;
+    std::span<const std::string> styles;
+};
+
 SettingsLoad parse_settings(std::string_view toml_text, const std::string& source_name,
-                            std::span<const std::string> presets);
-SettingsLoad load_settings(const std::filesystem::path& file, std::span<const std::string> presets);
+                            const SettingsChoices& choices);
+SettingsLoad load_settings(const std::filesystem::path& file, const SettingsChoices& choices);
 
 std::string format_settings(const Settings& s);  // a commented TOML document
 void save_settings(const std::filesystem::path& file, const Settings& s);  // atomic

@@ -6,6 +6,7 @@
 #include "core/error.h"
 #include "gl/driver.h"
 #include "render/frame_passes.h"
+#include "render/styles/palette.h"
 
 namespace bz::render {
 
@@ -46,6 +47,9 @@ struct Renderer::Impl {
     // texture), and when that frame was shown, for phosphor decay and frame holding.
     const gl::Texture2D* last_picture = nullptr;
     double last_time_s = 0.0;
+    // The phosphor and glow history hold nothing (cleared, or new targets): forget_history()
+    // need not clear them again (a filled style forgets every frame).
+    bool history_blank = true;
     // Whether the last frame filled the edge buffer. A frame the geometry shader drew under
     // LineMethod::automatic leaves it as an older frame filled it: its kept counts are stale.
     bool edges_filled_last_frame = false;
@@ -90,7 +94,19 @@ struct Renderer::Impl {
 
     FrameBatches prepare(const scene::FrameList& frame, const scene::MeshLibrary& meshes,
                          const CameraMatrices& cam) {
-        FrameBatches b = build_batches(frame, meshes, cam, settings, height);
+        // A style with its own palette recolours the objects (enemies, shells, wrecks ...).
+        const scene::Palette& palette = style_of(frame).palette;
+        scene::FrameList recoloured;
+        if (palette.remap) {
+            recoloured.camera = frame.camera;
+            recoloured.items = frame.items;
+            recoloured.style = frame.style;
+            recoloured.view_top = frame.view_top;
+            for (scene::DrawItem& item : recoloured.items)
+                item.color = palette_colour(palette, item.color);
+        }
+        FrameBatches b =
+            build_batches(palette.remap ? recoloured : frame, meshes, cam, settings, height);
         instances.set(std::span<const InstanceData>(b.instances), GL_STREAM_DRAW);
         // Far objects may draw a simplified mesh: count what is really submitted.
         b.stats.triangles_submitted = 0;
@@ -114,6 +130,20 @@ struct Renderer::Impl {
         const bool fills = fills_edges(style, frame_settings);
         if (fills && !edges_filled_last_frame) edges.forget_previous();
         edges_filled_last_frame = fills;
+    }
+
+    // A picture without a past (new targets, a frame after one with no beam picture, or
+    // RenderSettings::keep_history off): the phosphor and the glow start from black, so nothing
+    // an earlier frame lit can linger in it.
+    void forget_history() {
+        last_picture = nullptr;
+        targets.glow_history_valid = false;
+        if (history_blank) return;  // nothing drew into it since it was last cleared
+        history_blank = true;
+        if (targets.phosphor.id() != 0)
+            glClearTexImage(targets.phosphor.id(), 0, GL_RGBA, GL_FLOAT, nullptr);
+        if (targets.picture_lit.id() != 0)
+            glClearTexImage(targets.picture_lit.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_BYTE, nullptr);
     }
 
     GLsizei upload_hud(const std::vector<scene::HudLine>& hud) {
@@ -142,6 +172,7 @@ void Renderer::resize(int width, int height) {
     impl_->height = height;
     impl_->targets = make_targets(width, height, impl_->settings);
     impl_->last_picture = nullptr;
+    impl_->history_blank = true;
 }
 
 void Renderer::set_settings(const RenderSettings& settings) {
@@ -163,6 +194,7 @@ void Renderer::set_settings(const RenderSettings& settings) {
     if (remake) {
         impl_->targets = make_targets(impl_->width, impl_->height, settings);
         impl_->last_picture = nullptr;
+        impl_->history_blank = true;
     }
 }
 
@@ -187,6 +219,7 @@ void Renderer::render(const scene::FrameList& frame, const scene::MeshLibrary& m
                       unsigned target_fbo) {
     Impl& m = *impl_;
     const GLuint held_target = target_fbo == kOffscreen ? m.targets.output_fbo.id() : target_fbo;
+    if (!m.settings.keep_history) m.last_picture = nullptr;
     if (m.last_picture && same_refresh(m.settings.beam.refresh_hz, frame.time_s, m.last_time_s)) {
         // The original machine redrew at ~41 Hz: hold the last picture, only show it again.
         m.last_target = held_target;
@@ -214,7 +247,7 @@ void Renderer::render(const scene::FrameList& frame, const scene::MeshLibrary& m
     m.stats.line_method = m.frame_settings.method;
     const GLuint target = target_fbo == kOffscreen ? m.targets.output_fbo.id() : target_fbo;
     m.last_target = target;
-    // The first picture after new targets has no past: its history is black either way.
+    if (!m.last_picture) m.forget_history();
     FramePicture picture{
         &m.targets.lines, m.last_picture ? frame.time_s - m.last_time_s : 0.0, false, {}};
     const PassContext ctx =
@@ -232,6 +265,7 @@ void Renderer::render(const scene::FrameList& frame, const scene::MeshLibrary& m
     m.stats.feature_edges = m.edge_counter.end_frame();
     // Only the beam styles' pictures can be held and shown again (pass_composite).
     m.last_picture = style.fill == FillPass::none ? picture.texture : nullptr;
+    if (picture.phosphor) m.history_blank = false;
     m.last_time_s = frame.time_s;
 }
 

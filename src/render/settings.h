@@ -148,6 +148,9 @@ struct RenderSettings {
     // depth-tested) instead of the centred, spine-tested ones (Castro & Macedo's two variants).
     bool one_sided_outlines = false;
     BeamSettings beam;
+    // false: every frame starts without a past (phosphor and glow from black, no held frame),
+    // so nothing trails whatever the beam look: the --edit viewer.
+    bool keep_history = true;
     // Composite only the screen tiles that bloom found lit (pass_tiles.cpp); false: every
     // pixel (the same picture, for comparing).
     bool sparse_composite = true;
@@ -159,6 +162,11 @@ const std::vector<std::string>& preset_names();
 
 // "classic" or "mame"; throws UserError naming the valid ones otherwise.
 BeamSettings beam_look(std::string_view name);
+// The beam look `play`, `render` and `bench` use when nothing names one. `mame`: it is what
+// the game ships and the player sees, so a still frame from `render` and a `bench` run show
+// and time the player's picture (a first frame has no phosphor past, so `render` stays one
+// deterministic picture); `--beam classic` keeps the cheaper, plainer look.
+inline constexpr std::string_view kDefaultBeamLook = "mame";
 const std::vector<std::string>& beam_look_names();
 
 }  // namespace bz::render

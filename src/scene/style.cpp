@@ -1,58 +1,40 @@
 #include "scene/style.h"
 
 #include <algorithm>
-#include <array>
+
+#include "scene/style_table.h"
 
 namespace bz::scene {
-
-namespace {
-
-struct Named {
-    std::string_view name;
-    Style style;
-};
-
-// Canonical names first; the old ones after, so style_name() finds the canonical one.
-constexpr std::array<Named, 8> kNames = {{{"vector", Style::vector},
-                                          {"vector-xray", Style::vector_xray},
-                                          {"toon", Style::toon},
-                                          {"sketch", Style::sketch},
-                                          {"pop-art", Style::pop_art},
-                                          {"halo", Style::halo},
-                                          {"occluded", Style::vector},
-                                          {"arcade", Style::vector_xray}}};
-constexpr std::size_t kCanonical = 6;
-
-}  // namespace
 
 const std::vector<Style>& all_styles() {
     static const std::vector<Style> styles = [] {
         std::vector<Style> s;
-        for (std::size_t i = 0; i < kCanonical; ++i) s.push_back(kNames[i].style);
+        for (int i = 0; i <= static_cast<int>(kLastStyle); ++i) s.push_back(static_cast<Style>(i));
         return s;
     }();
     return styles;
 }
 
 std::string_view style_name(Style s) {
-    for (const Named& n : kNames) {
-        if (n.style == s) return n.name;
-    }
-    return "vector";
+    return style_entry(s).name;
 }
 
 std::optional<Style> style_from_name(std::string_view name) {
-    for (const Named& n : kNames) {
-        if (n.name == name) return n.style;
+    if (name.empty()) return std::nullopt;
+    for (const Style s : all_styles()) {
+        const StyleEntry e = style_entry(s);
+        if (e.name == name) return s;
+        if (std::find(e.aliases.begin(), e.aliases.end(), name) != e.aliases.end()) return s;
     }
     return std::nullopt;
 }
 
 std::string style_name_list() {
     std::string out;
-    for (std::size_t i = 0; i < kCanonical; ++i) {
-        if (i > 0) out += i + 1 == kCanonical ? " or " : ", ";
-        out += kNames[i].name;
+    const auto& all = all_styles();
+    for (std::size_t i = 0; i < all.size(); ++i) {
+        if (i > 0) out += i + 1 == all.size() ? " or " : ", ";
+        out += style_name(all[i]);
     }
     return out;
 }
@@ -60,10 +42,33 @@ std::string style_name_list() {
 const std::vector<std::string_view>& accepted_style_names() {
     static const std::vector<std::string_view> names = [] {
         std::vector<std::string_view> v;
-        for (const Named& n : kNames) v.push_back(n.name);
+        for (const Style s : all_styles()) v.push_back(style_entry(s).name);
+        for (const Style s : all_styles()) {
+            for (const std::string_view a : style_entry(s).aliases)
+                if (!a.empty()) v.push_back(a);
+        }
         return v;
     }();
     return names;
+}
+
+const std::vector<std::string>& accepted_style_name_strings() {
+    static const std::vector<std::string> names(accepted_style_names().begin(),
+                                                accepted_style_names().end());
+    return names;
+}
+
+std::string style_help() {
+    std::string out;
+    for (const Style s : all_styles()) {
+        const StyleEntry e = style_entry(s);
+        std::string line = "  " + std::string(e.name);
+        line.resize(std::max<std::size_t>(line.size() + 1, 15), ' ');
+        out += line + std::string(e.help);
+        if (!e.aliases[0].empty()) out += " (old name: " + std::string(e.aliases[0]) + ")";
+        out += "\n";
+    }
+    return out;
 }
 
 Style next_style(Style s) {

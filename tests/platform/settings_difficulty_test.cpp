@@ -11,9 +11,12 @@ namespace bz::platform {
 namespace {
 
 const std::vector<std::string> kPresets = {"fast", "balanced", "high"};
+// The style table's names (scene::accepted_style_names(); platform's tests do not link scene).
+const std::vector<std::string> kStyles = {"vector",  "vector-xray", "toon",     "sketch",
+                                          "pop-art", "halo",        "occluded", "arcade"};
 
 TEST(SettingsDifficulty, DefaultLetsTheLevelChoose) {
-    const SettingsLoad s = parse_settings("", "settings.toml", kPresets);
+    const SettingsLoad s = parse_settings("", "settings.toml", {kPresets, kStyles});
     EXPECT_TRUE(s.errors.empty());
     EXPECT_EQ(s.settings.difficulty, "level");
     EXPECT_NE(format_settings(s.settings).find("difficulty = \"level\""), std::string::npos);
@@ -22,18 +25,19 @@ TEST(SettingsDifficulty, DefaultLetsTheLevelChoose) {
 TEST(SettingsDifficulty, ReadsEachChoiceAndWritesItBack) {
     for (const std::string d : {"easy", "normal", "arcade", "level"}) {
         const SettingsLoad s =
-            parse_settings("difficulty = \"" + d + "\"\n", "settings.toml", kPresets);
+            parse_settings("difficulty = \"" + d + "\"\n", "settings.toml", {kPresets, kStyles});
         EXPECT_TRUE(s.errors.empty()) << d;
         EXPECT_EQ(s.settings.difficulty, d);
         const SettingsLoad again =
-            parse_settings(format_settings(s.settings), "settings.toml", kPresets);
+            parse_settings(format_settings(s.settings), "settings.toml", {kPresets, kStyles});
         EXPECT_TRUE(again.errors.empty());
         EXPECT_EQ(again.settings.difficulty, d);
     }
 }
 
 TEST(SettingsDifficulty, BadValueIsReportedAndKeepsTheDefault) {
-    const SettingsLoad s = parse_settings("difficulty = \"brutal\"\n", "settings.toml", kPresets);
+    const SettingsLoad s =
+        parse_settings("difficulty = \"brutal\"\n", "settings.toml", {kPresets, kStyles});
     ASSERT_EQ(s.errors.size(), 1u);
     EXPECT_NE(s.errors[0].find("settings.toml:1:"), std::string::npos) << s.errors[0];
     EXPECT_NE(s.errors[0].find("difficulty"), std::string::npos) << s.errors[0];

@@ -13,9 +13,12 @@ namespace {
 namespace fs = std::filesystem;
 
 const std::vector<std::string> kPresets = {"fast", "balanced", "high"};
+// The style table's names (scene::accepted_style_names(); platform's tests do not link scene).
+const std::vector<std::string> kStyles = {"vector",  "vector-xray", "toon",     "sketch",
+                                          "pop-art", "halo",        "occluded", "arcade"};
 
 SettingsLoad parse(const std::string& text) {
-    return parse_settings(text, "settings.toml", kPresets);
+    return parse_settings(text, "settings.toml", {kPresets, kStyles});
 }
 
 bool any_error_contains(const SettingsLoad& r, const std::string& needle) {
@@ -167,7 +170,7 @@ TEST(Settings, FormatRoundTripsAndSavesAtomically) {
     fs::create_directories(dir);
     const fs::path file = dir / "settings.toml";
     save_settings(file, s);
-    const SettingsLoad r = load_settings(file, kPresets);
+    const SettingsLoad r = load_settings(file, {kPresets, kStyles});
     ASSERT_TRUE(r.errors.empty()) << r.errors.front();
     EXPECT_TRUE(r.file_existed);
     EXPECT_EQ(r.settings.volume, 0.5f);
@@ -184,14 +187,15 @@ TEST(Settings, FormatRoundTripsAndSavesAtomically) {
 }
 
 TEST(Settings, MissingFileIsNotAnError) {
-    const SettingsLoad r = load_settings("/nonexistent/beamzone/settings.toml", kPresets);
+    const SettingsLoad r =
+        load_settings("/nonexistent/beamzone/settings.toml", {kPresets, kStyles});
     EXPECT_TRUE(r.errors.empty());
     EXPECT_FALSE(r.file_existed);
     EXPECT_TRUE(r.may_save());
 }
 
 TEST(Settings, UnreadableFileIsReported) {
-    const SettingsLoad r = load_settings("/", kPresets);  // a folder, not a file
+    const SettingsLoad r = load_settings("/", {kPresets, kStyles});  // a folder, not a file
     ASSERT_EQ(r.errors.size(), 1u);
     EXPECT_FALSE(r.may_save());
 }

@@ -21,6 +21,7 @@
 #include "core/io/output_path.h"
 #include "core/text/printable.h"
 #include "level/loader.h"
+#include "scene/presentation_clock.h"
 
 namespace bz::app {
 
@@ -50,14 +51,15 @@ constexpr const char* kUsage =
     "the exact CPU reference (F1 at 1 px) and adds sweep.json, tradeoff.png and masks/\n"
     "(default 240 frames per configuration); it then times every style (balanced preset) and\n"
     "scores the sketch style's strokes at 1, 2 and 4 px as well.\n"
-    "--style draws every frame in that style (vector, vector-xray, toon, sketch, pop-art, halo)\n"
+    "--style draws every frame in that style (see `render --help` for the styles)\n"
     "instead of the level's.\n"
     "Its timed frames run in --rounds stretches (default 4), round-robin over the\n"
     "configurations, so a machine whose load drifts treats them alike.\n"
     "--scaling draws the frames from meshes subdivided to 1x, 4x, 16x and 64x the triangles\n"
     "and writes scaling.json and scaling.png (default 40 frames).\n"
-    "--beam picks the vector beam's look (default: the level's, else classic); the sweep adds\n"
-    "balanced with the mame beam, which times its passes (phosphor, mip-chain bloom).\n"
+    "--beam picks the vector beam's look (default: the level's, else mame, as play and render);\n"
+    "the sweep's rows keep each preset's classic beam and add balanced with the mame beam,\n"
+    "which times its passes (phosphor, mip-chain bloom).\n"
     "--no-phosphor switches the beam's phosphor persistence off for the run (not with --sweep):\n"
     "two runs with and without it time what the phosphor costs.\n"
     "--accuracy needs no LEVEL: it scores every preset and the baseline on real models\n"
@@ -191,8 +193,11 @@ BenchFrames simulate(BenchScene& scene, const Options& o, double aspect) {
     const int total = o.warmup + o.frames;
     bf.frames.reserve(static_cast<std::size_t>(total));
     scene::FrameList f;
+    scene::PresentationClock clock;  // one nominal 60 Hz frame per simulated tick
     for (int i = 0; i < total; ++i) {
         if (!scene.next(f, aspect)) break;
+        clock.advance_nominal();
+        clock.stamp(f);
         bf.frames.push_back(f);
         bf.seconds.push_back(scene.seconds());
     }
@@ -287,7 +292,8 @@ int run(const Options& o) {
         settings.method = render::parse_line_method(*loaded.level->render.line_method);
     settings.count_edges = true;
     const std::string beam_name =
-        !o.beam.empty() ? o.beam : loaded.level->render.beam.value_or("classic");
+        !o.beam.empty() ? o.beam
+                        : loaded.level->render.beam.value_or(std::string(render::kDefaultBeamLook));
     settings.beam = render::beam_look(beam_name);
     // The phosphor's cost is the difference between two runs of the same frames.
     if (o.no_phosphor) settings.beam.phosphor = render::PhosphorDecay::off;

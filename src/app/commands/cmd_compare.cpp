@@ -16,17 +16,20 @@ namespace bz::app {
 namespace {
 
 constexpr const char* kUsage =
-    "usage: beamzone compare TEST.png REF.png [--tol PX]\n"
+    "usage: beamzone compare TEST.png REF.png [--tol PX] [--ink]\n"
     "Scores a line mask (e.g. 'render --mask') against a reference mask (e.g. 'reference'):\n"
     "  precision  lit TEST pixels with a lit REF pixel within PX pixels (Chebyshev distance)\n"
     "  recall     lit REF pixels with a lit TEST pixel within PX pixels\n"
     "  f1         2 * precision * recall / (precision + recall)\n"
     "A pixel is lit when its gray value is at least 128. --tol defaults to 1. Both images\n"
-    "must have the same size.\n";
+    "must have the same size.\n"
+    "--ink: TEST is a frame of a paper style, whose lines are dark ink: its pixels darker\n"
+    "than gray 110 count as lit (the halo style's recall of the exact visible lines).\n";
 
 struct Options {
     std::string test, ref;
     int tol = 1;
+    bool ink = false;
 };
 
 Options parse(Args args) {
@@ -36,6 +39,8 @@ Options parse(Args args) {
         const std::string_view a = cur.next();
         if (a == "--tol") {
             o.tol = parse_int(a, cur.value(a), 0, 64);
+        } else if (a == "--ink") {
+            o.ink = true;
         } else if (!a.empty() && a[0] == '-') {
             throw UsageError("unknown option " + printable(a));
         } else if (o.test.empty()) {
@@ -50,9 +55,10 @@ Options parse(Args args) {
     return o;
 }
 
-std::vector<std::uint8_t> lit_pixels(const Image& img) {
+std::vector<std::uint8_t> lit_pixels(const Image& img, bool ink = false) {
     std::vector<std::uint8_t> out(img.pixels.size());
-    for (std::size_t i = 0; i < out.size(); ++i) out[i] = img.pixels[i] >= 128 ? 1 : 0;
+    for (std::size_t i = 0; i < out.size(); ++i)
+        out[i] = (ink ? img.pixels[i] < 110 : img.pixels[i] >= 128) ? 1 : 0;
     return out;
 }
 
@@ -72,7 +78,7 @@ int cmd_compare(Args args) {
                         ": masks must have the same size");
     }
     const geo::MaskScore s =
-        geo::score_masks(lit_pixels(test), lit_pixels(ref), test.width, test.height, o.tol);
+        geo::score_masks(lit_pixels(test, o.ink), lit_pixels(ref), test.width, test.height, o.tol);
     std::printf(
         "precision %.4f recall %.4f f1 %.4f (test %zu lit, reference %zu lit, tolerance %d px)\n",
         s.precision, s.recall, s.f1, s.test_lit, s.ref_lit, o.tol);

@@ -25,6 +25,7 @@
 #include "level/loader.h"
 #include "platform/pref_paths.h"
 #include "render/settings.h"
+#include "scene/style_table.h"
 
 namespace bz::app {
 
@@ -76,8 +77,8 @@ struct Play {
         log.info("high scores: " + paths.high_scores.string());
         log.info("log: " + paths.log.string());
 
-        platform::SettingsLoad loaded =
-            platform::load_settings(paths.settings, render::preset_names());
+        platform::SettingsLoad loaded = platform::load_settings(
+            paths.settings, {render::preset_names(), scene::accepted_style_name_strings()});
         for (const auto& e : loaded.errors) log.warn(e);
         platform::Settings& settings = loaded.settings;
         if (!loaded.file_existed) save(settings);  // a commented file to edit, on first start

@@ -16,32 +16,47 @@
 #include "core/text/printable.h"
 #include "geometry/line_mesh/line_mesh.h"
 #include "render/renderer.h"
+#include "scene/presentation_clock.h"
+#include "scene/style_table.h"
 
 namespace bz::app {
 
 namespace {
 
-constexpr const char* kUsage =
-    "usage: beamzone render INPUT [--eye x,y,z] [--target x,y,z] [--up x,y,z] [--fov DEG]\n"
-    "                       [--near N] [--far F] [--size WxH] [--preset fast|balanced|high]\n"
-    "                       [--line-method compute|geometry_shader|auto|image_outline]\n"
-    "                       [--style NAME] [--shading flat|smooth] [--no-smoothing] [--one-sided]\n"
-    "                       [--color r,g,b] [--out frame.png]\n"
-    "                       [--mask mask.png] [--repeat N] [--copies N] [--beam classic|mame]\n"
-    "                       [--lit-share]\n"
-    "Renders a model file (or builtin:cube, builtin:sphere, builtin:grid) headless to PNG. Without "
-    "--eye the camera frames the model's bounding\n"
-    "box from a 3/4 view. --mask writes the 1-pixel visible-spine mask (255 = line).\n"
-    "--style: vector (default), vector-xray, toon, sketch, pop-art or halo (occluded and arcade\n"
-    "are the old names of vector and vector-xray). --shading: filled styles' normals.\n"
-    "--no-smoothing: the halo style's silhouettes stay polygonal (no cubic smoothing).\n"
-    "--one-sided: toon / pop-art outlines extruded outward and depth-tested, not centred.\n"
-    "--repeat N renders N timed frames and prints the mean milliseconds of each pass.\n"
-    "--copies N draws N instances of the model on a square grid in the xz plane (a scene of a\n"
-    "chosen size for timing; the camera frames them all).\n"
-    "--beam picks the vector beam's look (default classic; `play` defaults to mame).\n"
-    "--lit-share prints the share of the picture's pixels whose brightest channel is above\n"
-    "1/255 (the haze figure; tools/haze measures Bernardoni 2018's hallway with it).\n";
+// The usage, with the style table's names and help (scene/style.h).
+const std::string& usage() {
+    static const std::string text =
+        std::string(
+            "usage: beamzone render INPUT [--eye x,y,z] [--target x,y,z] [--up x,y,z] [--fov DEG]\n"
+            "                       [--near N] [--far F] [--size WxH] [--preset "
+            "fast|balanced|high]\n"
+            "                       [--line-method compute|geometry_shader|auto|image_outline]\n"
+            "                       [--style NAME] [--shading flat|smooth] [--no-smoothing] "
+            "[--one-sided]\n"
+            "                       [--color r,g,b] [--out frame.png]\n"
+            "                       [--mask mask.png] [--repeat N] [--copies N] [--beam "
+            "classic|mame]\n"
+            "                       [--lit-share]\n"
+            "Renders a model file (or builtin:cube, builtin:sphere, builtin:grid) headless to PNG. "
+            "Without "
+            "--eye the camera frames the model's bounding\n"
+            "box from a 3/4 view. --mask writes the 1-pixel visible-spine mask (255 = line).\n"
+            "--style: the frame's style (default vector):\n") +
+        scene::style_help() +
+        std::string(
+            "--shading: filled styles' normals.\n"
+            "--no-smoothing: the halo style's silhouettes stay polygonal (no cubic smoothing).\n"
+            "--one-sided: toon / pop-art outlines extruded outward and depth-tested, not centred.\n"
+            "--repeat N renders N timed frames and prints the mean milliseconds of each pass.\n"
+            "--copies N draws N instances of the model on a square grid in the xz plane (a scene "
+            "of a\n"
+            "chosen size for timing; the camera frames them all).\n"
+            "--beam picks the vector beam's look (default mame, as `play` and `bench`).\n"
+            "--lit-share prints the share of the picture's pixels whose brightest channel is "
+            "above\n"
+            "1/255 (the haze figure; tools/haze measures Bernardoni 2018's hallway with it).\n");
+    return text;
+}
 
 struct RenderOptions {
     std::string input;
@@ -57,7 +72,7 @@ struct RenderOptions {
     std::string mask;
     int repeat = 0;
     int copies = 1;
-    std::string beam = "classic";
+    std::string beam{render::kDefaultBeamLook};
     bool lit_share = false;
 };
 
@@ -171,7 +186,7 @@ int cmd_render(Args args) {
         return parsed;
     };
     const std::optional<RenderOptions> parsed =
-        parse_command("render", args, kUsage, parse_checked, &exit_code);
+        parse_command("render", args, usage().c_str(), parse_checked, &exit_code);
     if (!parsed) return exit_code;
     const RenderOptions& o = *parsed;
     const std::filesystem::path inputs[] = {o.input};
@@ -197,7 +212,10 @@ int cmd_render(Args args) {
                               o.repeat > 0 ? gl::TimingMethod::cpu_finish : gl::TimingMethod::off);
     std::vector<std::vector<gl::PassTime>> timings;
     const int frames = std::max(o.repeat, 1) + (o.repeat > 0 ? 2 : 0);  // 2 warm-up frames
+    scene::PresentationClock clock;  // --repeat: one nominal 60 Hz frame per picture
     for (int i = 0; i < frames; ++i) {
+        clock.advance_nominal();
+        clock.stamp(frame);
         renderer.render(frame, meshes, render::Renderer::kOffscreen);
         if (o.repeat > 0 && i >= 2) timings.push_back(renderer.pass_times());
     }

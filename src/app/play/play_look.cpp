@@ -41,7 +41,7 @@ PlayLook choose_look(const LookSources& s, const level::Level* level) {
         preset_from = "default";
     }
 
-    std::string beam = "mame", beam_from = "default";
+    std::string beam(render::kDefaultBeamLook), beam_from = "default";
     if (s.cli_beam) {
         beam = *s.cli_beam;
         beam_from = "command line";

@@ -32,7 +32,7 @@ struct LookSources {
 };
 
 struct PlayLook {
-    scene::LineStyle style = scene::LineStyle::occluded;
+    scene::Style style = scene::Style::vector;
     render::RenderSettings render;
     // For the log, e.g. "style arcade (level), preset fast (command line), line width 3 px
     // (level)".

@@ -10,6 +10,7 @@
 #include "app/play/frame_stats.h"
 #include "game/fixed_step.h"
 #include "platform/screenshot.h"
+#include "scene/presentation_clock.h"
 #include "scene/style.h"
 
 namespace bz::app {
@@ -38,7 +39,7 @@ class Loop {
             p_.overlay.set_errors(ErrorKind::settings, p_.settings_errors, kSettingsErrorSeconds);
         }
         applied_ = p_.settings;
-        look_ = p_.look(current_level());
+        look_ = look_now();
         p_.log.info("look: " + look_.summary);
         int w = 0, h = 0;
         p_.context.drawable_size(w, h);
@@ -62,6 +63,7 @@ class Loop {
             poll_reload(dt);
             simulate(dt);
             p_.overlay.advance(dt);
+            clock_.advance(dt);  // the look's time runs on through pause, menus and --edit
             if (!minimized_ || config_.frames > 0) {
                 draw();
             } else {
@@ -327,9 +329,17 @@ class Loop {
         return watcher_ && watcher_->current() ? &*watcher_->current() : nullptr;
     }
 
+    // The look the settings, the level and the command line choose, with the session's rule
+    // for the picture's past (--edit keeps none).
+    PlayLook look_now() const {
+        PlayLook look = p_.look(current_level());
+        look.render.keep_history = session_.keeps_history();
+        return look;
+    }
+
     // After a good reload: the level's [render] section may have changed.
     void update_look() {
-        PlayLook next = p_.look(current_level());
+        PlayLook next = look_now();
         renderer_->set_settings(next.render);
         if (next.summary != look_.summary) p_.log.info("look: " + next.summary);
         look_ = std::move(next);
@@ -433,6 +443,7 @@ class Loop {
             static_cast<double>(renderer_->width()) / std::max(1, renderer_->height());
         scene::FrameList frame = session_.frame(alpha_, aspect);
         frame.style = look_.style;
+        clock_.stamp(frame);
         if (!menus_.keeps_game_hud()) frame.hud.clear();
         for (scene::DrawItem& item : frame.items) item.intensity *= menus_.scene_intensity();
         menus_.draw(frame.hud, p_.font, aspect, static_cast<std::uint64_t>(result_.frames));
@@ -483,6 +494,7 @@ class Loop {
     platform::Settings applied_;  // the settings as last put into effect
     FrameStats frame_stats_;
     game::FixedStep step_;
+    scene::PresentationClock clock_;  // phosphor, frame holding and flicker follow it
     std::unique_ptr<render::Renderer> renderer_;
     PlayLook look_;
     std::optional<scene::Style> cycled_style_;  // chosen with the cycle_style key

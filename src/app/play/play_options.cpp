@@ -7,6 +7,7 @@
 #include "core/text/printable.h"
 #include "platform/settings.h"
 #include "render/settings.h"
+#include "scene/style_table.h"
 
 namespace bz::app {
 
@@ -158,7 +159,8 @@ std::string play_usage(const std::string& settings_path, const std::string& high
            "picked up while playing; errors show on screen and the last good level stays.\n"
            "  --edit           fly around the level without gameplay (WASD, R/F up/down,\n"
            "                   arrows or right mouse button to look, Shift faster)\n"
-           "  --style S        line style for this run (else the level's, else the settings')\n"
+           "  --style S        style for this run (else the level's, else the settings'):\n" +
+           scene::style_help() +
            "  --beam B         vector beam look, mame or classic (else the settings', else the\n"
            "                   level's, else mame)\n"
            "  --preset P       render preset for this run (else the settings', else the level's)\n"

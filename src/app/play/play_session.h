@@ -37,6 +37,9 @@ class PlaySession {
     // alpha: 0..1 between the previous and the current tick; aspect: width / height.
     virtual scene::FrameList frame(double alpha, double aspect) = 0;
     virtual const scene::MeshLibrary& meshes() const = 0;
+    // Whether the picture may keep a past (phosphor trails, a held frame): false for a viewer
+    // whose camera flies and jumps (RenderSettings::keep_history).
+    virtual bool keeps_history() const { return true; }
     // Sounds of the ticks since the last call.
     virtual SessionSounds take_sounds() = 0;
     // A hot reload produced a new good level: take it in, keeping what is running. meshes()

@@ -285,6 +285,8 @@ class EditSession final : public PlaySession {
 
     void tick(const platform::InputState&) override { ++ticks_; }
     void update(const platform::FlyControls& fly, double dt) override { camera_.update(fly, dt); }
+    // An editor shows the level as it is now: no phosphor trails of where the camera was.
+    bool keeps_history() const override { return false; }
 
     scene::FrameList frame(double alpha, double aspect) override {
         scene::FrameList f;

@@ -6,6 +6,7 @@
 
 #include "level/loader.h"
 #include "platform/settings.h"
+#include "scene/style_table.h"
 
 namespace bz::app {
 namespace {
@@ -18,8 +19,8 @@ level::Level load(const char* text) {
 
 // What the settings file says, as cmd_play reads it.
 LookSources from_settings(const char* text) {
-    const platform::SettingsLoad s =
-        platform::parse_settings(text, "settings.toml", render::preset_names());
+    const platform::SettingsLoad s = platform::parse_settings(
+        text, "settings.toml", {render::preset_names(), scene::accepted_style_name_strings()});
     EXPECT_TRUE(s.errors.empty());
     LookSources out;
     out.settings_style = s.settings.style;
@@ -130,8 +131,9 @@ TEST(PlayLook, BeamIsMameByDefaultAndFollowsCommandLineThenSettingsThenLevel) {
 }
 
 TEST(PlayLook, ABadSettingsValueDoesNotCountAsNamed) {
-    const platform::SettingsLoad s = platform::parse_settings(
-        "preset = \"ultra\"\nstyle = 3\n", "settings.toml", render::preset_names());
+    const platform::SettingsLoad s =
+        platform::parse_settings("preset = \"ultra\"\nstyle = 3\n", "settings.toml",
+                                 {render::preset_names(), scene::accepted_style_name_strings()});
     EXPECT_EQ(s.errors.size(), 2u);
     EXPECT_FALSE(s.preset_given);
     EXPECT_FALSE(s.style_given);

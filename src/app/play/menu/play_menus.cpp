@@ -4,6 +4,8 @@
 #include <cctype>
 #include <cmath>
 
+#include "scene/style.h"
+
 namespace bz::app::menu {
 
 namespace {
@@ -27,7 +29,13 @@ enum OptionRow : std::size_t {
 };
 
 constexpr float kVolumeStep = 0.1f;
-const std::string kStyles[] = {"occluded", "arcade"};
+
+// The options menu offers the style table's canonical names (scene/style.h), in F6's order.
+std::vector<std::string> style_names() {
+    std::vector<std::string> out;
+    for (const scene::Style s : scene::all_styles()) out.emplace_back(scene::style_name(s));
+    return out;
+}
 
 std::string upper(std::string s) {
     for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
@@ -326,7 +334,11 @@ std::vector<Request> PlayMenus::change(int by) {
             st.preset = cycle(env_.presets, st.preset, by);
             break;
         case o_style:
-            st.style = cycle({std::begin(kStyles), std::end(kStyles)}, st.style, by);
+            // An old name ("occluded") counts as the style it names.
+            st.style = cycle(style_names(),
+                             std::string(scene::style_name(
+                                 scene::style_from_name(st.style).value_or(scene::Style::vector))),
+                             by);
             break;
         case o_volume: {
             const float v =

@@ -100,7 +100,10 @@ TEST(PlayMenus, OptionsChangeTheSettingsAndAskToApplyThem) {
     EXPECT_EQ(f.settings.preset, "fast");  // wraps
     f.keys({MenuKey::down});
     f.keys({MenuKey::left});
-    EXPECT_EQ(f.settings.style, "arcade");
+    EXPECT_EQ(f.settings.style, "halo");  // every style of the table, wrapping from the first
+    f.keys({MenuKey::right});
+    f.keys({MenuKey::right});
+    EXPECT_EQ(f.settings.style, "vector-xray");
     f.keys({MenuKey::down, MenuKey::left});
     EXPECT_NEAR(f.settings.volume, 0.7f, 1e-6);
     f.keys({MenuKey::down, MenuKey::confirm});
