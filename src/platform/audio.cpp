@@ -28,7 +28,7 @@ namespace {
 // to the log, not the terminal: the game's own one-line warning says what it means.
 void log_library_output(Log& log, StderrCapture& captured) {
     const std::string text = captured.text();
-    if (!text.empty()) log.info("audio libraries said: " + text);
+    if (!text.empty()) log.write(LogLevel::debug, "audio libraries said: " + text);
 }
 
 }  // namespace
