@@ -39,6 +39,8 @@ drive "${options[@]}" $(down 3) Right
 saved '^beam = "classic"' "beam look"
 drive "${options[@]}" $(down 4) Left
 saved '^volume = 0.7 ' "effects volume"
+drive "${options[@]}" $(down 5) Return
+saved '^fullscreen = true' "fullscreen"
 drive "${options[@]}" $(down 6) Left
 saved '^vsync = "off"' "vsync"
 drive "${options[@]}" $(down 7) Return
