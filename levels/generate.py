@@ -281,6 +281,7 @@ def stress():
 name = "Stress Test"
 author = "beamzone"
 description = "Benchmark: hundreds of objects and imported models along a fixed 60 s camera path."
+listed = false      # a benchmark scene, not a game: kept out of the level menu
 
 [field]
 size = 1180

@@ -25,6 +25,7 @@ uniform sampler2D u_bloom;  // encoded 8-bit (bloom_encoding.glsl)
 uniform float u_bloom_strength;
 uniform float u_exposure;
 uniform bool u_overlay;  // Battlezone's cabinet overlay over a white tube
+uniform bool u_overlay_safe;  // its red film as violet-blue: apart from green for red-green blindness
 uniform vec2 u_inv_screen;  // 1 / target size in pixels
 layout(location = 0) out vec4 o_color;
 
@@ -39,7 +40,8 @@ vec3 encode_gamma(vec3 x) {
 // fifth of the screen is seen through red film, the rest through green.
 vec3 overlay(vec3 hdr, vec2 uv) {
     float white = max(hdr.r, max(hdr.g, hdr.b));
-    return white * (uv.y > 0.8 ? vec3(1.0, 0.125, 0.125) : vec3(0.125, 1.0, 0.125));
+    vec3 top = u_overlay_safe ? vec3(0.6, 0.125, 1.0) : vec3(1.0, 0.125, 0.125);
+    return white * (uv.y > 0.8 ? top : vec3(0.125, 1.0, 0.125));
 }
 
 void main() {

@@ -57,6 +57,8 @@ Game::~Game() = default;
 std::string Game::highscores_title() const {
     std::string title = level_key(level_.name, 0).name;
     for (char& c : title) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    // Tables are kept apart by the rules played; the non-default ones are named.
+    if (options_.arcade.any()) title += " (" + arcade_label(options_.arcade) + ")";
     return title;
 }
 
@@ -71,11 +73,20 @@ level::Difficulty Game::difficulty() const {
 }
 
 level::Level Game::playing_level(const level::Level& level) const {
-    return level_for(level, options_.difficulty.value_or(level.enemies.difficulty));
+    return with_arcade_rules(
+        level_for(level, options_.difficulty.value_or(level.enemies.difficulty)), options_.arcade);
 }
 
 int Game::start_lives() const {
-    return options_.lives > 0 ? options_.lives : level_.player_lives;
+    return options_.lives > 0 ? options_.lives
+                              : options_.arcade.lives.value_or(level_.player_lives);
+}
+
+void Game::set_rules(std::optional<level::Difficulty> difficulty, const ArcadeRules& arcade) {
+    if (difficulty == options_.difficulty && arcade == options_.arcade) return;
+    options_.difficulty = difficulty;
+    options_.arcade = arcade;
+    demo_->reload_level(playing_level(level_), assets_->factories());
 }
 
 std::uint64_t Game::level_hash_value() const {
@@ -97,6 +108,8 @@ void Game::start_game() {
         h.level_hash = level_hash_value();
         h.lives = start_lives();
         h.difficulty = difficulty();
+        h.missile_score = options_.arcade.missile_score;
+        h.bonus_score = options_.arcade.bonus_score;
         h.hash_interval = std::max(1, options_.hash_interval);
         recorder_.emplace(std::move(h));
     }
@@ -108,12 +121,25 @@ void Game::resume() {
     if (screen_ == Screen::paused) screen_ = Screen::playing;
 }
 
+bool Game::score_qualifies() const {
+    return world_ && !playback_ && highscores_.qualifies(world_->score());
+}
+
 void Game::quit_to_title() {
+    const bool enter =
+        (screen_ == Screen::playing || screen_ == Screen::paused) && score_qualifies();
     if (recorder_ && world_) ended_recording_ = recorder_->finish(*world_);
     recorder_.reset();
     playback_.reset();
-    screen_ = Screen::attract;
     screen_ticks_ = 0;
+    if (enter) {
+        new_rank_ = -1;
+        screen_ = Screen::enter_initials;
+        initials_.clear();
+        initial_ = 'A';
+        return;
+    }
+    screen_ = Screen::attract;
 }
 
 void Game::start_replay(replay::Replay r) {
@@ -123,8 +149,12 @@ void Game::start_replay(replay::Replay r) {
                         ") than the one loaded (" + level_name() + ", hash " +
                         std::to_string(level_hash_value()) + ")");
     }
-    world_ = std::make_unique<World>(level_for(level_, r.header.difficulty), r.header.seed,
-                                     assets_->factories(), assets_->models(), r.header.lives);
+    ArcadeRules recorded;  // lives come from the header's own line
+    recorded.missile_score = r.header.missile_score;
+    recorded.bonus_score = r.header.bonus_score;
+    world_ = std::make_unique<World>(
+        with_arcade_rules(level_for(level_, r.header.difficulty), recorded), r.header.seed,
+        assets_->factories(), assets_->models(), r.header.lives);
     recorder_.reset();
     mismatch_.reset();
     playback_.emplace(std::move(r));
@@ -312,6 +342,7 @@ scene::FrameList Game::frame(double alpha, double aspect) const {
     view.fov_y_deg = options_.fov_y_deg;
     view.high_score = highscores_.best();
     view.font = font_;
+    view.text_scale = options_.text_scale;
     switch (screen_) {
         case Screen::attract:
             if (options_.app_menus) break;  // the app's title menu is drawn over the demo

@@ -13,6 +13,7 @@
 #include <string>
 
 #include "game/assets/assets.h"
+#include "game/difficulty/arcade_rules.h"
 #include "game/hud/screens.h"
 #include "game/records/highscores.h"
 #include "game/records/replay.h"
@@ -40,6 +41,7 @@ struct GameOptions {
     int lives = 0;           // 0: the level's [player] lives
     // Empty: the level's [enemies] difficulty (--difficulty and the settings file set it).
     std::optional<level::Difficulty> difficulty;
+    ArcadeRules arcade;  // the operator's settings over the level's rules (lives: `lives` wins)
     HighScoreTable highscores = HighScoreTable::defaults();
     // What replays name as the level: empty = the level's file path, or "builtin:default".
     std::string level_name;
@@ -52,6 +54,7 @@ struct GameOptions {
     // and leaves games through start_game(), resume() and quit_to_title().
     bool app_menus = false;
     screens::Hints hints;
+    float text_scale = 1.0f;  // the HUD's status text (hud::View::text_scale)
 };
 
 // What reload_level() did.
@@ -104,9 +107,18 @@ class Game {
 
     // For the app's menus (outside the simulation; a recording begins with the game).
     void start_game();
-    void resume();         // paused -> playing
-    void quit_to_title();  // ends the game in play without a score entry
+    void resume();  // paused -> playing
+    // Ends the game in play: a score that makes the table is entered first (initials, then
+    // the table), as when the game is over; any other goes straight to the title.
+    void quit_to_title();
+    // Whether the game in play would make the table if it ended now.
+    bool score_qualifies() const;
     void set_hints(screens::Hints hints) { options_.hints = std::move(hints); }
+    void set_text_scale(float scale) { options_.text_scale = scale; }
+    // Difficulty and arcade rules for the games started from now on (the one in play keeps
+    // its own); the demo takes them at once.
+    void set_rules(std::optional<level::Difficulty> difficulty, const ArcadeRules& arcade);
+    const ArcadeRules& arcade_rules() const { return options_.arcade; }
 
     // Plays a recorded game back from its seed, checking state hashes as it goes. Live input
     // only pauses or quits. Throws UserError if the replay's level hash differs.

@@ -94,11 +94,18 @@ struct RenderSettings {
     bool preset_given = false;
 };
 
+inline constexpr int kDefaultMenuOrder = 100;
+inline constexpr int kMaxMenuOrder = 1000;
+
 struct Level {
     int version = 1;
     std::string name;
     std::string author;
-    std::string description;     // one or two sentences for a level menu; may be empty
+    std::string description;  // one or two sentences for a level menu; may be empty
+    // The level menu: false keeps a scene that is not a game (a benchmark) out of the list
+    // (it still loads by path); lower menu_order comes first, then the name.
+    bool listed = true;
+    int menu_order = kDefaultMenuOrder;
     std::filesystem::path file;  // the file it was loaded from
     // The canonical folders its models, and every file a model refers to, may be read from:
     // the level's own folder and the project's data/ folder (empty for a built-in level).

@@ -62,6 +62,9 @@ void read_identity(TableReader& root, Level& level) {
     }
     if (auto v = root.text("author", 64)) level.author = *v;
     if (auto v = root.text("description", 300)) level.description = *v;
+    if (auto v = root.boolean("listed")) level.listed = *v;
+    if (auto v = root.integer("menu_order", 0, kMaxMenuOrder))
+        level.menu_order = static_cast<int>(*v);
 }
 
 }  // namespace

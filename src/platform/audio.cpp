@@ -3,9 +3,11 @@
 #include <SDL.h>
 
 #include <algorithm>
+#include <optional>
 #include <string>
 
 #include "core/log.h"
+#include "core/stderr_capture.h"
 
 namespace bz::platform {
 
@@ -19,8 +21,22 @@ void fill(void* user, Uint8* stream, int bytes) {
 
 }  // namespace
 
+namespace {
+
+// What the sound libraries under SDL print straight to stderr while a device is looked for
+// (ALSA's "ALSA lib ...: Unknown PCM default" lines on a machine without a sound card) goes
+// to the log, not the terminal: the game's own one-line warning says what it means.
+void log_library_output(Log& log, StderrCapture& captured) {
+    const std::string text = captured.text();
+    if (!text.empty()) log.write(LogLevel::debug, "audio libraries said: " + text);
+}
+
+}  // namespace
+
 Audio::Audio(Log& log, float volume, bool mute) : volume_(volume), mute_(mute) {
+    std::optional<StderrCapture> quiet(std::in_place);
     if (SDL_InitSubSystem(SDL_INIT_AUDIO) != 0) {
+        log_library_output(log, *quiet);
         log.warn(std::string("no audio (") + SDL_GetError() + "); playing silently");
         return;
     }
@@ -36,6 +52,8 @@ Audio::Audio(Log& log, float volume, bool mute) : volume_(volume), mute_(mute) {
     synth_ = std::make_unique<Synth>(want.freq);
     want.userdata = synth_.get();
     device_ = SDL_OpenAudioDevice(nullptr, 0, &want, &have, SDL_AUDIO_ALLOW_FREQUENCY_CHANGE);
+    log_library_output(log, *quiet);
+    quiet.reset();
     if (device_ == 0) {
         log.warn(std::string("cannot open an audio device (") + SDL_GetError() +
                  "); playing silently");

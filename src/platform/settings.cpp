@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <optional>
 #include <sstream>
 #include <utility>
@@ -130,6 +131,69 @@ class Reader {
         return -1;
     }
 
+    // A number from `allowed` (an integer in the file).
+    void one_of(const toml::table& t, std::string_view key, std::span<const int> allowed,
+                std::optional<int>& dst) {
+        const toml::node* n = t.get(key);
+        if (!n) return;
+        if (const auto v = n->value_exact<std::int64_t>()) {
+            if (std::find(allowed.begin(), allowed.end(), *v) != allowed.end()) {
+                dst = static_cast<int>(*v);
+                return;
+            }
+        }
+        std::string list;
+        for (const int a : allowed) list += (list.empty() ? "" : ", ") + std::to_string(a);
+        error(n, std::string(key) + " must be one of " + list + "; keeping the level's");
+    }
+
+    void ranged_float(const toml::table& t, std::string_view key, float lo, float hi, float& dst) {
+        const toml::node* n = t.get(key);
+        if (!n) return;
+        const auto v = n->is_number() ? n->value<double>() : std::nullopt;
+        if (v && std::isfinite(*v) && *v >= lo && *v <= hi) {
+            dst = static_cast<float>(*v);
+        } else {
+            std::ostringstream msg;
+            msg << key << " must be a number from " << lo << " to " << hi << "; keeping " << dst;
+            error(n, msg.str());
+        }
+    }
+
+    void max_fps(const toml::table& t, int& dst) {
+        const toml::node* n = t.get("max_fps");
+        if (!n) return;
+        if (const auto v = n->value_exact<std::int64_t>()) {
+            if (*v == 0 || (*v >= kMinMaxFps && *v <= kMaxMaxFps)) {
+                dst = static_cast<int>(*v);
+                return;
+            }
+        }
+        error(n, "max_fps must be 0 (the display's rate without vsync) or " +
+                     std::to_string(kMinMaxFps) + " to " + std::to_string(kMaxMaxFps) +
+                     "; keeping " + std::to_string(dst));
+    }
+
+    void arcade(const toml::table& t, ArcadeDips& dst) {
+        const toml::node* n = t.get("arcade");
+        if (!n) return;
+        const toml::table* a = n->as_table();
+        if (!a) {
+            error(n, "arcade must be a table such as [arcade] lives = 3; keeping the level's");
+            return;
+        }
+        one_of(*a, "lives", kDipLives, dst.lives);
+        one_of(*a, "missile_score", kDipMissileScores, dst.missile_score);
+        one_of(*a, "bonus_score", kDipBonusScores, dst.bonus_score);
+        for (const auto& [name, value] : *a) {
+            const std::string_view k = name.str();
+            if (k != "lives" && k != "missile_score" && k != "bonus_score") {
+                error_at(name.source().begin, "unknown arcade setting '" + printable(k) +
+                                                  "' (lives, missile_score, bonus_score)");
+            }
+        }
+    }
+
     void keys(const toml::table& t, Bindings& dst) {
         const toml::node* n = t.get("keys");
         if (!n) return;
@@ -176,9 +240,10 @@ class Reader {
 
     void unknown_keys(const toml::table& t) {
         static constexpr std::string_view kKnown[] = {
-            "keys",    "volume",    "mute",       "vsync",    "fullscreen", "pause_on_focus_loss",
-            "preset",  "style",     "gamepad",    "show_fps", "difficulty", "beam",
-            "overlay", "hold_41hz", "line_method"};
+            "keys",    "volume",    "mute",        "vsync",    "fullscreen",  "pause_on_focus_loss",
+            "preset",  "style",     "gamepad",     "show_fps", "difficulty",  "beam",
+            "overlay", "hold_41hz", "line_method", "flashes",  "colour_safe", "ui_scale",
+            "max_fps", "arcade"};
         for (const auto& [name, value] : t) {
             if (std::find(std::begin(kKnown), std::end(kKnown), name.str()) == std::end(kKnown)) {
                 error_at(name.source().begin, "unknown setting '" + printable(name.str()) + "'");
@@ -203,6 +268,14 @@ std::string quoted(std::string_view s) {
         out += c;
     }
     return out + "\"";
+}
+
+// `key = value`, or the key commented out with an example when unset.
+std::string optional_int(std::string_view key, const std::optional<int>& v, int example,
+                         std::string_view comment) {
+    std::string line = v ? std::string(key) + " = " + std::to_string(*v)
+                         : "# " + std::string(key) + " = " + std::to_string(example);
+    return line + "   # " + std::string(comment) + "\n";
 }
 
 }  // namespace
@@ -289,6 +362,13 @@ SettingsLoad parse_settings(std::string_view text, const std::string& source,
     if (const int i = r.choice(t, "difficulty", difficulties, s.difficulty); i >= 0) {
         s.difficulty = difficulties[i];
     }
+    if (const int i = r.choice(t, "flashes", kFlashLevels, s.flashes); i >= 0) {
+        s.flashes = kFlashLevels[i];
+    }
+    r.boolean(t, "colour_safe", s.colour_safe);
+    r.ranged_float(t, "ui_scale", kMinUiScale, kMaxUiScale, s.ui_scale);
+    r.max_fps(t, s.max_fps);
+    r.arcade(t, s.arcade);
     r.keys(t, s.keys);
     r.unknown_keys(t);
     r.flush();
@@ -340,6 +420,20 @@ std::string format_settings(const Settings& s) {
       << "         # frame rate and frame-time readout\n"
       << "difficulty = " << quoted(s.difficulty)
       << "      # \"easy\", \"normal\", \"arcade\", or \"level\" (each level's own)\n"
+      << "flashes = " << quoted(s.flashes)
+      << "         # \"full\", \"soft\" or \"off\": beam flicker, hit flashes, phosphor trails\n"
+      << "colour_safe = " << (s.colour_safe ? "true" : "false")
+      << "     # red drawn violet-blue, for red-green colour blindness\n"
+      << "ui_scale = " << s.ui_scale << "          # menu and HUD text, 1.0 .. 2.0\n"
+      << "max_fps = " << s.max_fps
+      << "           # 0: the display's refresh rate when vsync is off; else a cap, 20 .. 1000\n"
+      << "\n# The arcade machine's DIP switches; a missing key keeps the level's rule.\n"
+      << "[arcade]\n"
+      << optional_int("lives", s.arcade.lives, 3, "tanks at the start: 2, 3, 4 or 5")
+      << optional_int("missile_score", s.arcade.missile_score, 10000,
+                      "missiles from: 5000, 10000, 20000 or 30000")
+      << optional_int("bonus_score", s.arcade.bonus_score, 15000,
+                      "first bonus tank (second at 100000): 0 (none), 15000, 20000, 50000")
       << "\n# Keys per action, as SDL scancode names (\"Q\", \"Space\", \"Left Ctrl\", "
          "\"Alt+Return\").\n"
       << "[keys]\n";

@@ -3,6 +3,7 @@
 // `file:line:col: error: ...` and that key keeps its default; a broken file keeps them all.
 // Nothing in here may crash on what a person typed.
 #include <filesystem>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -13,6 +14,30 @@
 #include "platform/input.h"
 
 namespace bz::platform {
+
+// The 1980 machine's DIP switches (its operator manual): tanks at the start, the score from
+// which missiles come, and the first bonus tank (the second always at 100,000). Unset: the
+// level's own rule. A bonus score of 0 is the switch setting "no bonus tank".
+struct ArcadeDips {
+    std::optional<int> lives;          // 2..5
+    std::optional<int> missile_score;  // 5000, 10000, 20000 or 30000
+    std::optional<int> bonus_score;    // 0 (none), 15000, 20000 or 50000
+    bool any() const { return lives || missile_score || bonus_score; }
+    bool operator==(const ArcadeDips&) const = default;
+};
+inline constexpr int kDipLives[] = {2, 3, 4, 5};
+inline constexpr int kDipMissileScores[] = {5000, 10000, 20000, 30000};
+inline constexpr int kDipBonusScores[] = {0, 15000, 20000, 50000};
+inline constexpr int kDipSecondBonus = 100000;
+
+// Flicker, flashes and trails: "full" as designed, "soft" halved, "off" none (beam flicker,
+// the overdriven flash of a hit or a cracked screen, phosphor trails).
+inline const std::string kFlashLevels[] = {"full", "soft", "off"};
+
+inline constexpr int kMinMaxFps = 20;
+inline constexpr int kMaxMaxFps = 1000;
+inline constexpr float kMinUiScale = 1.0f;
+inline constexpr float kMaxUiScale = 2.0f;
 
 struct Settings {
     Bindings keys = default_bindings();
@@ -31,6 +56,13 @@ struct Settings {
     bool show_fps = false;  // the frame-rate readout (toggled by its key too)
     // "easy", "normal" or "arcade"; "level" lets each level choose (its [enemies] difficulty).
     std::string difficulty = "level";
+    std::string flashes = "full";  // one of kFlashLevels
+    bool colour_safe = false;      // red shown as violet-blue: readable with red-green blindness
+    float ui_scale = 1.0f;         // menu and HUD text, kMinUiScale..kMaxUiScale
+    // Frames per second at most: 0 = the display's refresh rate when vsync is not in effect
+    // (vsync paces the game otherwise); else this cap (kMinMaxFps..kMaxMaxFps) always.
+    int max_fps = 0;
+    ArcadeDips arcade;
 };
 
 struct SettingsLoad {

@@ -105,8 +105,9 @@ struct BeamSettings {
     // Black level of the glow: this much is taken off the finished bloom, so the wide levels'
     // faint wash over the whole screen stays black (a tube's brightness knob turned down).
     float bloom_floor = 0.0f;
-    bool overlay = false;     // Battlezone's overlay: top 20% red, the rest green
-    float refresh_hz = 0.0f;  // > 0: hold frames to this refresh (the original's ~41 Hz)
+    bool overlay = false;      // Battlezone's overlay: top 20% red, the rest green
+    bool colour_safe = false;  // the overlay's red as violet-blue (red-green colour blindness)
+    float refresh_hz = 0.0f;   // > 0: hold frames to this refresh (the original's ~41 Hz)
 };
 
 struct RenderSettings {

@@ -20,9 +20,9 @@ play --frames 300 --seed 3 --press 2:Return,10:Escape,12:Up,13:Return,20:Up,21:R
 grep -q "^play: 21 frames" "$work/out" || fail "pause menu round trip: $(cat "$work/out")"
 ok "start, pause menu, quit to title, quit"
 
-# Options: VOLUME (third row) one step down, saved at once; F10 quits.
-play --frames 200 --press 2:Down,3:Down,4:Return,5:Down,6:Down,7:Left,8:F10
-grep -q "^play: 8 frames" "$work/out" || fail "options run: $(cat "$work/out")"
+# Options: EFFECTS VOLUME (fifth row) one step down, saved at once; F10 quits.
+play --frames 200 --press 2:Down,3:Down,4:Return,5:Down,6:Down,7:Down,8:Down,9:Left,10:F10
+grep -q "^play: 10 frames" "$work/out" || fail "options run: $(cat "$work/out")"
 grep -q "^volume = 0.7 " "$work/pref/settings.toml" || fail "volume not saved: $(grep volume "$work/pref/settings.toml")"
 ok "options change saved to settings.toml"
 
@@ -34,7 +34,7 @@ ok "key rebinding saved"
 # A settings file with an error: the menu's change applies but the file is left alone.
 printf 'volume = 7\n' >"$work/pref/settings.toml"
 cp "$work/pref/settings.toml" "$work/settings.before"
-play --frames 200 --press 2:Down,3:Down,4:Return,5:Down,6:Down,7:Left,8:F10
+play --frames 200 --press 2:Down,3:Down,4:Return,5:Down,6:Down,7:Down,8:Down,9:Left,10:F10
 cmp -s "$work/settings.before" "$work/pref/settings.toml" || fail "a settings file with errors was overwritten"
 grep -q "not saving settings\|NOT SAVED" "$work/pref/beamzone.log" "$work/err" || true
 rm "$work/pref/settings.toml"

@@ -196,6 +196,39 @@ TEST(Game, RecordingVerifiesAndReplaysThroughTheGame) {
     EXPECT_THROW(r.start_replay(parsed), UserError);
 }
 
+TEST(Game, QuitToTitleEntersAQualifyingScoreFirst) {
+    for (const bool qualifies : {true, false}) {
+        GameOptions o;
+        o.attract = false;
+        o.seed = 5;
+        if (qualifies) {
+            o.highscores = low_table();
+        } else {
+            HighScoreTable high;
+            for (int i = 0; i < 10; ++i) high.insert({"TOP", 9'000'000 + i});
+            o.highscores = high;
+        }
+        Game g(default_level(), o, &font());
+        for (int i = 0; i < 60 * 180 && g.world()->score() == 0; ++i) {
+            g.tick(autopilot(*g.world()));
+        }
+        ASSERT_GT(g.world()->score(), 0) << "the autopilot scored nothing";
+        ASSERT_EQ(g.screen(), Screen::playing);
+        EXPECT_EQ(g.score_qualifies(), qualifies);
+        g.quit_to_title();
+        if (qualifies) {
+            ASSERT_EQ(g.screen(), Screen::enter_initials);
+            for (int k = 0; k < 3; ++k) tap(g, &TickCommand::fire);
+            EXPECT_EQ(g.screen(), Screen::high_scores);
+            EXPECT_TRUE(g.take_highscores_changed());
+            EXPECT_EQ(g.highscores().entries().front().score, g.world()->score());
+        } else {
+            EXPECT_EQ(g.screen(), Screen::attract);
+            EXPECT_FALSE(g.take_highscores_changed());
+        }
+    }
+}
+
 TEST(Game, FrameHoldsWorldHorizonAndHud) {
     GameOptions o;
     o.attract = false;

@@ -200,5 +200,49 @@ TEST(Settings, UnreadableFileIsReported) {
     EXPECT_FALSE(r.may_save());
 }
 
+TEST(Settings, PlayerOptionsAndArcadeDipsRoundTrip) {
+    Settings s;
+    s.flashes = "off";
+    s.colour_safe = true;
+    s.ui_scale = 1.5f;
+    s.max_fps = 144;
+    s.arcade.lives = 5;
+    s.arcade.missile_score = 30000;
+    s.arcade.bonus_score = 0;  // the "no bonus tank" switch
+    const SettingsLoad r = parse(format_settings(s));
+    ASSERT_TRUE(r.errors.empty()) << r.errors.front();
+    EXPECT_EQ(r.settings.flashes, "off");
+    EXPECT_TRUE(r.settings.colour_safe);
+    EXPECT_FLOAT_EQ(r.settings.ui_scale, 1.5f);
+    EXPECT_EQ(r.settings.max_fps, 144);
+    EXPECT_EQ(r.settings.arcade, s.arcade);
+    // Unset switches stay unset (the level's rules), written as comments.
+    const SettingsLoad d = parse(format_settings(Settings{}));
+    ASSERT_TRUE(d.errors.empty()) << d.errors.front();
+    EXPECT_FALSE(d.settings.arcade.any());
+    EXPECT_NE(format_settings(Settings{}).find("# lives = 3"), std::string::npos);
+}
+
+TEST(Settings, BadPlayerOptionsAndDipsAreReportedAtTheirPosition) {
+    const SettingsLoad r = parse(
+        "ui_scale = 3\nflashes = \"dim\"\n[arcade]\nlives = 7\nmissile_score = 10000\n"
+        "bonus_score = \"many\"\ncoins = 2\n");
+    EXPECT_TRUE(
+        any_error_contains(r, "settings.toml:1:12: error: ui_scale must be a number from 1 to 2"));
+    EXPECT_TRUE(any_error_contains(r, "settings.toml:2:11: error: flashes must be one of"));
+    EXPECT_TRUE(any_error_contains(r, "settings.toml:4:9: error: lives must be one of 2, 3, 4, 5"));
+    EXPECT_TRUE(any_error_contains(r, "bonus_score must be one of 0, 15000, 20000, 50000"));
+    EXPECT_TRUE(any_error_contains(r, "settings.toml:7:1: error: unknown arcade setting 'coins'"));
+    EXPECT_FLOAT_EQ(r.settings.ui_scale, 1.0f);
+    EXPECT_EQ(r.settings.flashes, "full");
+    EXPECT_FALSE(r.settings.arcade.lives);
+    EXPECT_EQ(r.settings.arcade.missile_score, 10000);  // the good one is kept
+    EXPECT_FALSE(r.may_save());
+    EXPECT_TRUE(
+        any_error_contains(parse("max_fps = 5\n"), "settings.toml:1:11: error: max_fps must be 0"));
+    // Not a table at all.
+    EXPECT_TRUE(any_error_contains(parse("arcade = 3\n"), "arcade must be a table"));
+}
+
 }  // namespace
 }  // namespace bz::platform

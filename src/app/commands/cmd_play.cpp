@@ -10,6 +10,7 @@
 
 #include "app/commands/cli_args.h"
 #include "app/commands/commands.h"
+#include "app/play/menu/level_list.h"
 #include "app/play/play_look.h"
 #include "app/play/play_loop.h"
 #include "app/play/play_options.h"
@@ -30,29 +31,6 @@
 namespace bz::app {
 
 namespace {
-
-// The levels the title menu offers: the shipped ones, then the player's own (*.toml in the
-// pref folder's levels/), each list sorted by name.
-std::vector<menu::LevelChoice> find_levels(const std::filesystem::path& shipped,
-                                           const std::filesystem::path& user) {
-    std::vector<menu::LevelChoice> out;
-    for (const auto& [dir, mine] : {std::pair{shipped, false}, std::pair{user, true}}) {
-        std::error_code ec;
-        std::vector<std::filesystem::path> files;
-        for (const auto& e : std::filesystem::directory_iterator(dir, ec)) {
-            if (e.path().extension() == ".toml") files.push_back(e.path());
-        }
-        std::sort(files.begin(), files.end());
-        for (const auto& f : files) {
-            std::string name = f.stem().string();
-            for (char& c : name) {
-                c = c == '_' ? ' ' : static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-            }
-            out.push_back({name, f, mine});
-        }
-    }
-    return out;
-}
 
 bool offscreen_allowed(const PlayOptions& o) {
     const char* env = std::getenv("BEAMZONE_ALLOW_OFFSCREEN");
@@ -98,6 +76,8 @@ struct Play {
         if (loaded.beam_given || !loaded.file_existed) look.settings_beam = settings.beam;
         look.settings_overlay = settings.overlay;
         look.settings_hold_41hz = settings.hold_41hz;
+        look.flashes = settings.flashes;
+        look.colour_safe = settings.colour_safe;
         look.cli_line_method = options.line_method;
         if (!settings.line_method.empty()) look.settings_line_method = settings.line_method;
 
@@ -181,6 +161,7 @@ struct Play {
         // --difficulty, else the settings file's unless it says "level", else the level's.
         so.difficulty = options.difficulty.value_or(
             settings.difficulty == "level" ? std::string() : settings.difficulty);
+        so.arcade = arcade_rules(settings.arcade);
         so.record = options.record;
         so.replay = options.replay;
         so.high_scores = paths.high_scores;
@@ -206,9 +187,10 @@ struct Play {
         // From here on a signal ends the loop, and what must be saved is saved below.
         stop_gracefully_on_signal();
         parts.presets = render::preset_names();
-        parts.levels = find_levels(level::default_level_path().parent_path(), paths.levels);
+        parts.levels = menu::find_levels(level::default_level_path().parent_path(), paths.levels);
         parts.look_sources = &look;
         parts.settings_errors = loaded.errors;
+        parts.vsync_given = vsync;
         // The menus save at once; never over a file that did not load cleanly.
         parts.save_settings = [this, &loaded](const platform::Settings& s) -> std::string {
             if (!loaded.may_save()) {

@@ -63,7 +63,18 @@ PlayLook choose_look(const LookSources& s, const level::Level* level) {
         s.settings_hold_41hz || (lv && lv->hold_41hz.value_or(false)) ? 41.0f : 0.0f;
     look.summary = "style " + style + " (" + style_from + "), preset " + preset + " (" +
                    preset_from + "), beam " + beam + " (" + beam_from + ")";
-    if (look.render.beam.overlay) look.summary += ", overlay";
+    if (s.flashes == "soft") {
+        look.render.beam.flicker *= 0.5f;
+        look.render.beam.persistence_ms *= 0.5f;
+        look.summary += ", flicker and trails halved (settings file)";
+    } else if (s.flashes == "off") {
+        look.render.beam.flicker = 0.0f;
+        look.render.beam.phosphor = render::PhosphorDecay::off;
+        look.summary += ", no flicker or trails (settings file)";
+    }
+    look.render.beam.colour_safe = s.colour_safe;
+    if (look.render.beam.overlay)
+        look.summary += s.colour_safe ? ", colour-safe overlay" : ", overlay";
     if (look.render.beam.refresh_hz > 0.0f) look.summary += ", 41 Hz hold";
     const std::optional<std::string>& method =
         s.cli_line_method

@@ -29,6 +29,10 @@ struct LookSources {
     // Line method: --line-method, else the settings file, else the level, else the preset's.
     std::optional<std::string> cli_line_method;
     std::optional<std::string> settings_line_method;
+    // The player's comfort settings: "full", "soft" or "off" beam flicker and phosphor trails
+    // (the frame's flashes are frame_comfort.h's), and the colour-safe overlay.
+    std::string flashes = "full";
+    bool colour_safe = false;
 };
 
 struct PlayLook {

@@ -7,7 +7,10 @@
 #include <optional>
 #include <utility>
 
+#include "app/play/frame_comfort.h"
+#include "app/play/frame_pacer.h"
 #include "app/play/frame_stats.h"
+#include "app/play/play_sessions.h"
 #include "game/fixed_step.h"
 #include "platform/screenshot.h"
 #include "scene/presentation_clock.h"
@@ -31,7 +34,8 @@ class Loop {
           p_(parts),
           config_(config),
           watcher_(parts.watcher),
-          menus_(menu_env()) {}
+          menus_(menu_env()),
+          vsync_given_(parts.vsync_given) {}
 
     LoopResult run() {
         if (watcher_) last_generation_ = watcher_->generation();
@@ -39,6 +43,7 @@ class Loop {
             p_.overlay.set_errors(ErrorKind::settings, p_.settings_errors, kSettingsErrorSeconds);
         }
         applied_ = p_.settings;
+        session_.set_text_scale(p_.settings.ui_scale);
         look_ = look_now();
         p_.log.info("look: " + look_.summary);
         int w = 0, h = 0;
@@ -64,11 +69,8 @@ class Loop {
             simulate(dt);
             p_.overlay.advance(dt);
             clock_.advance(dt);  // the look's time runs on through pause, menus and --edit
-            if (!minimized_ || config_.frames > 0) {
-                draw();
-            } else {
-                SDL_Delay(20);  // nothing to show: do not spin
-            }
+            if (!minimized_ || config_.frames > 0) draw();
+            pace(now);  // also keeps a minimised window from spinning
             ++result_.frames;
             if (config_.frames > 0 && result_.frames >= config_.frames) running_ = false;
             if (session_.finished()) running_ = false;
@@ -91,7 +93,10 @@ class Loop {
                     break;
                 case SDL_WINDOWEVENT:
                     if (e.window.event == SDL_WINDOWEVENT_FOCUS_LOST) session_.on_focus_lost();
-                    if (e.window.event == SDL_WINDOWEVENT_MINIMIZED) minimized_ = true;
+                    if (e.window.event == SDL_WINDOWEVENT_MINIMIZED ||
+                        e.window.event == SDL_WINDOWEVENT_HIDDEN) {
+                        minimized_ = true;
+                    }
                     if (e.window.event == SDL_WINDOWEVENT_RESTORED ||
                         e.window.event == SDL_WINDOWEVENT_SHOWN) {
                         minimized_ = false;
@@ -100,12 +105,30 @@ class Loop {
                 case SDL_MOUSEBUTTONDOWN:
                     if (config_.edit && e.button.button == SDL_BUTTON_RIGHT)
                         SDL_SetRelativeMouseMode(SDL_TRUE);
+                    if (e.button.button == SDL_BUTTON_LEFT) {
+                        pointer_events_.push_back({Pointer::click, e.button.x, e.button.y});
+                    } else if (e.button.button == SDL_BUTTON_RIGHT ||
+                               e.button.button == SDL_BUTTON_X1) {
+                        pointer_events_.push_back({Pointer::back, e.button.x, e.button.y});
+                    }
                     break;
+                case SDL_MOUSEWHEEL: {
+                    int x = 0, y = 0;
+                    SDL_GetMouseState(&x, &y);
+                    const int dy =
+                        e.wheel.direction == SDL_MOUSEWHEEL_FLIPPED ? -e.wheel.y : e.wheel.y;
+                    for (int i = 0; i < std::min(std::abs(dy), 5); ++i) {
+                        pointer_events_.push_back(
+                            {dy > 0 ? Pointer::wheel_up : Pointer::wheel_down, x, y});
+                    }
+                    break;
+                }
                 case SDL_MOUSEBUTTONUP:
                     if (config_.edit && e.button.button == SDL_BUTTON_RIGHT)
                         SDL_SetRelativeMouseMode(SDL_FALSE);
                     break;
                 case SDL_MOUSEMOTION:
+                    pointer_events_.push_back({Pointer::move, e.motion.x, e.motion.y});
                     if (config_.edit && (e.motion.state & SDL_BUTTON_RMASK)) {
                         mouse_dx_ += static_cast<float>(e.motion.xrel);
                         mouse_dy_ += static_cast<float>(e.motion.yrel);
@@ -117,12 +140,42 @@ class Loop {
         }
     }
 
+    // Waits out the rest of the frame the pacer asks for (frame_pacer.h): no busy idling
+    // without vsync, in menus, in pause or while the window is hidden.
+    void pace(std::uint64_t frame_start) {
+        PaceInput in;
+        in.test_run = config_.frames > 0;
+        in.vsync_in_effect = vsync_given_ != platform::Vsync::off;
+        in.max_fps = p_.settings.max_fps;
+        if (result_.frames % 60 == 0) display_hz_ = display_hz();
+        in.display_hz = display_hz_;
+        const menu::Context c = session_.menu_context();
+        in.scene = minimized_                   ? PaceScene::hidden
+                   : c == menu::Context::paused ? PaceScene::paused
+                   : c == menu::Context::title  ? PaceScene::title_menu
+                                                : PaceScene::play;
+        const double want = min_frame_seconds(in);
+        if (want <= 0.0) return;
+        const double spent = static_cast<double>(SDL_GetPerformanceCounter() - frame_start) /
+                             static_cast<double>(SDL_GetPerformanceFrequency());
+        const double left_ms = (want - spent) * 1000.0;
+        if (left_ms >= 1.0) SDL_Delay(static_cast<Uint32>(left_ms));
+    }
+
+    int display_hz() const {
+        SDL_DisplayMode mode{};
+        const int index = SDL_GetWindowDisplayIndex(p_.context.window());
+        if (index < 0 || SDL_GetCurrentDisplayMode(index, &mode) != 0) return 0;
+        return mode.refresh_rate;
+    }
+
     menu::Env menu_env() const {
         menu::Env env;
         env.settings = &p_.settings;
         env.presets = p_.presets;
         env.levels = p_.levels;
         if (watcher_) env.current_level = watcher_->file();
+        env.vsync_given = p_.vsync_given;
         env.high_scores = session_.high_scores();
         env.high_scores_level = session_.high_scores_level();
         return env;
@@ -154,6 +207,8 @@ class Loop {
     bool update_menus() {
         menus_.env().high_scores = session_.high_scores();
         menus_.env().high_scores_level = session_.high_scores_level();
+        menus_.env().score_at_stake = session_.score_at_stake();
+        menus_.env().score_qualifies = session_.score_qualifies();
         menus_.set_context(session_.menu_context());
         const bool open = menus_.open();
         std::vector<menu::Request> requests;
@@ -166,8 +221,33 @@ class Loop {
             if (!open) continue;  // in play the same keys drive the tank
             for (const menu::Request& r : menus_.handle(k)) requests.push_back(r);
         }
+        // The mouse, in the order it happened since the last frame (menus are outside the
+        // fixed-step simulation: nothing here is sampled per tick).
+        for (const PointerEvent& e : std::exchange(pointer_events_, {})) {
+            if (!open || config_.edit) continue;
+            for (const menu::Request& r :
+                 menus_.pointer(e.what, hud_point(e.x, e.y), p_.font, hud_aspect())) {
+                requests.push_back(r);
+            }
+        }
         for (const menu::Request& r : requests) on_request(r);
         return open;
+    }
+
+    // Window points (mouse coordinates) as HUD units: origin at the centre, y up, the
+    // screen's half height one unit.
+    glm::vec2 hud_point(int x, int y) const {
+        int w = 0, h = 0;
+        SDL_GetWindowSize(p_.context.window(), &w, &h);
+        if (w <= 0 || h <= 0) return {0.0f, 0.0f};
+        const auto a = static_cast<float>(hud_aspect());
+        return {(2.0f * static_cast<float>(x) / static_cast<float>(w) - 1.0f) * a,
+                1.0f - 2.0f * static_cast<float>(y) / static_cast<float>(h)};
+    }
+    double hud_aspect() const {
+        return renderer_
+                   ? static_cast<double>(renderer_->width()) / std::max(1, renderer_->height())
+                   : 16.0 / 9.0;
     }
 
     void on_request(const menu::Request& r) {
@@ -235,18 +315,31 @@ class Loop {
         if (s.fullscreen != p_.context.fullscreen()) p_.context.set_fullscreen(s.fullscreen);
         if (s.vsync != applied_.vsync) {
             const platform::Vsync got = p_.context.set_vsync(s.vsync);
+            menus_.env().vsync_given = got;
+            vsync_given_ = got;
             if (got != s.vsync) {
                 p_.overlay.notify("vsync " + std::string(platform::vsync_name(s.vsync)) +
                                   " is not available here");
             }
         }
+        if (s.difficulty != applied_.difficulty || s.arcade != applied_.arcade) {
+            // Like --difficulty: the menu's choice is the player's say for this run.
+            session_.rules_changed(s.difficulty == "level" ? std::string() : s.difficulty,
+                                   arcade_rules(s.arcade));
+        }
         p_.input.set_bindings(s.keys);
         p_.input.set_gamepad_mode(s.gamepad);
+        session_.set_text_scale(s.ui_scale);
         if (s.keys != applied_.keys) session_.keys_changed(s.keys);
         // A choice made in the menu is the player's say for this run, like the command line.
-        if (p_.look_sources && (s.preset != applied_.preset || s.style != applied_.style)) {
+        if (p_.look_sources &&
+            (s.preset != applied_.preset || s.style != applied_.style || s.beam != applied_.beam ||
+             s.flashes != applied_.flashes || s.colour_safe != applied_.colour_safe)) {
             p_.look_sources->cli_preset = s.preset;
             p_.look_sources->cli_style = s.style;
+            p_.look_sources->cli_beam = s.beam;
+            p_.look_sources->flashes = s.flashes;
+            p_.look_sources->colour_safe = s.colour_safe;
             update_look();
         }
         applied_ = s;
@@ -449,6 +542,7 @@ class Loop {
         menus_.draw(frame.hud, p_.font, aspect, static_cast<std::uint64_t>(result_.frames));
         p_.overlay.set_footer(p_.settings.show_fps ? frame_stats_.readout() : std::string());
         p_.overlay.draw(frame.hud, aspect);
+        apply_comfort(frame, p_.settings.flashes, p_.settings.colour_safe);
         if (result_.frames + 1 == config_.screenshot_at) screenshot_requested_ = true;
         if (screenshot_requested_) {
             // From the renderer's own image, not the window: a window system may not have
@@ -506,6 +600,14 @@ class Loop {
     double since_poll_ = 0.0;
     std::uint64_t last_generation_ = 0;
     float mouse_dx_ = 0.0f, mouse_dy_ = 0.0f;
+    using Pointer = menu::PlayMenus::Pointer;
+    struct PointerEvent {
+        Pointer what;
+        int x = 0, y = 0;  // window points
+    };
+    std::vector<PointerEvent> pointer_events_;  // since the last frame, for the menus
+    platform::Vsync vsync_given_;               // what the driver gave
+    int display_hz_ = 0;
     std::vector<std::string> level_errors_;
     std::vector<std::string> model_errors_;
     std::vector<std::string> shader_errors_;

@@ -63,7 +63,8 @@ struct LoopParts {
     std::vector<menu::LevelChoice> levels;
     LookSources* look_sources = nullptr;
     std::function<std::string(const platform::Settings&)> save_settings;
-    std::vector<std::string> settings_errors;  // shown on screen for a while at the start
+    std::vector<std::string> settings_errors;           // shown on screen for a while at the start
+    platform::Vsync vsync_given = platform::Vsync::on;  // what the driver gave at the start
 };
 
 struct LoopResult {

@@ -1,9 +1,11 @@
 #include "app/play/play_options.h"
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 
 #include "app/commands/cli_args.h"
+#include "app/play/menu/play_menus.h"
 #include "core/text/printable.h"
 #include "platform/settings.h"
 #include "render/settings.h"
@@ -51,6 +53,26 @@ std::vector<ScriptedPress> parse_presses(std::string_view option, std::string_vi
         out.push_back(p);
     }
     return out;
+}
+
+// Every action with its default keys, two to a line, generated from the bindings so that
+// a key added there is never missing here.
+std::string key_table() {
+    const platform::Bindings keys = platform::default_bindings();
+    std::string out;
+    std::string line = " ";
+    for (std::size_t i = 0; i < platform::kActionCount; ++i) {
+        const auto a = static_cast<platform::Action>(i);
+        std::string label = menu::action_label(a);
+        for (char& c : label) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+        const std::string entry = label + ": " + platform::keys_label(keys, a, 4);
+        if (line.size() + entry.size() + 3 > 88) {
+            out += line + "\n";
+            line = " ";
+        }
+        line += (line.size() > 1 ? ";  " : " ") + entry;
+    }
+    return out + line + "\n";
 }
 
 }  // namespace
@@ -178,10 +200,10 @@ std::string play_usage(const std::string& settings_path, const std::string& high
            "                   F-G:KEY holds it from frame F to frame G\n"
            "  --headless-test  run in a hidden window, e.g. with SDL_VIDEODRIVER=offscreen\n"
            "                   (BEAMZONE_ALLOW_OFFSCREEN=1 does the same)\n"
-           "Keys (change them in Options > Keys, or in the settings file): treads Q/A and\n"
-           "E/D, or drive with the arrows (W/S too); fire Space or Ctrl; pause P or Esc; F11\n"
-           "or Alt+Enter fullscreen; F12 screenshot; F5 reload shaders; F3 frame rate; M mute;\n"
-           "+/- volume; F10 quit. Menus: arrows choose, Enter selects, Backspace or Esc back.\n"
+           "Keys (rebind them in game under Options > Keys, or in the settings file):\n" +
+           key_table() +
+           "Menus: arrows choose, Enter selects, Backspace or Esc back; the mouse works too\n"
+           "(hover selects, click chooses, the wheel scrolls, the right button goes back).\n"
            "Game controllers: sticks drive the treads (or the left stick alone: gamepad =\n"
            "\"drive\" in the settings), triggers, A or R1 fire, Start pauses or starts, B back.\n"
            "\n"

@@ -154,8 +154,8 @@ void PlayOverlay::draw(std::vector<scene::HudLine>& out, double aspect) const {
     }
 
     if (!footer_.empty()) {
-        const hud::Box fbox = hud::footer_box(a);
-        font_.draw(out, footer_, {fbox.max.x, fbox.min.y + kFooterHeight * kBaselineLift},
+        const hud::Box rbox = hud::readout_box(a);
+        font_.draw(out, footer_, {rbox.max.x, rbox.min.y + kFooterHeight * kBaselineLift},
                    kFooterHeight, kFooterColor, scene::TextAlign::right, 0.8f);
     }
 }

@@ -6,6 +6,7 @@
 
 #include "app/play/menu/play_menus.h"
 #include "core/interrupt.h"
+#include "game/difficulty/arcade_rules.h"
 #include "game/records/highscores.h"
 #include "level/level.h"
 #include "platform/free_fly.h"
@@ -53,8 +54,17 @@ class PlaySession {
     // What the menus chose; outside the simulation (a recording starts with the game).
     enum class MenuCommand : std::uint8_t { start_game, resume, quit_to_title };
     virtual void menu_command(MenuCommand) {}
+    // The player chose another difficulty ("easy", "normal", "arcade"; "" the level's) or
+    // arcade settings: games started from now on play by them.
+    virtual void rules_changed(const std::string& /*difficulty*/, const game::ArcadeRules&) {}
+    // The player's text size (1 to 2) for the HUD.
+    virtual void set_text_scale(float) {}
     // The player rebound keys: on-screen hints should name the new ones.
     virtual void keys_changed(const platform::Bindings&) {}
+    // The score of the game in play (0: none, or nothing to lose) and whether it would make
+    // the table: quitting such a game asks first.
+    virtual int score_at_stake() const { return 0; }
+    virtual bool score_qualifies() const { return false; }
     // The table the High scores page shows; null when the session keeps none.
     virtual const game::HighScoreTable* high_scores() const { return nullptr; }
     // The level that table belongs to (tables are kept per level), as the screen shows it.

@@ -39,6 +39,7 @@ class GameSession final : public PlaySession {
           log_(log) {
         options_.seed = o.seed.value_or(clock_seed());
         options_.difficulty = game::parse_difficulty(o.difficulty);
+        options_.arcade = o.arcade;
         game::HighScoreLoad scores = game::load_highscores(high_scores_path_);
         for (const std::string& e : scores.errors) log_.warn(e);
         if (!scores.message.empty()) {
@@ -85,6 +86,7 @@ class GameSession final : public PlaySession {
     }
 
     void tick(const platform::InputState& in) override {
+        apply_pending_rules();
         game::TickCommand cmd;
         if (menu_context() != menu::Context::none) {
             // A menu has the keys: the game under it only animates (the demo runs on).
@@ -119,6 +121,7 @@ class GameSession final : public PlaySession {
     void menu_command(MenuCommand c) override {
         switch (c) {
             case MenuCommand::start_game:
+                apply_pending_rules();
                 if (game_->screen() == game::Screen::attract) game_->start_game();
                 break;
             case MenuCommand::resume:
@@ -130,8 +133,21 @@ class GameSession final : public PlaySession {
         }
     }
 
+    void rules_changed(const std::string& difficulty, const game::ArcadeRules& arcade) override {
+        pending_rules_ = PendingRules{game::parse_difficulty(difficulty), arcade};
+        apply_pending_rules();
+    }
+
+    int score_at_stake() const override {
+        const bool in_game =
+            game_->screen() == game::Screen::playing || game_->screen() == game::Screen::paused;
+        return in_game && game_->world() && !game_->replaying() ? game_->world()->score() : 0;
+    }
+    bool score_qualifies() const override { return game_->score_qualifies(); }
+
     const game::HighScoreTable* high_scores() const override { return &game_->highscores(); }
     std::string high_scores_level() const override { return game_->highscores_title(); }
+    void set_text_scale(float scale) override { game_->set_text_scale(scale); }
     void keys_changed(const platform::Bindings& keys) override {
         game_->set_hints(screen_hints(keys));
     }
@@ -202,6 +218,22 @@ class GameSession final : public PlaySession {
     bool failed() const override { return game_->replay_mismatch().has_value(); }
 
   private:
+    // New rules wait for the title screen: the game in play (or paused) keeps the rules it
+    // began with, and its score goes into the table of those rules.
+    void apply_pending_rules() {
+        if (!pending_rules_ || game_->screen() != game::Screen::attract || game_->replaying()) {
+            return;
+        }
+        options_.difficulty = pending_rules_->difficulty;
+        options_.arcade = pending_rules_->arcade;
+        pending_rules_.reset();
+        game_->set_rules(options_.difficulty, options_.arcade);
+        if (const game::LevelKey key = key_of(game_->level()); key != key_) {
+            key_ = key;
+            game_->set_highscores(book_.table(key_));
+        }
+    }
+
     // A replay belongs to one level, so a reload ends the recording; saved now, and nothing
     // more is recorded this run.
     void end_recording(const game::replay::Replay& rec) {
@@ -218,11 +250,12 @@ class GameSession final : public PlaySession {
         }
     }
 
-    // Scores compare only within one level played at one difficulty: the key hashes the rules
-    // as played.
+    // Scores compare only within one level played at one difficulty and one set of arcade
+    // settings: the key hashes the rules as played.
     game::LevelKey key_of(const level::Level& lvl) const {
         const level::Difficulty d = options_.difficulty.value_or(lvl.enemies.difficulty);
-        return game::level_key(lvl.name, game::level_rules_hash(game::level_for(lvl, d)));
+        return game::level_key(lvl.name, game::level_rules_hash(game::with_arcade_rules(
+                                             game::level_for(lvl, d), options_.arcade)));
     }
 
     void save_scores() {
@@ -268,6 +301,11 @@ class GameSession final : public PlaySession {
     game::HighScoreBook book_;  // every level's table; the game shows key_'s
     game::LevelKey key_;
     bool scores_may_save_ = true;
+    struct PendingRules {
+        std::optional<level::Difficulty> difficulty;
+        game::ArcadeRules arcade;
+    };
+    std::optional<PendingRules> pending_rules_;
     std::vector<std::string> notices_;
 };
 
@@ -367,6 +405,14 @@ level::Level chosen_level(const SessionOptions& o) {
 }
 
 }  // namespace
+
+game::ArcadeRules arcade_rules(const platform::ArcadeDips& dips) {
+    game::ArcadeRules r;
+    r.lives = dips.lives;
+    r.missile_score = dips.missile_score;
+    r.bonus_score = dips.bonus_score;
+    return r;
+}
 
 SoundCue sound_cue(game::SoundEvent e) {
     using game::SoundEvent;

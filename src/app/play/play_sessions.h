@@ -10,6 +10,7 @@
 #include "game/hud/screens.h"
 #include "game/world/events.h"
 #include "platform/bindings.h"
+#include "platform/settings.h"
 #include "scene/vector_font.h"
 
 namespace bz {
@@ -22,6 +23,7 @@ struct SessionOptions {
     const level::Level* level = nullptr;  // nullptr: the game's built-in level
     std::optional<std::uint64_t> seed;    // none: from the clock
     std::string difficulty;               // "easy", "normal", "arcade"; else the level's
+    game::ArcadeRules arcade;             // the operator settings (settings file, [arcade])
     std::string record;                   // replay file to write at exit, or empty
     std::string replay;                   // replay file to play back, or empty
     std::filesystem::path high_scores;
@@ -30,6 +32,9 @@ struct SessionOptions {
     bool app_menus = true;  // title and pause menus come from the play loop (game::GameOptions)
     game::screens::Hints hints;  // key hints naming the player's keys
 };
+
+// The settings file's DIP switches as the game's rules.
+game::ArcadeRules arcade_rules(const platform::ArcadeDips& dips);
 
 // The game's on-screen hints for `keys` ("P / ESCAPE RESUME").
 game::screens::Hints screen_hints(const platform::Bindings& keys);

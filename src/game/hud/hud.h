@@ -16,7 +16,14 @@ struct View {
     double fov_y_deg = 45.0;
     int high_score = 0;
     const scene::VectorFont* font = nullptr;
+    // The player's text size (1 to 2): status text grows with it as far as its region allows
+    // (hud_layout.h), never into its neighbours.
+    float text_scale = 1.0f;
 };
+
+// The status text height for `view`: kTextHeight scaled, at most what keeps the two status
+// lines apart.
+float status_text_height(const View& view);
 
 // Text through the font if there is one.
 void text(std::vector<scene::HudLine>& out, const scene::VectorFont* font, std::string_view s,

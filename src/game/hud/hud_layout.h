@@ -33,8 +33,8 @@ struct Box {
 
 // The regions for a screen `aspect` wide (x spans -aspect..aspect). In the band, left to right:
 // messages ("ENEMY IN RANGE"), the radar, score over lives. Under the band: the error box.
-// Along the bottom: notices (screenshot saved, volume) and the footer line (key hints, replay
-// banner, frame rate).
+// Along the bottom: notices (screenshot saved, volume), the frame-rate readout, and the footer
+// line (key hints, replay banner).
 inline constexpr float kRadarGap = 0.03f;  // between the radar and its neighbours
 inline Box radar_box() {
     const glm::vec2 r{kRadarRadius + 0.015f};
@@ -57,7 +57,12 @@ inline Box error_box(float aspect) {
             {aspect - kMargin, kBandBottom - 0.02f}};
 }
 inline Box notice_box(float aspect) {
-    return {{-aspect + kMargin, -0.86f}, {aspect - kMargin, -0.56f}};
+    return {{-aspect + kMargin, -0.818f}, {aspect - kMargin, -0.56f}};
+}
+// The frame-rate readout's own strip, between the notices and the footer: it never covers the
+// key hints of the title, pause and edit screens.
+inline Box readout_box(float aspect) {
+    return {{-aspect + kMargin, -0.875f}, {aspect - kMargin, -0.822f}};
 }
 inline Box footer_box(float aspect) {
     return {{-aspect + kMargin, -0.98f}, {aspect - kMargin, -0.88f}};

@@ -1,6 +1,7 @@
 // Messages, score, high score and reserve tanks along the top of the screen.
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "game/hud/hud.h"
 #include "game/hud/hud_layout.h"
@@ -28,17 +29,36 @@ void tank_icon(std::vector<scene::HudLine>& out, glm::vec2 at, float size, glm::
         {at + glm::vec2(-0.15f, 0.42f) * size, at + glm::vec2(-0.75f, 0.42f) * size, color, 1.0f});
 }
 
+float status_text_height(const View& view) {
+    // The first line's top must stay under the screen's top margin, the second's under the
+    // first line's baseline.
+    const float most = std::min(kTopLine - kSecondLine, 1.0f - kTopLine - 0.04f);
+    return std::clamp(kTextHeight * view.text_scale, kTextHeight, std::max(kTextHeight, most));
+}
+
 void status(std::vector<scene::HudLine>& out, const World& world, const View& view) {
     const auto aspect = static_cast<float>(view.aspect);
     const Awareness a = world.awareness();
     const float left = -aspect + kMargin;
+    const float h = status_text_height(view);
+    // Text that would run past its region at this size is drawn smaller to fit it.
+    auto fitted = [&](const std::string& s, const Box& box) {
+        if (!view.font) return h;
+        const float w = view.font->width(s, h);
+        return w > box.width() ? h * box.width() / w : h;
+    };
+    const Box messages = messages_box(aspect);
+    const Box score = score_box(aspect);
+    auto message = [&](const std::string& s, float y) {
+        text(out, view.font, s, {left, y}, fitted(s, messages), kRed);
+    };
     // The original flashes its warnings; a steady half-second blink keeps it readable.
     const bool blink_on = (world.state().tick / 20) % 3 != 0;
     if (a.enemy_in_range && blink_on) {
-        text(out, view.font, "ENEMY IN RANGE", {left, kTopLine}, kTextHeight, kRed);
+        message("ENEMY IN RANGE", kTopLine);
     }
     if (a.motion_blocked) {
-        text(out, view.font, "MOTION BLOCKED BY OBJECT", {left, kSecondLine}, kTextHeight, kRed);
+        message("MOTION BLOCKED BY OBJECT", kSecondLine);
     } else if (a.enemy_present && blink_on) {
         const char* where = nullptr;
         switch (a.direction) {
@@ -55,15 +75,17 @@ void status(std::vector<scene::HudLine>& out, const World& world, const View& vi
             case EnemyDirection::none:
                 break;
         }
-        if (where) text(out, view.font, where, {left, kSecondLine}, kTextHeight, kRed);
+        if (where) message(where, kSecondLine);
     }
 
     const float right = aspect - kMargin;
-    text(out, view.font, "SCORE " + std::to_string(world.score()), {right, kTopLine}, kTextHeight,
-         kRed, scene::TextAlign::right);
+    const std::string score_text = "SCORE " + std::to_string(world.score());
     const int high = std::max(view.high_score, world.score());
-    text(out, view.font, "HIGH SCORE " + std::to_string(high), {right, kSecondLine}, kTextHeight,
-         kRed, scene::TextAlign::right);
+    const std::string high_text = "HIGH SCORE " + std::to_string(high);
+    // Both lines at one size: the longer decides.
+    const float sh = std::min(fitted(score_text, score), fitted(high_text, score));
+    text(out, view.font, score_text, {right, kTopLine}, sh, kRed, scene::TextAlign::right);
+    text(out, view.font, high_text, {right, kSecondLine}, sh, kRed, scene::TextAlign::right);
     // Reserve tanks: the ones after the tank in play.
     constexpr float kIcon = 0.07f;
     const int reserve = std::max(0, world.lives() - (world.phase() == Phase::game_over ? 0 : 1));

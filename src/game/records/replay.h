@@ -10,6 +10,8 @@
 //   level-hash 0123456789abcdef
 //   lives 3
 //   difficulty normal      optional (older files: normal)
+//   missile-score 30000    optional: the arcade setting it was played with (else the level's)
+//   bonus-score 0          optional: the first bonus tank, 0 none (else the level's)
 //   hash-interval 60
 //   ticks 3600
 //   c COUNT LEFT RIGHT BUTTONS   a run of COUNT identical commands (treads -127..127, buttons hex)
@@ -43,6 +45,8 @@ struct Header {
     std::uint64_t level_hash = 0;
     int lives = 3;
     level::Difficulty difficulty = level::Difficulty::normal;
+    std::optional<int> missile_score;  // arcade settings (game/difficulty/arcade_rules.h)
+    std::optional<int> bonus_score;
     int hash_interval = 60;
 };
 

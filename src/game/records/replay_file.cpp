@@ -102,6 +102,9 @@ std::string text_value(const LineError& err, std::string_view value, std::size_t
     return std::string(value);
 }
 
+// A rule's score (missiles from, the first bonus tank): the high-score table's largest.
+constexpr int kMaxRuleScore = 99'999'999;
+
 using Fields = std::vector<std::string_view>;
 
 // Reads a replay line by line: the magic line first, then header fields, command runs and
@@ -196,6 +199,14 @@ class Reader {
                                       std::string(kDifficultyNames) + ")");
             }
             h.difficulty = *d;
+        } else if (key == "missile-score" || key == "bonus-score") {
+            want(err, f, 2);
+            const int v = err.number<int>(f[1], "score");
+            if (v < 0 || v > kMaxRuleScore) {
+                err.fail_at(f[1],
+                            std::string(key) + " must be 0.." + std::to_string(kMaxRuleScore));
+            }
+            (key == "missile-score" ? h.missile_score : h.bonus_score) = v;
         } else if (key == "hash-interval") {
             want(err, f, 2);
             h.hash_interval = err.number<int>(f[1], "hash interval");
@@ -304,6 +315,10 @@ std::string serialise(const Replay& r) {
     out += "level-hash " + hex(r.header.level_hash) + "\n";
     out += "lives " + std::to_string(r.header.lives) + "\n";
     out += "difficulty " + std::string(difficulty_name(r.header.difficulty)) + "\n";
+    if (r.header.missile_score) {
+        out += "missile-score " + std::to_string(*r.header.missile_score) + "\n";
+    }
+    if (r.header.bonus_score) out += "bonus-score " + std::to_string(*r.header.bonus_score) + "\n";
     out += "hash-interval " + std::to_string(r.header.hash_interval) + "\n";
     out += "ticks " + std::to_string(r.commands.size()) + "\n";
     for (std::size_t i = 0; i < r.commands.size();) {

@@ -10,9 +10,9 @@ namespace bz::level::detail {
 
 namespace {
 
-constexpr std::array<std::string_view, 11> kRootKeys = {
-    "version",  "name",    "author",   "description", "field",     "player",
-    "obstacle", "enemies", "backdrop", "render",      "camera_key"};
+constexpr std::array<std::string_view, 13> kRootKeys = {
+    "version", "name",     "author",  "description", "listed", "menu_order", "field",
+    "player",  "obstacle", "enemies", "backdrop",    "render", "camera_key"};
 constexpr std::array<std::string_view, 3> kFieldKeys = {"size", "wrap", "obstacle_color"};
 constexpr std::array<std::string_view, 4> kPlayerKeys = {"position", "heading", "lives",
                                                          "bonus_scores"};

@@ -28,6 +28,7 @@ void pass_composite(const PassContext& ctx, const gl::Texture2D& picture, bool b
     p.set("u_bloom_strength", bloom ? ctx.settings.bloom_strength : 0.0f);
     p.set("u_exposure", ctx.settings.exposure);
     p.set("u_overlay", ctx.settings.beam.overlay ? 1 : 0);
+    p.set("u_overlay_safe", ctx.settings.beam.colour_safe ? 1 : 0);
     p.set("u_inv_screen",
           glm::vec2(1.0f / static_cast<float>(width), 1.0f / static_cast<float>(height)));
     picture.bind(0);

@@ -130,6 +130,24 @@ TEST(PlayLook, BeamIsMameByDefaultAndFollowsCommandLineThenSettingsThenLevel) {
     EXPECT_EQ(choose_look(s, &lv).render.beam.look, "classic");
 }
 
+TEST(PlayLook, FlashesSoftenOrStopFlickerAndTrailsAndColourSafeReachesTheOverlay) {
+    LookSources s;
+    const PlayLook full = choose_look(s, nullptr);
+    ASSERT_GT(full.render.beam.flicker, 0.0f) << "the mame beam flickers";
+    ASSERT_NE(full.render.beam.phosphor, render::PhosphorDecay::off);
+    s.flashes = "soft";
+    const PlayLook soft = choose_look(s, nullptr);
+    EXPECT_FLOAT_EQ(soft.render.beam.flicker, 0.5f * full.render.beam.flicker);
+    EXPECT_FLOAT_EQ(soft.render.beam.persistence_ms, 0.5f * full.render.beam.persistence_ms);
+    s.flashes = "off";
+    s.colour_safe = true;
+    const PlayLook off = choose_look(s, nullptr);
+    EXPECT_EQ(off.render.beam.flicker, 0.0f);
+    EXPECT_EQ(off.render.beam.phosphor, render::PhosphorDecay::off);
+    EXPECT_TRUE(off.render.beam.colour_safe);
+    EXPECT_NE(off.summary.find("no flicker or trails"), std::string::npos) << off.summary;
+}
+
 TEST(PlayLook, ABadSettingsValueDoesNotCountAsNamed) {
     const platform::SettingsLoad s =
         platform::parse_settings("preset = \"ultra\"\nstyle = 3\n", "settings.toml",

@@ -99,7 +99,7 @@ TEST(PlayOverlay, NoticesAndFooterStayInTheirRegions) {
     const float a = 16.0f / 9.0f;
     for (const scene::HudLine& l : out) {
         const bool ok = (hud::notice_box(a).contains(l.a) && hud::notice_box(a).contains(l.b)) ||
-                        (hud::footer_box(a).contains(l.a) && hud::footer_box(a).contains(l.b));
+                        (hud::readout_box(a).contains(l.a) && hud::readout_box(a).contains(l.b));
         EXPECT_TRUE(ok) << l.a.x << "," << l.a.y;
     }
 }

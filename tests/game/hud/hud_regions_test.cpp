@@ -30,10 +30,10 @@ bool overlap(const hud::Box& a, const hud::Box& b) {
 
 TEST(HudRegions, RegionsDoNotOverlapAtCommonAspects) {
     for (const float aspect : {4.0f / 3.0f, 16.0f / 10.0f, 16.0f / 9.0f, 21.0f / 9.0f}) {
-        const std::vector<hud::Box> boxes = {hud::radar_box(),       hud::messages_box(aspect),
-                                             hud::score_box(aspect), hud::lives_box(aspect),
-                                             hud::error_box(aspect), hud::notice_box(aspect),
-                                             hud::footer_box(aspect)};
+        const std::vector<hud::Box> boxes = {hud::radar_box(),        hud::messages_box(aspect),
+                                             hud::score_box(aspect),  hud::lives_box(aspect),
+                                             hud::error_box(aspect),  hud::notice_box(aspect),
+                                             hud::footer_box(aspect), hud::readout_box(aspect)};
         for (std::size_t i = 0; i < boxes.size(); ++i) {
             EXPECT_GT(boxes[i].width(), 0.0f) << i;
             EXPECT_GT(boxes[i].height(), 0.0f) << i;
@@ -56,46 +56,61 @@ TEST(HudRegions, RegionsDoNotOverlapAtCommonAspects) {
 }
 
 TEST(HudRegions, EachPartDrawsOnlyInItsRegion) {
-    for (const double aspect : {4.0 / 3.0, 16.0 / 9.0}) {
-        const auto a = static_cast<float>(aspect);
-        hud::View v;
-        v.aspect = aspect;
-        v.font = &font();
-        v.high_score = 987650;
-        // A world with everything showing: an enemy in range to the rear, a big score, a
-        // blocked tank.
-        level::Level lv = test::empty_level();
-        lv.obstacles.push_back(test::object("cube", 0, -6));
-        World w = test::make_world(lv);
-        for (int i = 0; i < 30; ++i) w.step(test::drive(1, 1));
-        w.spawn_hostile(HostileKind::slow_tank, {2, 30});
-        for (int i = 0; i < 25; ++i) w.step(TickCommand{});
+    // 800x600 to 3840x2160 and wider, at the player's smallest and largest text sizes.
+    for (const float scale : {1.0f, 1.5f, 2.0f}) {
+        for (const double aspect : {4.0 / 3.0, 16.0 / 9.0, 21.0 / 9.0}) {
+            const auto a = static_cast<float>(aspect);
+            hud::View v;
+            v.text_scale = scale;
+            v.aspect = aspect;
+            v.font = &font();
+            v.high_score = 987650;
+            // A world with everything showing: an enemy in range to the rear, a big score, a
+            // blocked tank.
+            level::Level lv = test::empty_level();
+            lv.obstacles.push_back(test::object("cube", 0, -6));
+            World w = test::make_world(lv);
+            for (int i = 0; i < 30; ++i) w.step(test::drive(1, 1));
+            w.spawn_hostile(HostileKind::slow_tank, {2, 30});
+            for (int i = 0; i < 25; ++i) w.step(TickCommand{});
 
-        std::vector<scene::HudLine> radar, status;
-        hud::radar(radar, w, v);
-        hud::status(status, w, v);
-        ASSERT_FALSE(radar.empty());
-        ASSERT_FALSE(status.empty());
-        EXPECT_TRUE(in_box(radar, hud::radar_box()));
-        // status = messages (left), score (right top), lives (right below): each line in one.
-        int messages = 0, score = 0, lives = 0;
-        for (const scene::HudLine& l : status) {
-            const std::vector<scene::HudLine> one{l};
-            if (in_box(one, hud::messages_box(a))) {
-                ++messages;
-            } else if (in_box(one, hud::score_box(a))) {
-                ++score;
-            } else if (in_box(one, hud::lives_box(a))) {
-                ++lives;
-            } else {
-                ADD_FAILURE() << "a status line outside every region: (" << l.a.x << ", " << l.a.y
-                              << ") - (" << l.b.x << ", " << l.b.y << ") at aspect " << aspect;
+            std::vector<scene::HudLine> radar, status;
+            hud::radar(radar, w, v);
+            hud::status(status, w, v);
+            ASSERT_FALSE(radar.empty());
+            ASSERT_FALSE(status.empty());
+            EXPECT_TRUE(in_box(radar, hud::radar_box()));
+            // status = messages (left), score (right top), lives (right below): each line in one.
+            int messages = 0, score = 0, lives = 0;
+            for (const scene::HudLine& l : status) {
+                const std::vector<scene::HudLine> one{l};
+                if (in_box(one, hud::messages_box(a))) {
+                    ++messages;
+                } else if (in_box(one, hud::score_box(a))) {
+                    ++score;
+                } else if (in_box(one, hud::lives_box(a))) {
+                    ++lives;
+                } else {
+                    ADD_FAILURE() << "a status line outside every region: (" << l.a.x << ", "
+                                  << l.a.y << ") - (" << l.b.x << ", " << l.b.y << ") at aspect "
+                                  << aspect;
+                }
             }
+            EXPECT_GT(messages, 0);
+            EXPECT_GT(score, 0);
+            EXPECT_GT(lives, 0);
         }
-        EXPECT_GT(messages, 0);
-        EXPECT_GT(score, 0);
-        EXPECT_GT(lives, 0);
     }
+}
+
+TEST(HudRegions, LargerTextGrowsTheStatusUpToWhatItsLinesAllow) {
+    hud::View v;
+    EXPECT_FLOAT_EQ(hud::status_text_height(v), hud::kTextHeight);
+    v.text_scale = 1.5f;
+    EXPECT_FLOAT_EQ(hud::status_text_height(v), 1.5f * hud::kTextHeight);
+    v.text_scale = 2.0f;
+    EXPECT_GT(hud::status_text_height(v), 1.5f * hud::kTextHeight);
+    EXPECT_LE(hud::status_text_height(v), hud::kTopLine - hud::kSecondLine);
 }
 
 TEST(HudRegions, TheSceneStaysUnderTheBandInPlayOnly) {

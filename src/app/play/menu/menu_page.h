@@ -2,9 +2,11 @@
 // One menu screen as plain data (a title, rows, a hint line) and how it is drawn as vector
 // text. The rows scroll when there are more than fit; the selected one is marked.
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "game/hud/hud_layout.h"
 #include "scene/frame_list.h"
 #include "scene/vector_font.h"
 
@@ -63,8 +65,29 @@ struct Window {
 };
 Window scroll_window(std::size_t rows, std::size_t selected, std::size_t visible);
 
-// Appends the page's lines (HUD units). `tick` blinks the selection marker.
+// Where a page's rows go (HUD units) at a text scale (the UI scale setting, 1 to 2): drawing
+// and the mouse use the same placement, so a row is hit where it is drawn.
+struct PlacedRow {
+    std::size_t row = 0;  // index into Page::rows
+    float y = 0.0f;       // text baseline
+    game::hud::Box box;   // where the pointer picks it
+};
+struct Placement {
+    Layout layout;
+    Window window;
+    std::vector<PlacedRow> rows;  // the rows shown, top down
+    float text_height = 0.0f;
+    float label_x = 0.0f, value_x = 0.0f, note_x = 0.0f;
+    float after_rows_y = 0.0f;  // the baseline after the last row shown
+};
+Placement place(const scene::VectorFont& font, const Page& page, std::size_t selected,
+                double aspect, float scale = 1.0f);
+// The selectable row under `at` (HUD units), if any.
+std::optional<std::size_t> row_at(const Placement& placement, const Page& page, glm::vec2 at);
+
+// Appends the page's lines (HUD units). `tick` blinks the selection marker; `scale` is the
+// player's text size.
 void draw(std::vector<scene::HudLine>& out, const scene::VectorFont& font, const Page& page,
-          std::size_t selected, double aspect, std::uint64_t tick);
+          std::size_t selected, double aspect, std::uint64_t tick, float scale = 1.0f);
 
 }  // namespace bz::app::menu

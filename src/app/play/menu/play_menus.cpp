@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
+#include <optional>
+#include <span>
 
 #include "scene/style.h"
 
@@ -16,17 +19,24 @@ using platform::MenuKey;
 enum TitleRow : std::size_t { t_start, t_level, t_options, t_controls, t_scores, t_quit };
 enum PauseRow : std::size_t { p_resume, p_options, p_controls, p_quit_to_title };
 enum OptionRow : std::size_t {
+    o_difficulty,
     o_preset,
     o_style,
+    o_beam,
     o_volume,
     o_fullscreen,
     o_vsync,
-    o_gamepad,
     o_fps,
+    o_max_fps,
+    o_comfort,
+    o_arcade,
+    o_gamepad,
     o_keys,
     o_reset_keys,
     o_back
 };
+enum ComfortRow : std::size_t { c_ui_scale, c_flashes, c_colour_safe, c_back };
+enum ArcadeRow : std::size_t { a_lives, a_missile, a_bonus, a_back };
 
 constexpr float kVolumeStep = 0.1f;
 
@@ -36,6 +46,11 @@ std::vector<std::string> style_names() {
     for (const scene::Style s : scene::all_styles()) out.emplace_back(scene::style_name(s));
     return out;
 }
+
+constexpr float kUiScaleStep = 0.25f;
+const std::string kBeams[] = {"mame", "classic"};
+constexpr int kFrameRateCaps[] = {0, 30, 60, 75, 120, 144, 240};  // 0: AUTO
+const std::string kDifficulties[] = {"level", "easy", "normal", "arcade"};
 
 std::string upper(std::string s) {
     for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
@@ -61,6 +76,30 @@ std::string level_label(const Env& env) {
         if (l.file == env.current_level) return l.name;
     }
     return upper(env.current_level.stem().string());
+}
+
+// One DIP switch: the level's rule, then each setting of the switch, wrapping.
+std::optional<int> cycle_dip(std::span<const int> values, const std::optional<int>& current,
+                             int by) {
+    const auto n = static_cast<int>(values.size()) + 1;  // + the level's own
+    int i = 0;
+    if (current) {
+        const auto it = std::find(values.begin(), values.end(), *current);
+        i = it == values.end() ? 0 : static_cast<int>(it - values.begin()) + 1;
+    }
+    i = ((i + by) % n + n) % n;
+    if (i == 0) return std::nullopt;
+    return values[static_cast<std::size_t>(i - 1)];
+}
+
+std::string dip_label(const std::optional<int>& v) {
+    return v ? std::to_string(*v) : std::string("LEVEL'S");
+}
+
+std::string scale_label(float s) {
+    char buf[16];
+    std::snprintf(buf, sizeof buf, "%gX", static_cast<double>(s));  // 1X, 1.25X, 2X
+    return buf;
 }
 
 std::string hint_keys(const platform::Bindings& b, Action a) {
@@ -177,6 +216,8 @@ std::string PlayMenus::hint(Screen s) const {
             return platform::keys_label(b, Action::pause) + " RESUME   " + choose + "   " + select +
                    pad;
         case Screen::options:
+        case Screen::comfort:
+        case Screen::arcade:
             return choose + "   " + hint_keys(b, Action::turn_left) + " / " +
                    hint_keys(b, Action::turn_right) + " CHANGE   " + back + pad;
         case Screen::keys:
@@ -210,28 +251,89 @@ Page PlayMenus::build(Screen s) const {
             for (const LevelChoice& l : env_.levels) {
                 Row r = item(l.name, l.user ? "YOUR LEVEL" : "");
                 if (l.file == env_.current_level) r.note = "PLAYING";
+                if (!l.loads) {
+                    r.note = "HAS ERRORS";
+                    r.warn = true;
+                }
                 p.rows.push_back(r);
             }
             p.rows.push_back(item("BACK"));
+            // The selected level's one line (the page is built for the row selected now).
+            if (!stack_.empty() && stack_.back().screen == Screen::levels &&
+                stack_.back().selected < env_.levels.size()) {
+                const std::string& d = env_.levels[stack_.back().selected].description;
+                if (!d.empty()) p.lines.push_back(d);
+            }
             break;
         case Screen::options: {
             p.title = "OPTIONS";
             p.columns = true;
             const int volume = static_cast<int>(std::lround(st.volume * 100.0f));
             const bool tank = st.gamepad == platform::GamepadMode::tank;
+            const std::string difficulty =
+                st.difficulty == "level" ? std::string("LEVEL'S") : upper(st.difficulty);
+            std::string vsync_note;
+            if (env_.vsync_given && *env_.vsync_given != st.vsync) {
+                // What the driver gave, not what was asked for.
+                vsync_note = "GOT " + upper(std::string(platform::vsync_name(*env_.vsync_given)));
+            }
             p.rows = {
+                choice("DIFFICULTY", difficulty, context_ == Context::paused ? "NEXT GAME" : ""),
                 choice("PRESET", upper(st.preset)),
                 choice("STYLE", upper(st.style)),
-                choice("VOLUME", std::to_string(volume) + "%", st.mute ? "MUTED" : ""),
+                choice("BEAM", upper(st.beam), st.beam == "mame" ? "PHOSPHOR, GLOW" : "STEADY"),
+                choice("EFFECTS VOLUME", std::to_string(volume) + "%", st.mute ? "MUTED" : ""),
                 choice("FULLSCREEN", on_off(st.fullscreen)),
-                choice("VSYNC", upper(std::string(platform::vsync_name(st.vsync)))),
+                choice("VSYNC", upper(std::string(platform::vsync_name(st.vsync))), vsync_note),
+                choice("SHOW FPS", on_off(st.show_fps)),
+                choice("FRAME RATE CAP", st.max_fps > 0 ? std::to_string(st.max_fps) : "AUTO",
+                       st.max_fps > 0 ? "ALWAYS" : "DISPLAY RATE WITHOUT VSYNC"),
+                item("COMFORT AND TEXT"),
+                item("ARCADE SETTINGS", st.arcade.any() ? "CHANGED" : ""),
                 choice("GAMEPAD LAYOUT", tank ? "TANK" : "DRIVE",
                        tank ? "STICK PER TREAD" : "LEFT STICK"),
-                choice("SHOW FPS", on_off(st.show_fps)),
                 item("KEYS"),
                 item("RESET KEYS TO DEFAULTS"),
                 item("BACK"),
             };
+            if (vsync_note.size()) p.rows[o_vsync].warn = true;
+            if (!env_.save_status.empty()) p.lines.push_back(env_.save_status);
+            break;
+        }
+        case Screen::comfort: {
+            p.title = "COMFORT AND TEXT";
+            p.columns = true;
+            p.rows = {
+                choice("TEXT SIZE", scale_label(st.ui_scale), "MENUS AND HUD"),
+                choice("FLICKER AND FLASHES", upper(st.flashes),
+                       st.flashes == "full"   ? "AS DESIGNED"
+                       : st.flashes == "soft" ? "HALVED"
+                                              : "NO FLICKER, FLASH OR TRAILS"),
+                choice("COLOUR-SAFE PALETTE", on_off(st.colour_safe),
+                       st.colour_safe ? "RED SHOWN VIOLET-BLUE" : ""),
+                item("BACK"),
+            };
+            if (!env_.save_status.empty()) p.lines.push_back(env_.save_status);
+            break;
+        }
+        case Screen::arcade: {
+            p.title = "ARCADE SETTINGS";
+            p.columns = true;
+            const platform::ArcadeDips& d = st.arcade;
+            std::string bonus = "LEVEL'S";
+            if (d.bonus_score) {
+                bonus = *d.bonus_score == 0 ? std::string("NONE")
+                                            : std::to_string(*d.bonus_score) + " AND " +
+                                                  std::to_string(platform::kDipSecondBonus);
+            }
+            p.rows = {
+                choice("TANKS", dip_label(d.lives), "2 TO 5"),
+                choice("MISSILES FROM", dip_label(d.missile_score), "5000 TO 30000"),
+                choice("BONUS TANKS", bonus),
+                item("BACK"),
+            };
+            p.lines.push_back("THE 1980 MACHINE'S SWITCHES. SCORES ARE KEPT APART BY THEM");
+            if (context_ == Context::paused) p.lines.push_back("FROM THE NEXT GAME");
             if (!env_.save_status.empty()) p.lines.push_back(env_.save_status);
             break;
         }
@@ -268,6 +370,16 @@ Page PlayMenus::build(Screen s) const {
                                       pad_label(a, st.gamepad)));
             }
             p.rows.push_back(item("BACK"));
+            break;
+        }
+        case Screen::confirm_quit: {
+            p.title = "QUIT THIS GAME?";
+            p.under_band = true;
+            p.rows = {item("KEEP PLAYING"),
+                      item(env_.score_qualifies ? "QUIT AND ENTER INITIALS" : "QUIT TO TITLE")};
+            p.lines.push_back("SCORE " + std::to_string(env_.score_at_stake) +
+                              (env_.score_qualifies ? ": A HIGH SCORE, KEPT WITH YOUR INITIALS"
+                                                    : ": NOT A HIGH SCORE, IT WILL BE LOST"));
             break;
         }
         case Screen::high_scores: {
@@ -328,8 +440,66 @@ std::vector<Request> PlayMenus::change(int by) {
         out.push_back({Request::Kind::choose_level, cycle(files, env_.current_level.string(), by)});
         return out;
     }
+    if (screen() == Screen::comfort) {
+        switch (row) {
+            case c_ui_scale: {
+                const float v = std::round((st.ui_scale + static_cast<float>(by) * kUiScaleStep) /
+                                           kUiScaleStep) *
+                                kUiScaleStep;
+                st.ui_scale = v > platform::kMaxUiScale + 1e-3f   ? platform::kMinUiScale
+                              : v < platform::kMinUiScale - 1e-3f ? platform::kMaxUiScale
+                                                                  : v;
+                break;
+            }
+            case c_flashes:
+                st.flashes =
+                    cycle({std::begin(platform::kFlashLevels), std::end(platform::kFlashLevels)},
+                          st.flashes, by);
+                break;
+            case c_colour_safe:
+                st.colour_safe = !st.colour_safe;
+                break;
+            default:
+                return out;
+        }
+        out.push_back({Request::Kind::settings_changed});
+        return out;
+    }
+    if (screen() == Screen::arcade) {
+        platform::ArcadeDips& d = st.arcade;
+        switch (row) {
+            case a_lives:
+                d.lives = cycle_dip(platform::kDipLives, d.lives, by);
+                break;
+            case a_missile:
+                d.missile_score = cycle_dip(platform::kDipMissileScores, d.missile_score, by);
+                break;
+            case a_bonus:
+                d.bonus_score = cycle_dip(platform::kDipBonusScores, d.bonus_score, by);
+                break;
+            default:
+                return out;
+        }
+        out.push_back({Request::Kind::settings_changed});
+        return out;
+    }
     if (screen() != Screen::options) return out;
     switch (row) {
+        case o_difficulty:
+            st.difficulty =
+                cycle({std::begin(kDifficulties), std::end(kDifficulties)}, st.difficulty, by);
+            break;
+        case o_beam:
+            st.beam = cycle({std::begin(kBeams), std::end(kBeams)}, st.beam, by);
+            break;
+        case o_max_fps: {
+            const auto caps = std::span<const int>(kFrameRateCaps);
+            const auto it = std::find(caps.begin(), caps.end(), st.max_fps);
+            const auto n = static_cast<int>(caps.size());
+            const int i = it == caps.end() ? 0 : static_cast<int>(it - caps.begin());
+            st.max_fps = caps[static_cast<std::size_t>(((i + by) % n + n) % n)];
+            break;
+        }
         case o_preset:
             st.preset = cycle(env_.presets, st.preset, by);
             break;
@@ -416,7 +586,12 @@ std::vector<Request> PlayMenus::confirm() {
                     open_page(Screen::controls);
                     break;
                 case p_quit_to_title:
-                    out.push_back({Request::Kind::quit_to_title});
+                    // A game with a score is never thrown away on one key: ask first.
+                    if (env_.score_at_stake > 0) {
+                        open_page(Screen::confirm_quit);
+                    } else {
+                        out.push_back({Request::Kind::quit_to_title});
+                    }
                     break;
                 default:
                     break;
@@ -431,12 +606,26 @@ std::vector<Request> PlayMenus::confirm() {
         case Screen::options:
             if (row == o_keys) {
                 open_page(Screen::keys);
+            } else if (row == o_comfort) {
+                open_page(Screen::comfort);
+            } else if (row == o_arcade) {
+                open_page(Screen::arcade);
             } else if (row == o_reset_keys) {
                 env_.settings->keys = platform::default_bindings();
                 out.push_back({Request::Kind::settings_changed});
             } else {
                 out = change(1);
             }
+            break;
+        case Screen::comfort:
+        case Screen::arcade:
+            out = change(1);
+            break;
+        case Screen::confirm_quit:
+            if (row == 1)
+                out.push_back({Request::Kind::quit_to_title});
+            else
+                back(out);  // KEEP PLAYING: the pause menu again
             break;
         case Screen::keys:
             if (row < platform::kActionCount) {
@@ -476,6 +665,41 @@ std::vector<Request> PlayMenus::handle(MenuKey key) {
     return out;
 }
 
+std::vector<Request> PlayMenus::pointer(Pointer what, glm::vec2 at, const scene::VectorFont& font,
+                                        double aspect) {
+    std::vector<Request> out;
+    if (!open() || capturing_ || stack_.empty()) return out;
+    const float scale = env_.settings ? env_.settings->ui_scale : 1.0f;
+    const Page p = page();
+    const auto hit = row_at(place(font, p, selected(), aspect, scale), p, at);
+    switch (what) {
+        case Pointer::move:
+            if (hit) stack_.back().selected = *hit;
+            break;
+        case Pointer::click:
+            if (hit) {
+                stack_.back().selected = *hit;
+                out = confirm();
+            }
+            break;
+        case Pointer::back:
+            back(out);
+            break;
+        case Pointer::wheel_up:
+        case Pointer::wheel_down: {
+            // The wheel stops at the ends of a list rather than wrapping round.
+            const std::size_t before = selected();
+            const int by = what == Pointer::wheel_up ? -1 : 1;
+            move(by);
+            if ((by < 0 && selected() > before) || (by > 0 && selected() < before)) {
+                stack_.back().selected = before;
+            }
+            break;
+        }
+    }
+    return out;
+}
+
 std::vector<Request> PlayMenus::captured(const platform::KeyBinding& key) {
     std::vector<Request> out;
     if (!capturing_) return out;
@@ -500,6 +724,7 @@ float PlayMenus::scene_intensity() const {
         case Screen::title:
             return 0.45f;  // on top of the game's own dimming of the demo
         case Screen::paused:
+        case Screen::confirm_quit:
             return 0.6f;
         default:
             return 0.15f;  // lists of text: the scene only as a faint backdrop
@@ -507,13 +732,15 @@ float PlayMenus::scene_intensity() const {
 }
 
 bool PlayMenus::keeps_game_hud() const {
-    return !open() || screen() == Screen::paused || screen() == Screen::title;
+    return !open() || screen() == Screen::paused || screen() == Screen::title ||
+           screen() == Screen::confirm_quit;
 }
 
 void PlayMenus::draw(std::vector<scene::HudLine>& out, const scene::VectorFont& font, double aspect,
                      std::uint64_t tick) const {
     if (!open() || stack_.empty()) return;
-    menu::draw(out, font, page(), selected(), aspect, tick);
+    menu::draw(out, font, page(), selected(), aspect, tick,
+               env_.settings ? env_.settings->ui_scale : 1.0f);
 }
 
 }  // namespace bz::app::menu

@@ -1,12 +1,15 @@
 #pragma once
 // The menus around the game, outside the simulation: the title menu (start, level, options,
 // controls, high scores, quit), the pause menu (resume, options, controls, quit to title), the
-// options (preset, style, volume, window, vsync, gamepad layout, frame-rate readout, keys) and
+// options (difficulty, preset, style, beam, volume, window, vsync, frame-rate readout; comfort
+// and text: text size, flicker and flashes, colour-safe palette; the arcade machine's
+// switches; gamepad layout, keys) and
 // the controls screen with the keys and buttons actually bound. Driven by menu keys, so the
 // keyboard and a gamepad work alike; what a choice does outside the menus (start a game, apply
 // and save a setting, capture a key) comes back as requests for the play loop.
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,9 +23,12 @@ namespace bz::app::menu {
 enum class Context : std::uint8_t { none, title, paused };
 
 struct LevelChoice {
-    std::string name;  // shown, e.g. "CLASSIC"
+    std::string name;  // shown, e.g. "NIGHT VOLCANO" (the level's own name)
     std::filesystem::path file;
-    bool user = false;  // from the player's own level folder
+    bool user = false;        // from the player's own level folder
+    std::string description;  // its one line, shown under the list while it is selected
+    bool listed = true;       // the level's `listed` key
+    bool loads = true;        // false: the file has errors (choosing it shows them)
 };
 
 struct Request {
@@ -50,6 +56,12 @@ struct Env {
     const game::HighScoreTable* high_scores = nullptr;
     std::string high_scores_level;  // whose table that is (kept per level)
     std::string save_status;        // shown on the options page ("SAVED", why not)
+    // The game in play under the pause menu: its score (0: nothing to lose) and whether it
+    // would make the high-score table (then quitting asks for initials first).
+    int score_at_stake = 0;
+    bool score_qualifies = false;
+    // The vsync the driver gave when it differs from the setting (shown beside it).
+    std::optional<platform::Vsync> vsync_given;
 };
 
 class PlayMenus {
@@ -63,6 +75,11 @@ class PlayMenus {
     bool open() const { return context_ != Context::none; }
 
     std::vector<Request> handle(platform::MenuKey key);
+    // The mouse, at `at` in HUD units (menu_page.h): hovering a row selects it, a click
+    // chooses it, the wheel steps through a long list, and the right button goes back.
+    enum class Pointer : std::uint8_t { move, click, back, wheel_up, wheel_down };
+    std::vector<Request> pointer(Pointer what, glm::vec2 at, const scene::VectorFont& font,
+                                 double aspect);
     // The key pressed after a begin_capture request (Input::kCaptureCancelled: none).
     std::vector<Request> captured(const platform::KeyBinding& key);
     bool capturing() const { return capturing_; }
@@ -83,10 +100,13 @@ class PlayMenus {
         title,
         levels,
         options,
+        comfort,  // text size, flicker and flashes, colour-safe palette
+        arcade,   // the arcade machine's DIP switches
         keys,
         controls,
         high_scores,
-        paused
+        paused,
+        confirm_quit,  // "QUIT THIS GAME?" when the game in play has a score
     };
     Screen screen() const { return stack_.empty() ? Screen::title : stack_.back().screen; }
     // Opens a page directly, as if chosen from the context's first page (screenshots, tests).

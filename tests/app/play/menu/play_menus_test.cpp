@@ -3,6 +3,8 @@
 #include <SDL_scancode.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 namespace bz::app::menu {
 namespace {
 
@@ -18,9 +20,9 @@ struct Fixture {
         Env e;
         e.settings = &settings;
         e.presets = {"fast", "balanced", "high"};
-        e.levels = {{"CLASSIC", "/l/classic.toml"},
-                    {"MAZE", "/l/maze.toml"},
-                    {"MINE", "/u/mine.toml", true}};
+        e.levels = {{"CLASSIC", "/l/classic.toml", false, "THE ARCADE FIELD."},
+                    {"MAZE", "/l/maze.toml", false, "WALLS."},
+                    {"MINE", "/u/mine.toml", true, ""}};
         e.current_level = "/l/classic.toml";
         e.high_scores = &scores;
         return e;
@@ -33,6 +35,11 @@ struct Fixture {
         return out;
     }
 };
+
+const scene::VectorFont& font() {
+    static const scene::VectorFont f = scene::VectorFont::load_default();
+    return f;
+}
 
 std::vector<std::string> labels(const Page& p) {
     std::vector<std::string> out;
@@ -73,6 +80,10 @@ TEST(PlayMenus, LevelPageListsShippedAndUserLevelsAndChooses) {
     EXPECT_EQ(labels(p), (std::vector<std::string>{"CLASSIC", "MAZE", "MINE", "BACK"}));
     EXPECT_EQ(p.rows[0].note, "PLAYING");
     EXPECT_EQ(p.rows[2].value, "YOUR LEVEL");
+    EXPECT_EQ(p.lines, std::vector<std::string>{"THE ARCADE FIELD."});  // the selected one's
+    f.keys({MenuKey::down});
+    EXPECT_EQ(f.menus.page().lines, std::vector<std::string>{"WALLS."});
+    f.keys({MenuKey::up});
     const auto r = f.keys({MenuKey::down, MenuKey::down, MenuKey::confirm});
     ASSERT_EQ(r.size(), 1u);
     EXPECT_EQ(r[0].kind, Kind::choose_level);
@@ -90,10 +101,17 @@ TEST(PlayMenus, OptionsChangeTheSettingsAndAskToApplyThem) {
     f.keys({MenuKey::down, MenuKey::down, MenuKey::confirm});
     ASSERT_EQ(f.menus.screen(), PlayMenus::Screen::options);
     EXPECT_EQ(labels(f.menus.page()),
-              (std::vector<std::string>{"PRESET", "STYLE", "VOLUME", "FULLSCREEN", "VSYNC",
-                                        "GAMEPAD LAYOUT", "SHOW FPS", "KEYS",
-                                        "RESET KEYS TO DEFAULTS", "BACK"}));
+              (std::vector<std::string>{"DIFFICULTY", "PRESET", "STYLE", "BEAM", "EFFECTS VOLUME",
+                                        "FULLSCREEN", "VSYNC", "SHOW FPS", "FRAME RATE CAP",
+                                        "COMFORT AND TEXT", "ARCADE SETTINGS", "GAMEPAD LAYOUT",
+                                        "KEYS", "RESET KEYS TO DEFAULTS", "BACK"}));
     const std::vector<Request> changed{{Kind::settings_changed}};
+    EXPECT_EQ(f.keys({MenuKey::right}), changed);
+    EXPECT_EQ(f.settings.difficulty, "easy");
+    EXPECT_EQ(f.menus.page().rows[0].value, "EASY");
+    f.keys({MenuKey::left, MenuKey::left});
+    EXPECT_EQ(f.settings.difficulty, "arcade");  // wraps past the level's own
+    f.keys({MenuKey::down});
     EXPECT_EQ(f.keys({MenuKey::right}), changed);
     EXPECT_EQ(f.settings.preset, "high");
     EXPECT_EQ(f.keys({MenuKey::right}), changed);
@@ -101,9 +119,8 @@ TEST(PlayMenus, OptionsChangeTheSettingsAndAskToApplyThem) {
     f.keys({MenuKey::down});
     f.keys({MenuKey::left});
     EXPECT_EQ(f.settings.style, "halo");  // every style of the table, wrapping from the first
-    f.keys({MenuKey::right});
-    f.keys({MenuKey::right});
-    EXPECT_EQ(f.settings.style, "vector-xray");
+    f.keys({MenuKey::down, MenuKey::right});
+    EXPECT_EQ(f.settings.beam, "classic");
     f.keys({MenuKey::down, MenuKey::left});
     EXPECT_NEAR(f.settings.volume, 0.7f, 1e-6);
     f.keys({MenuKey::down, MenuKey::confirm});
@@ -111,9 +128,14 @@ TEST(PlayMenus, OptionsChangeTheSettingsAndAskToApplyThem) {
     f.keys({MenuKey::down, MenuKey::right});
     EXPECT_EQ(f.settings.vsync, platform::Vsync::adaptive);
     f.keys({MenuKey::down, MenuKey::right});
-    EXPECT_EQ(f.settings.gamepad, platform::GamepadMode::drive);
-    f.keys({MenuKey::down, MenuKey::right});
     EXPECT_TRUE(f.settings.show_fps);
+    f.keys({MenuKey::down, MenuKey::right});
+    EXPECT_EQ(f.settings.max_fps, 30);
+    EXPECT_EQ(f.keys({MenuKey::left, MenuKey::left}).size(), 2u);  // AUTO, then round to 240
+    EXPECT_EQ(f.settings.max_fps, 240);
+    EXPECT_EQ(f.menus.page().rows[8].value, "240");
+    f.keys({MenuKey::down, MenuKey::down, MenuKey::down, MenuKey::right});
+    EXPECT_EQ(f.settings.gamepad, platform::GamepadMode::drive);
     // The save status shows under the rows.
     f.menus.env().save_status = "NOT SAVED: SETTINGS.TOML HAS ERRORS TO FIX FIRST";
     EXPECT_EQ(f.menus.page().lines.at(0), "NOT SAVED: SETTINGS.TOML HAS ERRORS TO FIX FIRST");
@@ -122,15 +144,160 @@ TEST(PlayMenus, OptionsChangeTheSettingsAndAskToApplyThem) {
     EXPECT_EQ(f.menus.screen(), PlayMenus::Screen::title);
 }
 
+TEST(PlayMenus, VsyncShowsWhatTheDriverGave) {
+    Fixture f;
+    f.menus.env().vsync_given = platform::Vsync::off;  // asked for "on", got "off"
+    f.menus.set_context(Context::title);
+    f.menus.open_page(PlayMenus::Screen::options);
+    const Row vsync = f.menus.page().rows[6];
+    EXPECT_EQ(vsync.label, "VSYNC");
+    EXPECT_EQ(vsync.note, "GOT OFF");
+    EXPECT_TRUE(vsync.warn);
+    f.menus.env().vsync_given = platform::Vsync::on;
+    EXPECT_EQ(f.menus.page().rows[6].note, "");
+}
+
+TEST(PlayMenus, ComfortPageSetsTextSizeFlashesAndPalette) {
+    Fixture f;
+    f.menus.set_context(Context::title);
+    f.menus.open_page(PlayMenus::Screen::options);
+    for (int i = 0; i < 9; ++i) f.keys({MenuKey::down});
+    f.keys({MenuKey::confirm});
+    ASSERT_EQ(f.menus.screen(), PlayMenus::Screen::comfort);
+    EXPECT_EQ(labels(f.menus.page()), (std::vector<std::string>{"TEXT SIZE", "FLICKER AND FLASHES",
+                                                                "COLOUR-SAFE PALETTE", "BACK"}));
+    const std::vector<Request> changed{{Kind::settings_changed}};
+    EXPECT_EQ(f.keys({MenuKey::right}), changed);
+    EXPECT_FLOAT_EQ(f.settings.ui_scale, 1.25f);
+    EXPECT_EQ(f.menus.page().rows[0].value, "1.25X");
+    f.keys({MenuKey::right, MenuKey::right, MenuKey::right});
+    EXPECT_FLOAT_EQ(f.settings.ui_scale, 2.0f);
+    f.keys({MenuKey::right});
+    EXPECT_FLOAT_EQ(f.settings.ui_scale, 1.0f);  // wraps
+    f.keys({MenuKey::left});
+    EXPECT_FLOAT_EQ(f.settings.ui_scale, 2.0f);
+    f.keys({MenuKey::down, MenuKey::right});
+    EXPECT_EQ(f.settings.flashes, "soft");
+    f.keys({MenuKey::confirm});
+    EXPECT_EQ(f.settings.flashes, "off");
+    f.keys({MenuKey::down, MenuKey::confirm});
+    EXPECT_TRUE(f.settings.colour_safe);
+    f.keys({MenuKey::back});
+    EXPECT_EQ(f.menus.screen(), PlayMenus::Screen::options);
+}
+
+TEST(PlayMenus, ArcadePageCyclesTheDipSwitchesFromTheLevelsOwn) {
+    Fixture f;
+    f.menus.set_context(Context::title);
+    f.menus.open_page(PlayMenus::Screen::arcade);
+    EXPECT_EQ(labels(f.menus.page()),
+              (std::vector<std::string>{"TANKS", "MISSILES FROM", "BONUS TANKS", "BACK"}));
+    EXPECT_EQ(f.menus.page().rows[0].value, "LEVEL'S");
+    f.keys({MenuKey::right});
+    EXPECT_EQ(f.settings.arcade.lives, 2);
+    f.keys({MenuKey::left, MenuKey::left});
+    EXPECT_EQ(f.settings.arcade.lives, 5);  // past the level's own, to the last switch
+    f.keys({MenuKey::down, MenuKey::right, MenuKey::right, MenuKey::right, MenuKey::right});
+    EXPECT_EQ(f.settings.arcade.missile_score, 30000);
+    f.keys({MenuKey::down, MenuKey::right});
+    EXPECT_EQ(f.settings.arcade.bonus_score, 0);
+    EXPECT_EQ(f.menus.page().rows[2].value, "NONE");
+    f.keys({MenuKey::right});
+    EXPECT_EQ(f.menus.page().rows[2].value, "15000 AND 100000");
+    // From the pause menu the page says when they apply.
+    f.menus.set_context(Context::paused);
+    f.menus.open_page(PlayMenus::Screen::arcade);
+    const auto& lines = f.menus.page().lines;
+    EXPECT_NE(std::find(lines.begin(), lines.end(), "FROM THE NEXT GAME"), lines.end());
+}
+
 TEST(PlayMenus, VolumeStepsStopAtTheEndsAndWrap) {
     Fixture f;
     f.settings.volume = 0.95f;
     f.menus.set_context(Context::title);
     f.menus.open_page(PlayMenus::Screen::options);
-    f.keys({MenuKey::down, MenuKey::down, MenuKey::right});
+    f.keys({MenuKey::down, MenuKey::down, MenuKey::down, MenuKey::down, MenuKey::right});
     EXPECT_FLOAT_EQ(f.settings.volume, 1.0f);
     f.keys({MenuKey::right});
     EXPECT_FLOAT_EQ(f.settings.volume, 0.0f);
+}
+
+// The centre of row `row` as the menus place it.
+glm::vec2 centre_of(const PlayMenus& m, std::size_t row, double aspect, float scale) {
+    const Placement pl = place(font(), m.page(), m.selected(), aspect, scale);
+    for (const PlacedRow& r : pl.rows) {
+        if (r.row == row) return 0.5f * (r.box.min + r.box.max);
+    }
+    ADD_FAILURE() << "row " << row << " is not shown";
+    return {};
+}
+
+TEST(PlayMenus, MouseHoverSelectsClickChoosesWheelScrollsRightClickGoesBack) {
+    for (const float scale : {1.0f, 2.0f}) {
+        for (const double aspect : {4.0 / 3.0, 16.0 / 9.0}) {
+            Fixture f;
+            f.settings.ui_scale = scale;
+            f.menus.set_context(Context::title);
+            using P = PlayMenus::Pointer;
+            // Hover over OPTIONS selects it; a click opens it.
+            EXPECT_TRUE(
+                f.menus.pointer(P::move, centre_of(f.menus, 2, aspect, scale), font(), aspect)
+                    .empty());
+            EXPECT_EQ(f.menus.selected(), 2u);
+            f.menus.pointer(P::click, centre_of(f.menus, 2, aspect, scale), font(), aspect);
+            ASSERT_EQ(f.menus.screen(), PlayMenus::Screen::options);
+            // Nothing under the pointer: nothing happens.
+            f.menus.pointer(P::move, {0.0f, 0.99f}, font(), aspect);
+            EXPECT_EQ(f.menus.selected(), 0u);
+            // The wheel steps down the list, stopping at its end.
+            for (int i = 0; i < 30; ++i) f.menus.pointer(P::wheel_down, {}, font(), aspect);
+            EXPECT_EQ(f.menus.page().rows[f.menus.selected()].label, "BACK");
+            f.menus.pointer(P::wheel_up, {}, font(), aspect);
+            EXPECT_EQ(f.menus.page().rows[f.menus.selected()].label, "RESET KEYS TO DEFAULTS");
+            // A click on a setting changes it.
+            const auto fps = centre_of(f.menus, 7, aspect, scale);
+            const auto r = f.menus.pointer(P::click, fps, font(), aspect);
+            EXPECT_EQ(r, std::vector<Request>{{Kind::settings_changed}});
+            EXPECT_TRUE(f.settings.show_fps);
+            // Right click goes back.
+            f.menus.pointer(P::back, {}, font(), aspect);
+            EXPECT_EQ(f.menus.screen(), PlayMenus::Screen::title);
+        }
+    }
+}
+
+TEST(PlayMenus, RowsNeverOverlapOrLeaveTheScreenAtAnyTextSize) {
+    for (const float scale : {1.0f, 1.25f, 1.5f, 1.75f, 2.0f}) {
+        for (const double aspect : {800.0 / 600.0, 16.0 / 9.0, 3840.0 / 2160.0, 21.0 / 9.0}) {
+            Fixture f;
+            f.settings.ui_scale = scale;
+            for (const Context c : {Context::title, Context::paused}) {
+                f.menus.set_context(c);
+                for (const auto s : {PlayMenus::Screen::options, PlayMenus::Screen::comfort,
+                                     PlayMenus::Screen::arcade, PlayMenus::Screen::controls,
+                                     PlayMenus::Screen::keys}) {
+                    f.menus.set_context(Context::none);
+                    f.menus.set_context(c);
+                    f.menus.open_page(s);
+                    const Page p = f.menus.page();
+                    const Placement pl = place(font(), p, f.menus.selected(), aspect, scale);
+                    ASSERT_FALSE(pl.rows.empty());
+                    const game::hud::Box footer = game::hud::footer_box(static_cast<float>(aspect));
+                    for (std::size_t i = 0; i < pl.rows.size(); ++i) {
+                        const auto& b = pl.rows[i].box;
+                        EXPECT_GE(b.min.y, footer.max.y - 1e-4f) << p.title << " x" << scale;
+                        EXPECT_LE(b.max.y, 1.0f) << p.title << " x" << scale;
+                        EXPECT_LE(pl.label_x, b.min.x + 0.11f * scale);
+                        EXPECT_GE(pl.label_x, -static_cast<float>(aspect)) << p.title;
+                        if (i > 0) {
+                            EXPECT_LE(b.max.y, pl.rows[i - 1].box.min.y + 1e-4f)
+                                << p.title << " rows " << i - 1 << " and " << i;
+                        }
+                    }
+                }
+            }
+        }
+    }
 }
 
 TEST(PlayMenus, RebindingCapturesAKeyAndShowsConflicts) {
@@ -191,6 +358,30 @@ TEST(PlayMenus, ControlsShowTheBoundKeysAndPadButtons) {
     const Row& left = p.rows[static_cast<std::size_t>(platform::Action::left_tread_forward)];
     EXPECT_EQ(left.value, "Q");
     EXPECT_EQ(left.note, "LEFT STICK");
+}
+
+TEST(PlayMenus, QuittingAGameWithAScoreAsksFirst) {
+    for (const bool qualifies : {false, true}) {
+        Fixture f;
+        f.menus.env().score_at_stake = 12000;
+        f.menus.env().score_qualifies = qualifies;
+        f.menus.set_context(Context::paused);
+        EXPECT_TRUE(f.keys({MenuKey::up, MenuKey::confirm}).empty()) << "not at once";
+        ASSERT_EQ(f.menus.screen(), PlayMenus::Screen::confirm_quit);
+        const Page p = f.menus.page();
+        EXPECT_EQ(labels(p),
+                  (std::vector<std::string>{
+                      "KEEP PLAYING", qualifies ? "QUIT AND ENTER INITIALS" : "QUIT TO TITLE"}));
+        ASSERT_FALSE(p.lines.empty());
+        EXPECT_EQ(p.lines[0].rfind("SCORE 12000", 0), 0u) << p.lines[0];
+        // KEEP PLAYING is first: the pause menu again.
+        EXPECT_TRUE(f.keys({MenuKey::confirm}).empty());
+        EXPECT_EQ(f.menus.screen(), PlayMenus::Screen::paused);
+        f.keys({MenuKey::confirm});
+        EXPECT_EQ(f.menus.screen(), PlayMenus::Screen::confirm_quit);
+        EXPECT_EQ(f.keys({MenuKey::down, MenuKey::confirm}),
+                  std::vector<Request>{{Kind::quit_to_title}});
+    }
 }
 
 TEST(PlayMenus, PauseMenuResumesAndQuitsToTitle) {
