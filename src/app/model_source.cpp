@@ -1,6 +1,7 @@
 #include "app/model_source.h"
 
 #include "core/error.h"
+#include "core/text/printable.h"
 #include "game/assets/models.h"
 #include "geometry/generated/primitives.h"
 #include "geometry/import/import.h"
@@ -21,7 +22,8 @@ geo::TriMesh load_model_source(const std::string& input) {
     // The game's enemy tank: the desktop icon is rendered from it (dist/README.md).
     if (name == "tank") return game::models::slow_tank();
     throw UserError(
-        input + ": unknown built-in model (cube, sphere, coarse-sphere, grid, grid-100k, tank)");
+        printable(input) +
+        ": unknown built-in model (cube, sphere, coarse-sphere, grid, grid-100k, tank)");
 }
 
 }  // namespace bz::app

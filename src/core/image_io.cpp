@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "core/budgets.h"
 #include "core/error.h"
 #include "core/io/file_io.h"
 
@@ -32,7 +33,7 @@ void write_png(const std::filesystem::path& path, const Image& image) {
 }
 
 Image read_png(const std::filesystem::path& path, int channels) {
-    const std::string bytes = read_file(path, 256u << 20);
+    const std::string bytes = read_file(path, budget::kPngBytes);
     Image img;
     int comp = 0;
     unsigned char* data = stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()),

@@ -4,8 +4,10 @@
 #include <cctype>
 #include <sstream>
 
+#include "core/budgets.h"
 #include "core/error.h"
 #include "core/io/file_io.h"
+#include "core/text/printable.h"
 
 namespace bz::gl {
 namespace fs = std::filesystem;
@@ -21,19 +23,44 @@ bool starts_with_directive(std::string_view line, std::string_view directive) {
     return line.substr(i, directive.size()) == directive;
 }
 
+// The one name of a file however it is spelt ("./x.glsl", "a/../x.glsl", a link to it): cycles
+// and repeats are found by this, not by the spelling.
+fs::path resolved(const fs::path& file) {
+    std::error_code ec;
+    fs::path r = fs::weakly_canonical(fs::absolute(file, ec), ec);
+    return ec ? file.lexically_normal() : r;
+}
+
 struct Assembler {
     std::vector<std::string> files;
-    std::vector<fs::path> stack;
+    std::vector<fs::path> stack;  // resolved paths of the files being pasted, root first
+    std::vector<fs::path> done;   // resolved paths already pasted: a diamond pastes once
     std::ostringstream out;
+    std::size_t bytes = 0;  // text read so far, against budget::kShaderAssembledBytes
 
     void append(const fs::path& file, bool is_root, const std::vector<std::string>& defines) {
-        if (std::find(stack.begin(), stack.end(), file) != stack.end()) {
-            throw UserError(file.string() + ": include cycle");
+        const fs::path id = resolved(file);
+        if (std::find(stack.begin(), stack.end(), id) != stack.end()) {
+            throw UserError(printable(file.string()) + ": include cycle (the file includes " +
+                            "itself through " + std::to_string(stack.size()) + " level(s))");
         }
-        const std::string text = read_file(file, 1u << 20);
+        // Included once per program, like #pragma once: two includes of one file along two
+        // paths would only redefine its functions, and pasting each would grow exponentially.
+        if (!is_root && std::find(done.begin(), done.end(), id) != done.end()) return;
+        if (static_cast<int>(stack.size()) >= budget::kShaderIncludeDepth) {
+            throw UserError(printable(file.string()) + ": includes nested more than " +
+                            std::to_string(budget::kShaderIncludeDepth) + " deep");
+        }
+        const std::string text = read_file(file, budget::kShaderFileBytes);
+        bytes += text.size();
+        if (bytes > budget::kShaderAssembledBytes) {
+            throw UserError(printable(file.string()) + ": the program's assembled source passes " +
+                            std::to_string(budget::kShaderAssembledBytes) + " bytes");
+        }
+        done.push_back(id);
         const int index = static_cast<int>(files.size());
         files.push_back(file.string());
-        stack.push_back(file);
+        stack.push_back(id);
         if (!is_root) out << "#line 1 " << index << '\n';
         std::istringstream in(text);
         std::string line;

@@ -3,15 +3,18 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "core/text/printable.h"
+
 namespace bz::level {
 
 std::string format(const Diagnostic& d) {
-    std::string out = d.pos.file;
+    // The file name came from the command line or a level; the message may quote file text.
+    std::string out = printable(d.pos.file);
     if (d.pos.line > 0) {
         out += ':' + std::to_string(d.pos.line) + ':' + std::to_string(d.pos.column);
     }
     out += ": error: ";
-    out += d.message;
+    out += printable_message(d.message);
     return out;
 }
 

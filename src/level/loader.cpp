@@ -4,6 +4,7 @@
 
 #include "core/error.h"
 #include "core/io/file_io.h"
+#include "core/text/printable.h"
 #include "level/sections/sections.h"
 #include "level/sections/table_reader.h"
 #include "level/syntax/syntax.h"
@@ -122,7 +123,7 @@ LoadResult load_level_file(const fs::path& file, const LoadOptions& options) {
     } catch (const UserError& e) {
         // read_file names the file itself; keep only what went wrong.
         std::string why = e.what();
-        const std::string prefix = file.string() + ": ";
+        const std::string prefix = printable(file.string()) + ": ";
         if (why.compare(0, prefix.size(), prefix) == 0) why.erase(0, prefix.size());
         LoadResult result;
         result.dependencies.push_back(file);

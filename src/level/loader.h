@@ -8,6 +8,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/budgets.h"
 #include "core/paths.h"
 #include "level/diagnostic.h"
 #include "level/level.h"
@@ -20,7 +21,7 @@ inline constexpr int kFormatVersion = 1;
 struct LoadOptions {
     // Besides the level's own folder, the one folder model paths may point into.
     std::filesystem::path data_root = bz::data_dir();
-    std::size_t max_file_bytes = 1u << 20;
+    std::size_t max_file_bytes = budget::kLevelBytes;
     std::size_t max_obstacles = 5000;
     std::size_t max_camera_keys = 10000;
     std::size_t max_mountain_points = 4096;

@@ -2,12 +2,30 @@
 
 #include <SDL.h>
 
+#include "core/budgets.h"
+#include "core/error.h"
+#include "core/io/file_io.h"
 #include "core/log.h"
 
 namespace bz::platform {
 
 int add_controller_mappings(const std::filesystem::path& file, std::string* error) {
-    const int n = SDL_GameControllerAddMappingsFromFile(file.c_str());
+    // Read through bz::read_file, never SDL's own open: a FIFO there would block SDL's
+    // fopen forever and a huge file would be read whole.
+    std::string text;
+    try {
+        text = read_file(file, budget::kGamepadDbBytes);
+    } catch (const UserError& e) {
+        if (error) *error = e.what();
+        return -1;
+    }
+    if (text.empty()) return 0;  // SDL refuses a zero-sized buffer; no mappings is no error
+    SDL_RWops* rw = SDL_RWFromConstMem(text.data(), static_cast<int>(text.size()));
+    if (!rw) {
+        if (error) *error = SDL_GetError();
+        return -1;
+    }
+    const int n = SDL_GameControllerAddMappingsFromRW(rw, 1);  // 1: SDL closes rw
     if (n < 0 && error) *error = SDL_GetError();
     return n;
 }

@@ -9,6 +9,7 @@
 #include <sstream>
 #include <utility>
 
+#include "core/budgets.h"
 #include "core/error.h"
 #include "core/io/file_io.h"
 #include "core/text/printable.h"
@@ -19,7 +20,7 @@ namespace bz::platform {
 namespace {
 
 // Settings are a few hundred bytes; anything this large is not a settings file.
-constexpr std::size_t kMaxSettingsBytes = 1u << 20;
+constexpr std::size_t kMaxSettingsBytes = budget::kSettingsBytes;
 // toml++ recurses once per level of a dotted key, so a key thousands of levels deep overflows
 // the stack; the deepest real setting is keys.fire. Refused before parsing, as levels do.
 constexpr int kMaxSettingsKeyDots = 8;
@@ -387,7 +388,7 @@ SettingsLoad load_settings(const std::filesystem::path& file, const SettingsChoi
         out.errors.push_back(std::string(e.what()) + "; using default settings");
         return out;
     }
-    return parse_settings(text, file.string(), choices);
+    return parse_settings(text, printable(file.string()), choices);
 }
 
 std::string format_settings(const Settings& s) {

@@ -1,6 +1,7 @@
 #include "render/settings.h"
 
 #include "core/error.h"
+#include "core/text/printable.h"
 
 namespace bz::render {
 
@@ -14,7 +15,7 @@ LineMethod parse_line_method(std::string_view name) {
     if (name == "compute") return LineMethod::compute;
     if (name == "auto") return LineMethod::automatic;
     if (name == "image_outline") return LineMethod::image_outline;
-    throw UserError("unknown line method '" + std::string(name) +
+    throw UserError("unknown line method '" + printable(name) +
                     "' (use compute, geometry_shader, auto or image_outline)");
 }
 
@@ -87,7 +88,7 @@ RenderSettings preset(std::string_view name) {
         s.bloom_sigma_px = 5.0f;
         return s;
     }
-    throw UserError("unknown preset '" + std::string(name) + "' (use fast, balanced or high)");
+    throw UserError("unknown preset '" + printable(name) + "' (use fast, balanced or high)");
 }
 
 }  // namespace bz::render

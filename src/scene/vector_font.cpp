@@ -4,6 +4,7 @@
 #include <charconv>
 #include <string>
 
+#include "core/budgets.h"
 #include "core/error.h"
 #include "core/io/file_io.h"
 #include "core/paths.h"
@@ -56,7 +57,7 @@ bool valid_coordinate(char c) {
 
 VectorFont::VectorFont(const std::filesystem::path& jhf_file) {
     // A Hershey font is a few kilobytes; the cap keeps a wrong path from reading gigabytes.
-    const std::string text = read_file(jhf_file, 4u << 20);
+    const std::string text = read_file(jhf_file, budget::kFontBytes);
     Cursor cursor{text};
     std::string_view line;
     while (cursor.next_line(line)) {

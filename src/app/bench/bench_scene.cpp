@@ -1,5 +1,6 @@
 #include "app/bench/bench_scene.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -90,10 +91,27 @@ std::string BenchScene::camera_description() const {
     return buf;
 }
 
+void BenchScene::prove_replay() {
+    if (!player_ || mismatch_) return;
+    const auto& checks = player_->replay().checks;
+    const std::uint64_t now = world_->state().tick;
+    const auto it = std::find_if(checks.begin(), checks.end(),
+                                 [now](const game::replay::StateCheck& c) { return c.tick > now; });
+    if (it == checks.end()) return;
+    while (!player_->done() && world_->state().tick < it->tick) {
+        world_->step(player_->next());
+        if (const auto m = player_->check(*world_)) {
+            mismatch_ = m;
+            return;
+        }
+    }
+}
+
 bool BenchScene::next(scene::FrameList& out, double aspect) {
     if (player_) {
         if (player_->done()) return false;
         world_->step(player_->next());
+        if (const auto m = player_->check(*world_); m && !mismatch_) mismatch_ = m;
     } else if (level_.camera_path.empty()) {
         world_->step(game::autopilot(*world_));
     } else {

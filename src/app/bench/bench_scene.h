@@ -39,12 +39,20 @@ class BenchScene {
     // "camera path (N keys, S s)", "replay (N ticks)" or "player view (no camera path)".
     std::string camera_description() const;
     const level::Level& level() const { return level_; }
+    // The first tick at which a replay's recorded state hash differed from the simulated one:
+    // the frames after it are not the game that was recorded.
+    const std::optional<game::replay::Mismatch>& replay_mismatch() const { return mismatch_; }
+    // Steps on, without drawing, to the replay's next recorded state hash (at most one hash
+    // interval), so that the frames already taken are proven by a hash even when the run
+    // stopped between two of them. Sets replay_mismatch() when that hash differs.
+    void prove_replay();
 
   private:
     level::Level level_;
     std::unique_ptr<game::Assets> assets_;
     std::unique_ptr<game::World> world_;
     std::optional<game::replay::Player> player_;
+    std::optional<game::replay::Mismatch> mismatch_;
     std::unique_ptr<scene::VectorFont> font_;
     double fov_;
     std::uint64_t ticks_ = 0;

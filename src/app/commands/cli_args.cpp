@@ -2,8 +2,10 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <string>
 
+#include "core/budgets.h"
 #include "core/text/printable.h"
 
 namespace bz::app {
@@ -52,7 +54,7 @@ int parse_int(std::string_view option, std::string_view text, int min_value, int
 scene::Style parse_style(std::string_view option, std::string_view text) {
     if (const auto s = scene::style_from_name(text)) return *s;
     throw UsageError(std::string(option) + ": expected " + scene::style_name_list() + ", not '" +
-                     std::string(text) + "'");
+                     printable(text) + "'");
 }
 
 glm::dvec3 parse_vec3(std::string_view option, std::string_view text) {
@@ -78,8 +80,15 @@ glm::ivec2 parse_size(std::string_view option, std::string_view text) {
     if (x == std::string_view::npos) {
         throw UsageError(std::string(option) + ": expected WxH but got '" + printable(text) + "'");
     }
-    return {parse_int(option, text.substr(0, x), 1, 16384),
-            parse_int(option, text.substr(x + 1), 1, 16384)};
+    // Refused here, before any work: a picture larger than the budget would take gigabytes
+    // and end in an incomplete framebuffer on most drivers.
+    const glm::ivec2 size{parse_int(option, text.substr(0, x), 1, budget::kImageSide),
+                          parse_int(option, text.substr(x + 1), 1, budget::kImageSide)};
+    if (static_cast<std::int64_t>(size.x) * size.y > budget::kImagePixels) {
+        throw UsageError(std::string(option) + ": " + printable(text) + " is more than " +
+                         std::to_string(budget::kImagePixels) + " pixels");
+    }
+    return size;
 }
 
 }  // namespace bz::app

@@ -21,6 +21,7 @@
 #include "core/io/output_path.h"
 #include "core/text/printable.h"
 #include "level/loader.h"
+#include "scene/camera_check.h"
 #include "scene/presentation_clock.h"
 
 namespace bz::app {
@@ -35,6 +36,7 @@ constexpr const char* kUsage =
     "                      [--line-method compute|geometry_shader|auto|image_outline]\n"
     "                      [--out DIR] [--replay FILE] [--samples N] [--rounds N]\n"
     "                      [--timing auto|cpu|gpu] [--beam classic|mame] [--no-phosphor]\n"
+    "                      [--overwrite]\n"
     "       beamzone bench --accuracy [--models-dir DIR] [--model FILE]... [--size WxH]\n"
     "                      [--frames N] [--out DIR] [--timing auto|cpu|gpu]\n"
     "Renders the level offscreen along its benchmark camera path ([[camera_key]]; without one\n"
@@ -68,7 +70,10 @@ constexpr const char* kUsage =
     "640x480 against the exact CPU reference (F1 at 1 px Chebyshev), times each view\n"
     "(--frames, default 6) and writes accuracy.json, accuracy_tradeoff.png, masks/, diffs/\n"
     "(red: drawn but hidden in the reference, cyan: missing) and reference-cache/ (exact\n"
-    "masks reused by later runs into the same --out).\n";
+    "masks reused by later runs into the same --out).\n"
+    "Before the first frame every .json, .csv and .png file already in --out (and its masks/,\n"
+    "diffs/, reference-cache/) must be of that kind, and none may be an input of the run;\n"
+    "--overwrite lets files of another kind be replaced (never inputs, devices or folders).\n";
 
 enum class Mode { single, sweep, scaling, accuracy };
 
@@ -92,7 +97,17 @@ struct Options {
     bool size_given = false;
     std::string models_dir = "/usr/share/assimp/models";
     std::vector<std::string> models;
+    bool overwrite = false;  // may replace files of another kind named like an output
 };
+
+// Every file this run reads, which no output may replace.
+std::vector<fs::path> bench_inputs(const Options& o) {
+    std::vector<fs::path> in;
+    if (!o.level.empty()) in.emplace_back(o.level);
+    if (!o.replay.empty()) in.emplace_back(o.replay);
+    for (const std::string& m : o.models) in.push_back(fs::path(o.models_dir) / m);
+    return in;
+}
 
 Options parse(Args args) {
     Options o;
@@ -132,6 +147,8 @@ Options parse(Args args) {
             o.models.emplace_back(cur.value(a));
         } else if (a == "--out") {
             o.out = cur.value(a);
+        } else if (a == "--overwrite") {
+            o.overwrite = true;
         } else if (a == "--replay") {
             o.replay = cur.value(a);
         } else if (a == "--samples") {
@@ -196,6 +213,12 @@ BenchFrames simulate(BenchScene& scene, const Options& o, double aspect) {
     scene::PresentationClock clock;  // one nominal 60 Hz frame per simulated tick
     for (int i = 0; i < total; ++i) {
         if (!scene.next(f, aspect)) break;
+        if (const std::string why = scene::camera_problem(f.camera); !why.empty()) {
+            char at[32];
+            std::snprintf(at, sizeof at, "%.3f", scene.seconds());
+            throw UserError(printable(o.level) + ": at " + at +
+                            " s the camera cannot make a picture: " + why);
+        }
         clock.advance_nominal();
         clock.stamp(f);
         bf.frames.push_back(f);
@@ -224,6 +247,7 @@ int run_accuracy_mode(const Options& o) {
     fs::create_directory(o.out, ec);  // the folder itself, never missing parents
     if (ec) throw UserError(o.out + ": cannot create the output directory: " + ec.message());
     auto context = make_headless_context();
+    check_image_size(*context, "--size", o.size.x, o.size.y);
     const gl::TimingMethod timing = pick_timing(o.timing, *context);
     std::unique_ptr<scene::VectorFont> font;
     try {
@@ -275,7 +299,10 @@ int run_accuracy_mode(const Options& o) {
 }
 
 int run(const Options& o) {
-    check_output_dir("--out", o.out);
+    // Every file the run may write sits in --out or these subfolders of it: all are checked
+    // before the first frame, so a long run never ends in a refused write.
+    constexpr std::string_view kSubfolders[] = {"masks", "diffs", "reference-cache"};
+    check_output_dir("--out", o.out, bench_inputs(o), kSubfolders, o.overwrite);
     if (o.mode == Mode::accuracy) return run_accuracy_mode(o);
     level::LoadResult loaded = level::load_level_file(o.level);
     if (!loaded.ok()) {
@@ -305,12 +332,25 @@ int run(const Options& o) {
     BenchScene scene(std::move(*loaded.level), std::move(replay));
     std::fprintf(stderr, "simulating %d frames of %s ...\n", o.warmup + o.frames, o.level.c_str());
     const BenchFrames frames = simulate(scene, o, aspect);
+    scene.prove_replay();
+    if (const auto& m = scene.replay_mismatch()) {
+        // As `play --replay`: a replay that diverged is an error, and its frames are not the
+        // recorded game, so nothing is timed.
+        std::fprintf(stderr,
+                     "beamzone bench: error: %s: replay diverged at tick %llu (state hash %016llx, "
+                     "recorded %016llx); nothing was timed\n",
+                     printable(o.replay).c_str(), static_cast<unsigned long long>(m->tick),
+                     static_cast<unsigned long long>(m->actual),
+                     static_cast<unsigned long long>(m->expected));
+        return 1;
+    }
 
     std::error_code ec;
     fs::create_directory(o.out, ec);  // the folder itself, never missing parents
     if (ec) throw UserError(o.out + ": cannot create the output directory: " + ec.message());
 
     auto context = make_headless_context();
+    check_image_size(*context, "--size", o.size.x, o.size.y);
     const gl::TimingMethod timing = pick_timing(o.timing, *context);
     const scene::VectorFont* font = nullptr;
     std::unique_ptr<scene::VectorFont> font_storage;

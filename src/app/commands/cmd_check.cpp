@@ -1,4 +1,5 @@
 #include <cstdio>
+#include <map>
 #include <set>
 #include <string>
 #include <string_view>
@@ -6,7 +7,9 @@
 
 #include "app/commands/commands.h"
 #include "core/error.h"
+#include "core/text/printable.h"
 #include "game/assets/level_models.h"
+#include "game/assets/scene_budget.h"
 #include "level/loader.h"
 
 namespace bz::app {
@@ -22,19 +25,29 @@ constexpr const char* kUsage =
 
 // Imports each model the level names once, as play would; prints what fails. Returns the
 // number of models that failed.
+// number of models that failed, or 1 when the scene is over its budget (core/budgets.h).
 int check_models(const level::Level& level) {
     int failed = 0;
-    std::set<std::string> seen;
+    std::map<std::string, std::int64_t> triangles;
     for (const level::ObjectDesc& o : level.obstacles) {
-        if (o.model.empty() || !seen.insert(o.model.string()).second) continue;
+        if (o.model.empty() || triangles.contains(o.model.string())) continue;
         try {
-            game::import_level_model(level, o);
+            triangles[o.model.string()] =
+                static_cast<std::int64_t>(game::import_level_model(level, o).triangle_count());
         } catch (const UserError& e) {
-            std::fprintf(stderr, "%s\n", e.what());
+            std::fprintf(stderr, "%s\n", printable_message(e.what()).c_str());
+            triangles[o.model.string()] = 0;
             ++failed;
         }
     }
-    return failed;
+    if (failed > 0) return failed;
+    try {
+        game::check_scene_budget(level, triangles);
+    } catch (const UserError& e) {
+        std::fprintf(stderr, "%s\n", printable_message(e.what()).c_str());
+        return 1;
+    }
+    return 0;
 }
 
 }  // namespace
@@ -53,7 +66,8 @@ int cmd_check(Args args) {
         } else if (!options_done && (a == "--quiet" || a == "-q")) {
             quiet = true;
         } else if (!options_done && a.size() > 1 && a[0] == '-') {
-            std::fprintf(stderr, "beamzone check: unknown option '%s'\n%s", arg, kUsage);
+            std::fprintf(stderr, "beamzone check: unknown option '%s'\n%s", printable(a).c_str(),
+                         kUsage);
             return 2;
         } else {
             files.push_back(a);
@@ -71,9 +85,8 @@ int cmd_check(Args args) {
             ++failed;
         } else if (!quiet) {
             const auto& l = *result.level;
-            std::printf("%.*s: ok: '%s', %zu obstacles, %zu camera keys\n",
-                        static_cast<int>(file.size()), file.data(), l.name.c_str(),
-                        l.obstacles.size(), l.camera_path.size());
+            std::printf("%s: ok: '%s', %zu obstacles, %zu camera keys\n", printable(file).c_str(),
+                        printable(l.name).c_str(), l.obstacles.size(), l.camera_path.size());
         }
     }
     if (!quiet && files.size() > 1) {

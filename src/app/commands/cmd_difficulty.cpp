@@ -11,7 +11,9 @@
 #include "app/commands/parse_command.h"
 #include "app/json_text.h"
 #include "core/io/file_io.h"
+#include "core/io/output_path.h"
 #include "core/paths.h"
+#include "core/text/printable.h"
 #include "game/assets/assets.h"
 #include "game/difficulty/difficulty_probe.h"
 #include "level/loader.h"
@@ -20,14 +22,17 @@ namespace bz::app {
 
 namespace {
 
+namespace fs = std::filesystem;
+
 constexpr const char* kUsage =
     "usage: beamzone difficulty [LEVEL...] [--seeds N] [--seconds S]\n"
-    "                           [--difficulty easy|normal|arcade] [--json FILE]\n"
+    "                           [--difficulty easy|normal|arcade] [--json FILE] [--overwrite]\n"
     "Plays N games (default 20, seeds 1..N) per level and difficulty headless and prints, as a\n"
     "Markdown table, the mean time to the first death of an idle player and of the autopilot\n"
     "(games still alive after S seconds, default 120, count as S; 'alive' says how many), and\n"
     "the share of enemies that appeared in the 90 degrees behind the player. Without LEVEL,\n"
-    "every shipped level that has enemies. --json writes the same numbers as JSON.\n";
+    "every shipped level that has enemies. --json writes the same numbers as JSON (an existing\n"
+    "file there must be JSON unless --overwrite is given).\n";
 
 struct Options {
     std::vector<std::string> levels;
@@ -36,6 +41,7 @@ struct Options {
     std::vector<game::Difficulty> difficulties{game::Difficulty::easy, game::Difficulty::normal,
                                                game::Difficulty::arcade};
     std::string json;
+    bool overwrite = false;  // --json may replace an existing file that is not JSON
 };
 
 Options parse(Args args) {
@@ -55,7 +61,7 @@ Options parse(Args args) {
             const auto d = game::parse_difficulty(v);
             if (!d) {
                 throw UsageError("--difficulty must be one of " +
-                                 std::string(game::kDifficultyNames) + ", not '" + std::string(v) +
+                                 std::string(game::kDifficultyNames) + ", not '" + printable(v) +
                                  "'");
             }
             if (!difficulty_given) o.difficulties.clear();
@@ -63,8 +69,10 @@ Options parse(Args args) {
             o.difficulties.push_back(*d);
         } else if (a == "--json") {
             o.json = cur.value(a);
+        } else if (a == "--overwrite") {
+            o.overwrite = true;
         } else if (!a.empty() && a[0] == '-') {
-            throw UsageError("unknown option " + std::string(a));
+            throw UsageError("unknown option " + printable(a));
         } else {
             o.levels.emplace_back(a);
         }
@@ -93,6 +101,11 @@ Json summary_json(const game::ProbeSummary& s) {
 }
 
 int run(const Options& o) {
+    if (!o.json.empty()) {
+        // Before the first game: never the input level, a device, a folder or a foreign file.
+        const std::vector<fs::path> inputs(o.levels.begin(), o.levels.end());
+        check_output_file("--json", o.json, kJsonOutput, inputs, o.overwrite);
+    }
     std::printf(
         "| level | difficulty | idle: first death, s | autopilot: first death, s | "
         "enemies behind |\n|---|---|---|---|---|\n");

@@ -21,6 +21,7 @@
 #include "core/io/output_path.h"
 #include "core/log.h"
 #include "core/paths.h"
+#include "core/text/printable.h"
 #include "game/default_level.h"
 #include "game/records/replay.h"
 #include "level/loader.h"
@@ -107,15 +108,15 @@ struct Play {
                     std::fprintf(stderr, "%s\n", line.c_str());
                 }
                 const auto n = watcher->errors().size();
-                log.error("cannot play " + level_path.string() + ": " + std::to_string(n) +
-                          (n == 1 ? " error" : " errors") + " above");
+                log.error("cannot play " + printable(level_path.string()) + ": " +
+                          std::to_string(n) + (n == 1 ? " error" : " errors") + " above");
                 return 1;
             }
-            log.info("level: " + level_path.string() + " (edits reload while playing)");
+            log.info("level: " + printable(level_path.string()) + " (edits reload while playing)");
         } else if (replay_on_builtin) {
             log.info("the replay was recorded on the built-in level; playing it there");
         } else {
-            log.info("no " + level_path.string() + "; playing the built-in level");
+            log.info("no " + printable(level_path.string()) + "; playing the built-in level");
         }
         const level::Level* lvl = watcher ? &*watcher->current() : nullptr;
 
@@ -239,7 +240,7 @@ int cmd_play(Args args) {
     try {
         options = parse_play_options(static_cast<int>(args.size()), args.data());
     } catch (const UsageError& e) {
-        std::fprintf(stderr, "beamzone play: %s\n", e.what());
+        std::fprintf(stderr, "beamzone play: %s\n", printable_message(e.what()).c_str());
         return 2;
     }
     const platform::PrefPaths paths = platform::pref_paths();

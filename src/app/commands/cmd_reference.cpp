@@ -18,6 +18,7 @@
 #include "geometry/line_mesh/line_mesh.h"
 #include "level/loader.h"
 #include "render/reference_frame.h"
+#include "scene/camera_check.h"
 
 namespace bz::app {
 
@@ -26,7 +27,7 @@ namespace {
 constexpr const char* kUsage =
     "usage: beamzone reference INPUT [--eye x,y,z] [--target x,y,z] [--up x,y,z] [--fov DEG]\n"
     "                          [--near N] [--far F] [--size WxH] [--style NAME]\n"
-    "                          [--crease DEG] [--mask ref.png]\n"
+    "                          [--crease DEG] [--mask ref.png] [--overwrite]\n"
     "       beamzone reference --level LEVEL.toml --time SECONDS [--size WxH] [--mask ref.png]\n"
     "Computes the exact line mask on the CPU in double precision: the geometry shader's\n"
     "feature edges, visibility by ray casting against every occluder triangle at sub-pixel\n"
@@ -44,6 +45,7 @@ struct Options {
     scene::Style style = scene::Style::vector;
     double crease = 60.0;
     std::string mask = "reference.png";
+    bool overwrite = false;  // --mask may replace an existing file that is not a PNG
 };
 
 Options parse(Args args) {
@@ -60,6 +62,8 @@ Options parse(Args args) {
             o.crease = parse_number(a, cur.value(a));
         } else if (a == "--mask" || a == "--out") {
             o.mask = cur.value(a);
+        } else if (a == "--overwrite") {
+            o.overwrite = true;
         } else if (a == "--style") {
             o.style = parse_style(a, cur.value(a));
         } else if (!a.empty() && a[0] == '-') {
@@ -90,6 +94,9 @@ scene::FrameList level_frame(BenchScene& scene, double seconds, double aspect) {
     const auto ticks = std::max<long>(1, std::lround(seconds / kBenchStep));
     scene::FrameList f;
     for (long i = 0; i < ticks; ++i) scene.next(f, aspect);
+    if (const std::string why = scene::camera_problem(f.camera); !why.empty())
+        throw UserError("at " + std::to_string(seconds) +
+                        " s the camera cannot make a picture: " + why);
     return f;
 }
 
@@ -113,7 +120,8 @@ int run(const Options& o) {
         mask = render::reference_frame_mask(frame, scene.meshes(), size.x, size.y, ro, &stats);
     } else {
         geo::AdjacencyMesh mesh = geo::build_line_mesh(load_model_source(o.input));
-        if (mesh.triangle_count() == 0) throw UserError(o.input + ": no usable triangles");
+        if (mesh.triangle_count() == 0)
+            throw UserError(printable(o.input) + ": no usable triangles");
         const geo::Bounds bounds = geo::compute_bounds(mesh.positions);
         scene::MeshLibrary meshes;
         scene::FrameList frame;
@@ -143,7 +151,7 @@ int cmd_reference(Args args) {
     if (!parsed) return exit_code;
     const Options& o = *parsed;
     const std::filesystem::path inputs[] = {o.input, o.level};
-    check_output_file("--mask", o.mask, kPngOutput, inputs);
+    check_output_file("--mask", o.mask, kPngOutput, inputs, o.overwrite);
     return run(o);
 }
 

@@ -9,6 +9,7 @@
 #include "app/commands/parse_command.h"
 #include "app/headless_gl.h"
 #include "app/model_source.h"
+#include "core/budgets.h"
 #include "core/error.h"
 #include "core/image_io.h"
 #include "core/image_stats.h"
@@ -36,7 +37,7 @@ const std::string& usage() {
             "                       [--color r,g,b] [--out frame.png]\n"
             "                       [--mask mask.png] [--repeat N] [--copies N] [--beam "
             "classic|mame]\n"
-            "                       [--lit-share]\n"
+            "                       [--lit-share] [--overwrite]\n"
             "Renders a model file (or builtin:cube, builtin:sphere, builtin:grid) headless to PNG. "
             "Without "
             "--eye the camera frames the model's bounding\n"
@@ -54,7 +55,10 @@ const std::string& usage() {
             "--beam picks the vector beam's look (default mame, as `play` and `bench`).\n"
             "--lit-share prints the share of the picture's pixels whose brightest channel is "
             "above\n"
-            "1/255 (the haze figure; tools/haze measures Bernardoni 2018's hallway with it).\n");
+            "1/255 (the haze figure; tools/haze measures Bernardoni 2018's hallway with it).\n"
+            "An existing file at --out or --mask must be a PNG unless --overwrite is given; an "
+            "input,\n"
+            "a device, a FIFO or a folder there is never replaced.\n");
     return text;
 }
 
@@ -74,6 +78,7 @@ struct RenderOptions {
     int copies = 1;
     std::string beam{render::kDefaultBeamLook};
     bool lit_share = false;
+    bool overwrite = false;  // may replace an existing file that is not a PNG
 };
 
 RenderOptions parse(Args args) {
@@ -95,11 +100,13 @@ RenderOptions parse(Args args) {
         else if (a == "--repeat")
             o.repeat = parse_int(a, cur.value(a), 1, 100000);
         else if (a == "--copies")
-            o.copies = parse_int(a, cur.value(a), 1, 100000);
+            o.copies = parse_int(a, cur.value(a), 1, budget::kRenderCopies);
         else if (a == "--beam")
             o.beam = cur.value(a);
         else if (a == "--lit-share")
             o.lit_share = true;
+        else if (a == "--overwrite")
+            o.overwrite = true;
         else if (a == "--style") {
             o.style = parse_style(a, cur.value(a));
         } else if (a == "--no-smoothing") {
@@ -190,13 +197,21 @@ int cmd_render(Args args) {
     if (!parsed) return exit_code;
     const RenderOptions& o = *parsed;
     const std::filesystem::path inputs[] = {o.input};
-    check_output_file("--out", o.out, kPngOutput, inputs);
-    if (!o.mask.empty()) check_output_file("--mask", o.mask, kPngOutput, inputs);
+    check_output_file("--out", o.out, kPngOutput, inputs, o.overwrite);
+    if (!o.mask.empty()) check_output_file("--mask", o.mask, kPngOutput, inputs, o.overwrite);
     geo::MeshReport report;
     geo::AdjacencyMesh mesh = geo::build_line_mesh(load_model_source(o.input), &report);
-    if (mesh.triangle_count() == 0) throw UserError(o.input + ": no usable triangles");
+    if (mesh.triangle_count() == 0) throw UserError(printable(o.input) + ": no usable triangles");
+    const std::int64_t drawn = static_cast<std::int64_t>(mesh.triangle_count()) * o.copies;
+    if (drawn > budget::kCopiesTriangles) {
+        throw UserError("--copies " + std::to_string(o.copies) + " of " + printable(o.input) +
+                        " (" + std::to_string(mesh.triangle_count()) + " triangles) makes " +
+                        std::to_string(drawn) + " triangles, over the budget of " +
+                        std::to_string(budget::kCopiesTriangles));
+    }
 
     auto context = make_headless_context();
+    check_image_size(*context, "--size", o.camera.size.x, o.camera.size.y);
     scene::MeshLibrary meshes;
     scene::FrameList frame;
     const geo::Bounds one = geo::compute_bounds(mesh.positions);

@@ -29,12 +29,14 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr const char* kUsage =
-    "usage: beamzone replay FILE [--verify] [--level LEVEL.toml]\n"
+    "usage: beamzone replay FILE [--verify [--inputs-only]] [--level LEVEL.toml]\n"
     "       beamzone replay FILE --record-demo SECONDS [--seed N] [--level LEVEL.toml]\n"
-    "                                             [--difficulty easy|normal|arcade]\n"
+    "                                             [--difficulty easy|normal|arcade] [--overwrite]\n"
     "Prints what a replay file holds. --verify re-simulates it headless (no window) from its\n"
     "seed and commands and checks every recorded state hash: exit 0 when all match, 1 with\n"
-    "the first mismatching tick. --level overrides the level file the replay names.\n"
+    "the first mismatching tick. A replay without a state hash at every hash interval and at\n"
+    "its last tick is refused (nothing would prove it); --inputs-only re-simulates it anyway,\n"
+    "checking only the hashes it has. --level overrides the level file the replay names.\n"
     "--record-demo writes FILE: the attract-mode autopilot playing for SECONDS, headless\n"
     "(the built-in level unless --level is given), at the level's difficulty unless\n"
     "--difficulty is given.\n";
@@ -43,9 +45,11 @@ struct Options {
     std::string file;
     std::string level;
     bool verify = false;
+    bool inputs_only = false;  // --verify without requiring state hashes
     int record_seconds = 0;
     std::uint64_t seed = 1;
     std::optional<level::Difficulty> difficulty;
+    bool overwrite = false;  // --record-demo may replace a file that is not a replay
 };
 
 Options parse(Args args) {
@@ -55,8 +59,12 @@ Options parse(Args args) {
         const std::string_view a = cur.next();
         if (a == "--verify") {
             o.verify = true;
+        } else if (a == "--inputs-only") {
+            o.inputs_only = true;
         } else if (a == "--level") {
             o.level = cur.value(a);
+        } else if (a == "--overwrite") {
+            o.overwrite = true;
         } else if (a == "--record-demo") {
             o.record_seconds = parse_int(a, cur.value(a), 1, 10 * 3600);
         } else if (a == "--seed") {
@@ -66,7 +74,7 @@ Options parse(Args args) {
             o.difficulty = game::parse_difficulty(v);
             if (!o.difficulty) {
                 throw UsageError("--difficulty must be one of " +
-                                 std::string(game::kDifficultyNames) + ", not '" + std::string(v) +
+                                 std::string(game::kDifficultyNames) + ", not '" + printable(v) +
                                  "'");
             }
         } else if (!a.empty() && a[0] == '-') {
@@ -78,6 +86,7 @@ Options parse(Args args) {
         }
     }
     if (o.file.empty()) throw UsageError("no replay FILE given");
+    if (o.inputs_only && !o.verify) throw UsageError("--inputs-only needs --verify");
     if (o.verify && o.record_seconds > 0)
         throw UsageError("--verify and --record-demo exclude each other");
     return o;
@@ -102,7 +111,7 @@ level::Level load_level_or_report(const fs::path& path, bool& ok) {
 
 int record_demo(const Options& o) {
     const fs::path inputs[] = {o.level};
-    check_output_file("replay --record-demo", o.file, kReplayOutput, inputs);
+    check_output_file("replay --record-demo", o.file, kReplayOutput, inputs, o.overwrite);
     level::Level lv = game::default_level();
     std::string name = game::kBuiltinLevelName;
     if (!o.level.empty()) {
@@ -186,6 +195,14 @@ int run(const Options& o) {
         return 1;
     }
 
+    const std::string missing = game::replay::missing_state_hashes(r);
+    if (!missing.empty() && !o.inputs_only) {
+        std::fprintf(stderr,
+                     "%s: error: cannot verify: %s, so re-simulating it would prove nothing "
+                     "(pass --inputs-only to replay its commands anyway)\n",
+                     printable(o.file).c_str(), missing.c_str());
+        return 1;
+    }
     const auto t0 = std::chrono::steady_clock::now();
     const game::Assets assets(lv);
     const game::replay::VerifyResult v = game::replay::verify(r, lv, assets);
@@ -203,8 +220,9 @@ int run(const Options& o) {
     }
     std::printf("%s: ok: %" PRIu64
                 " ticks (%.1f s of play), %zu state hashes match (verified in "
-                "%.1f ms, building the level included)\n",
-                o.file.c_str(), v.ticks, seconds, v.checks_passed, ms);
+                "%.1f ms, building the level included)%s\n",
+                printable(o.file).c_str(), v.ticks, seconds, v.checks_passed, ms,
+                missing.empty() ? "" : "; inputs only: not every interval had a state hash");
     return 0;
 }
 

@@ -6,6 +6,7 @@
 #include "app/commands/commands.h"
 #include "core/error.h"
 #include "core/interrupt.h"
+#include "core/text/printable.h"
 
 namespace bz::app {
 
@@ -61,14 +62,15 @@ int dispatch(int argc, char** argv) {
         try {
             return c.run(Args(argv + 2, static_cast<std::size_t>(argc - 2)));
         } catch (const UserError& e) {
-            std::fprintf(stderr, "beamzone: error: %s\n", e.what());
+            std::fprintf(stderr, "beamzone: error: %s\n", printable_message(e.what()).c_str());
             return 1;
         } catch (const std::exception& e) {
-            std::fprintf(stderr, "beamzone: internal error: %s\n", e.what());
+            std::fprintf(stderr, "beamzone: internal error: %s\n",
+                         printable_message(e.what()).c_str());
             return 1;
         }
     }
-    std::fprintf(stderr, "beamzone: unknown command '%s'\n", argv[1]);
+    std::fprintf(stderr, "beamzone: unknown command '%s'\n", printable(argv[1]).c_str());
     print_usage(stderr);
     return 2;
 }

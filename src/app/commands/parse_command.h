@@ -7,6 +7,7 @@
 
 #include "app/commands/cli_args.h"
 #include "app/commands/commands.h"
+#include "core/text/printable.h"
 
 namespace bz::app {
 
@@ -25,7 +26,7 @@ auto parse_command(std::string_view name, Args args, const char* usage, Parse pa
         return parse(args);
     } catch (const UsageError& e) {
         std::fprintf(stderr, "beamzone %.*s: %s\n%s", static_cast<int>(name.size()), name.data(),
-                     e.what(), usage);
+                     printable_message(e.what()).c_str(), usage);
         *exit_code = 2;
         return std::nullopt;
     }

@@ -36,7 +36,7 @@ std::vector<ScriptedPress> parse_presses(std::string_view option, std::string_vi
         text = comma == std::string_view::npos ? std::string_view() : text.substr(comma + 1);
         const std::size_t colon = item.find(':');
         if (colon == std::string_view::npos) {
-            throw UsageError(std::string(option) + ": '" + std::string(item) +
+            throw UsageError(std::string(option) + ": '" + printable(item) +
                              "' is not FRAME:KEY (e.g. 30:Return)");
         }
         const std::string_view frames = item.substr(0, colon);

@@ -214,7 +214,12 @@ class GameSession final : public PlaySession {
 
     std::vector<std::string> take_notices() override { return std::exchange(notices_, {}); }
 
-    bool finished() const override { return game_->replay_finished() || PlaySession::finished(); }
+    // A replay that diverged ends the run (exit 1), as `replay --verify` and `bench --replay`
+    // do: what would follow is no longer the recorded game.
+    bool finished() const override {
+        return game_->replay_finished() || game_->replay_mismatch().has_value() ||
+               PlaySession::finished();
+    }
     bool failed() const override { return game_->replay_mismatch().has_value(); }
 
   private:

@@ -12,6 +12,7 @@
 
 #include "core/error.h"
 #include "core/io/regular_file.h"
+#include "core/text/printable.h"
 
 namespace bz {
 namespace fs = std::filesystem;
@@ -20,10 +21,10 @@ std::string read_file(const fs::path& path, std::size_t max_bytes) {
     // Opened without blocking and checked on the descriptor: a FIFO or device swapped in
     // after a check by name can neither hang nor feed us endless bytes.
     RegularFileResult opened = open_regular_file(path);
-    if (!opened.why.empty()) throw UserError(path.string() + ": " + opened.why);
+    if (!opened.why.empty()) throw UserError(printable(path.string()) + ": " + opened.why);
     const std::uintmax_t size = opened.file.size();
     if (size > max_bytes) {
-        throw UserError(path.string() + ": file is " + std::to_string(size) +
+        throw UserError(printable(path.string()) + ": file is " + std::to_string(size) +
                         " bytes, over the limit of " + std::to_string(max_bytes));
     }
     return read_head(opened.file, static_cast<std::size_t>(size));
@@ -67,11 +68,29 @@ void write_file_atomic(const fs::path& requested, std::string_view bytes) {
     // The folder is never created here: a mistyped output path must fail, not grow folders.
     const fs::path path = final_target(requested);
     const fs::path dir = path.has_parent_path() ? path.parent_path() : fs::path(".");
+    // Whatever sits at the target must be a regular file: the rename below would replace a
+    // device node, a FIFO or a socket with a plain file (as root, that destroys the node).
+    struct stat old {};
+    const bool replacing = ::stat(path.c_str(), &old) == 0;
+    if (replacing && !S_ISREG(old.st_mode)) {
+        throw UserError(printable(path.string()) + ": " + describe_non_regular(old.st_mode) +
+                        " is there; it is never replaced");
+    }
     std::random_device rd;
     const fs::path tmp = dir / ("." + path.filename().string() + ".tmp" + std::to_string(rd()));
-    const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
+    // A new file gets the usual 0666 less the umask; a replaced one keeps its mode and owner
+    // (a settings.toml kept at 0600 must not become world-readable when the game saves it).
+    const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
     if (fd < 0) throw UserError(tmp.string() + ": cannot create: " + std::strerror(errno));
     try {
+        if (replacing) {
+            // The owner first: chown may clear set-id bits that fchmod then restores.
+            // Changing the owner needs privilege; without it the file stays ours, which is
+            // the same owner whenever we could write the old one in place.
+            (void)::fchown(fd, old.st_uid, old.st_gid);
+            if (::fchmod(fd, old.st_mode & 07777) != 0)
+                throw UserError(tmp.string() + ": cannot set the mode: " + std::strerror(errno));
+        }
         write_all(fd, bytes, tmp);
         if (::fsync(fd) != 0)
             throw UserError(tmp.string() + ": fsync failed: " + std::strerror(errno));

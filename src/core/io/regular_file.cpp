@@ -20,9 +20,8 @@ struct RegularFileOpener {
     }
 };
 
-namespace {
-
-std::string kind_of(mode_t mode) {
+std::string describe_non_regular(unsigned mode_bits) {
+    const auto mode = static_cast<mode_t>(mode_bits);
     if (S_ISDIR(mode)) return "a folder";
     if (S_ISFIFO(mode)) return "a FIFO";
     if (S_ISCHR(mode)) return "a character device";
@@ -30,8 +29,6 @@ std::string kind_of(mode_t mode) {
     if (S_ISSOCK(mode)) return "a socket";
     return "not a plain file";
 }
-
-}  // namespace
 
 RegularFile::RegularFile(RegularFile&& other) noexcept
     : fd_(std::exchange(other.fd_, -1)), size_(other.size_) {}
@@ -71,7 +68,7 @@ RegularFileResult open_regular_file(const std::filesystem::path& path) {
         return out;
     }
     if (!S_ISREG(st.st_mode)) {
-        out.why = "not a regular file (" + kind_of(st.st_mode) + ")";
+        out.why = "not a regular file (" + describe_non_regular(st.st_mode) + ")";
         ::close(fd);
         return out;
     }

@@ -36,6 +36,10 @@ struct RegularFileResult {
     std::string why;   // "file not found", "not a regular file (a FIFO)", ...
 };
 
+// What a file that is not a regular one is, for messages: "a FIFO", "a character device"...
+// (`mode_bits` is a stat st_mode).
+std::string describe_non_regular(unsigned mode_bits);
+
 // Opens `path` for reading when it names a regular file (symbolic links followed).
 RegularFileResult open_regular_file(const std::filesystem::path& path);
 

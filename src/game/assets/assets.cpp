@@ -1,13 +1,16 @@
 #include "game/assets/assets.h"
 
+#include <map>
 #include <set>
 #include <utility>
 #include <vector>
 
 #include "core/error.h"
+#include "core/text/printable.h"
 #include "game/assets/level_models.h"
 #include "game/assets/models.h"
 #include "game/assets/obstacle_factories.h"
+#include "game/assets/scene_budget.h"
 #include "geometry/line_mesh/line_mesh.h"
 
 namespace bz::game {
@@ -55,16 +58,19 @@ void Assets::reload(const level::Level& level) {
     // Everything is checked and imported before the library changes.
     std::vector<std::pair<std::string, geo::AdjacencyMesh>> changed;
     std::set<std::string> imported;
+    std::map<std::string, std::int64_t> triangles;
     for (const level::ObjectDesc& o : level.obstacles) {
         if (!factories_.contains(o.kind)) {
-            throw UserError(where(o.pos) + "error: no object kind '" + o.kind + "'");
+            throw UserError(where(o.pos) + "error: no object kind '" + printable(o.kind) + "'");
         }
         if (o.model.empty() || !imported.insert(o.model.string()).second) continue;
         geo::AdjacencyMesh mesh = import_level_model(level, o);
+        triangles[o.model.string()] = static_cast<std::int64_t>(mesh.triangle_count());
         const std::optional<scene::MeshId> id = library_->find(o.model.string());
         if (id && same_geometry(library_->mesh(*id), mesh)) continue;
         changed.emplace_back(o.model.string(), std::move(mesh));
     }
+    check_scene_budget(level, triangles);  // before anything is uploaded
     geo::AdjacencyMesh mountains =
         geo::build_line_mesh(backdrop::mountains(level.backdrop.mountains));
     if (!same_geometry(library_->mesh(horizon_.mountains), mountains)) {

@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <ctime>
 
+#include "core/budgets.h"
 #include "core/error.h"
 #include "core/io/file_io.h"
 #include "core/text/line_reader.h"
@@ -23,7 +24,7 @@ namespace fs = std::filesystem;
 constexpr std::string_view kMagic = "beamzone-highscores";
 constexpr int kFormat = 2;
 // A few hundred levels' tables; a larger file is not one the game wrote.
-constexpr std::size_t kMaxFileBytes = 1u << 20;
+constexpr std::size_t kMaxFileBytes = budget::kHighScoreBytes;
 constexpr std::size_t kMaxErrors = 100;
 
 std::string hex(std::uint64_t v) {
@@ -209,7 +210,8 @@ HighScoreLoad load_highscores(const fs::path& file) {
     std::error_code ec;
     if (!fs::exists(fs::symlink_status(file, ec))) return out;
     try {
-        HighScoreParse parsed = parse_highscores(read_file(file, kMaxFileBytes), file.string());
+        HighScoreParse parsed =
+            parse_highscores(read_file(file, kMaxFileBytes), printable(file.string()));
         out.book = std::move(parsed.book);
         out.errors = std::move(parsed.errors);
     } catch (const UserError& e) {

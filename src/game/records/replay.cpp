@@ -1,5 +1,6 @@
 #include "game/records/replay.h"
 
+#include <algorithm>
 #include <system_error>
 
 #include "core/hash.h"
@@ -61,6 +62,30 @@ std::optional<Mismatch> Player::check(const World& world) {
     if (actual != c.hash) return Mismatch{tick, c.hash, actual};
     ++checks_passed_;
     return std::nullopt;
+}
+
+std::string missing_state_hashes(const Replay& replay) {
+    const std::uint64_t ticks = replay.commands.size();
+    if (ticks == 0) return "it holds no ticks";
+    if (replay.checks.empty()) return "it holds no state hashes";
+    const auto interval = static_cast<std::uint64_t>(std::max(1, replay.header.hash_interval));
+    std::size_t k = 0;
+    auto has = [&](std::uint64_t tick) {
+        while (k < replay.checks.size() && replay.checks[k].tick < tick) ++k;
+        return k < replay.checks.size() && replay.checks[k].tick == tick;
+    };
+    for (std::uint64_t t = interval; t <= ticks; t += interval) {
+        if (!has(t)) {
+            return "it has no state hash at tick " + std::to_string(t) + " (one every " +
+                   std::to_string(interval) + " ticks is recorded)";
+        }
+    }
+    if (!has(ticks)) return "it has no state hash at its last tick, " + std::to_string(ticks);
+    if (replay.checks.back().tick > ticks) {
+        return "it has a state hash at tick " + std::to_string(replay.checks.back().tick) +
+               ", after its last tick " + std::to_string(ticks);
+    }
+    return {};
 }
 
 VerifyResult verify(const Replay& replay, const level::Level& level, const Assets& assets) {

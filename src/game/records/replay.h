@@ -118,6 +118,12 @@ struct VerifyResult {
     std::optional<Mismatch> mismatch;  // the first one; the run stops there
 };
 
+// Why checking `replay`'s state hashes would not prove all of it: empty when it has a hash at
+// every multiple of its hash interval and at its last tick, as every recording has; else what is
+// missing ("no state hashes", "no hash at tick 120 ..."). A replay whose hashes were stripped
+// or thinned would otherwise "verify" with nothing compared.
+std::string missing_state_hashes(const Replay& replay);
+
 // Re-simulates headless from the seed and checks every recorded state hash.
 VerifyResult verify(const Replay& replay, const level::Level& level, const Assets& assets);
 

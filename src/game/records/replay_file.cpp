@@ -7,6 +7,7 @@
 #include <system_error>
 #include <utility>
 
+#include "core/budgets.h"
 #include "core/error.h"
 #include "core/io/file_io.h"
 #include "core/text/line_reader.h"
@@ -24,7 +25,7 @@ constexpr std::string_view kMagic = "beamzone-replay";
 constexpr std::size_t kMaxVersionBytes = 64;
 constexpr std::size_t kMaxLevelPathBytes = 4096;
 // A replay of kMaxTicks with a new command every tick is about 20 bytes a line.
-constexpr std::size_t kMaxReplayBytes = 256u << 20;
+constexpr std::size_t kMaxReplayBytes = budget::kReplayBytes;
 
 std::string hex(std::uint64_t v) {
     char buf[20];
@@ -341,7 +342,7 @@ Replay parse(std::string_view text, const std::string& name) {
 }
 
 Replay load(const std::filesystem::path& file) {
-    return parse(read_file(file, kMaxReplayBytes), file.string());
+    return parse(read_file(file, kMaxReplayBytes), printable(file.string()));
 }
 
 void save(const std::filesystem::path& file, const Replay& replay) {

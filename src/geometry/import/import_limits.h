@@ -7,11 +7,13 @@
 #include <filesystem>
 #include <vector>
 
+#include "core/budgets.h"
+
 namespace bz::geo {
 
 struct ImportLimits {
     // Largest model file, and largest file it references (.mtl, glTF buffers, ...).
-    std::uintmax_t max_file_bytes = std::uintmax_t{512} << 20;
+    std::uintmax_t max_file_bytes = budget::kModelBytes;
     // Memory of the import process (the data segment, and its resident size for sanitizer
     // builds): BEAMZONE_MEMORY_LIMIT_MB, default 8192; 0 = no cap.
     std::uint64_t memory_bytes = std::uint64_t{8192} << 20;

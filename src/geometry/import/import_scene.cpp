@@ -16,6 +16,7 @@
 #include "core/error.h"
 #include "core/io/regular_file.h"
 #include "core/stderr_capture.h"
+#include "core/text/printable.h"
 #include "geometry/import/confined_io.h"
 #include "geometry/import/import_gltf.h"
 #include "geometry/import/import_guard.h"
@@ -30,7 +31,7 @@ namespace fs = std::filesystem;
 constexpr std::size_t kMaxNodeDepth = 1024;
 
 [[noreturn]] void fail(const fs::path& path, const std::string& reason) {
-    std::string line = path.string() + ": error: " + reason;
+    std::string line = printable(path.string()) + ": error: " + reason;
     for (char& c : line) {
         if (c == '\n' || c == '\r') c = ' ';
     }

@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "core/text/printable.h"
 
 #if defined(__SANITIZE_ADDRESS__)
 #define BZ_ADDRESS_SANITIZER 1
@@ -242,7 +243,7 @@ class Receiver {
 };
 
 [[noreturn]] void fail(const fs::path& path, const std::string& reason) {
-    throw UserError(path.string() + ": error: " + reason);
+    throw UserError(printable(path.string()) + ": error: " + printable_message(reason));
 }
 
 // Owns the child until it has been waited for, so no exit path leaves a zombie or a runaway.

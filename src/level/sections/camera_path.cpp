@@ -1,6 +1,7 @@
 #include <array>
 
 #include "level/sections/sections.h"
+#include "scene/camera_check.h"
 
 namespace bz::level::detail {
 
@@ -49,6 +50,12 @@ void read_camera_path(const toml::table& root, Level& level, ReadContext& ctx) {
         }
         if (glm::length(*target - *eye) < 1e-6) {
             ctx.diag.error(r.get("target")->source(), "camera target must differ from the eye");
+            continue;
+        }
+        // The path's camera keeps +y up: a key looking straight up or down has no picture.
+        if (const std::string why = scene::view_problem(*eye, *target, {0.0, 1.0, 0.0});
+            !why.empty()) {
+            ctx.diag.error(r.get("target")->source(), "the camera cannot make a picture: " + why);
             continue;
         }
         have_previous = true;

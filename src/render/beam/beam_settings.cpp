@@ -1,4 +1,5 @@
 #include "core/error.h"
+#include "core/text/printable.h"
 #include "render/settings.h"
 
 namespace bz::render {
@@ -47,7 +48,7 @@ BeamSettings beam_look(std::string_view name) {
         b.bloom_floor = 0.025f;
         return b;
     }
-    throw UserError("unknown beam look '" + std::string(name) + "' (use classic or mame)");
+    throw UserError("unknown beam look '" + printable(name) + "' (use classic or mame)");
 }
 
 }  // namespace bz::render

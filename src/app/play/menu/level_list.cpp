@@ -30,13 +30,13 @@ Found describe(const std::filesystem::path& file, bool user) {
     if (!r.level) {
         std::string name = file.stem().string();
         std::replace(name.begin(), name.end(), '_', ' ');
-        f.choice.name = upper(printable(name));
+        f.choice.name = upper(menu_label(name));
         f.choice.description = "DOES NOT LOAD: CHOOSE IT TO SEE WHY";
         f.choice.loads = false;
         return f;
     }
-    f.choice.name = upper(printable(r.level->name));
-    f.choice.description = upper(printable(r.level->description));
+    f.choice.name = upper(menu_label(r.level->name));
+    f.choice.description = upper(menu_label(r.level->description, 2 * budget::kMenuLabelChars));
     f.choice.listed = r.level->listed;
     f.order = r.level->menu_order;
     return f;

@@ -1,0 +1,57 @@
+#include "game/assets/scene_budget.h"
+
+#include <set>
+
+#include "core/budgets.h"
+#include "core/error.h"
+#include "core/text/printable.h"
+
+namespace bz::game {
+
+namespace {
+
+std::string where(const level::SourcePos& p) {
+    if (p.file.empty()) return {};
+    return printable(p.file) + ":" + std::to_string(p.line) + ":" + std::to_string(p.column) + ": ";
+}
+
+std::string count(std::int64_t n) {
+    std::string digits = std::to_string(n);
+    for (int i = static_cast<int>(digits.size()) - 3; i > 0; i -= 3)
+        digits.insert(static_cast<std::size_t>(i), ",");
+    return digits;
+}
+
+[[noreturn]] void over(const level::ObjectDesc& o, const std::string& what, std::int64_t total,
+                       std::int64_t budget) {
+    throw UserError(where(o.pos) + "error: this object takes the scene to " + count(total) + " " +
+                    what + ", over the budget of " + count(budget) +
+                    " (place fewer objects or use a smaller model)");
+}
+
+}  // namespace
+
+SceneCost check_scene_budget(const level::Level& level,
+                             const std::map<std::string, std::int64_t>& model_triangles) {
+    SceneCost cost;
+    std::set<std::string> counted;
+    for (const level::ObjectDesc& o : level.obstacles) {
+        ++cost.instances;
+        if (cost.instances > budget::kSceneInstances)
+            over(o, "objects", cost.instances, budget::kSceneInstances);
+        if (o.model.empty()) continue;
+        const auto it = model_triangles.find(o.model.string());
+        if (it == model_triangles.end()) continue;
+        cost.triangles += it->second;
+        if (cost.triangles > budget::kSceneTriangles)
+            over(o, "triangles", cost.triangles, budget::kSceneTriangles);
+        if (counted.insert(it->first).second) {
+            cost.gpu_bytes += it->second * budget::kGpuBytesPerTriangle;
+            if (cost.gpu_bytes > budget::kSceneGpuBytes)
+                over(o, "bytes of GPU memory (estimated)", cost.gpu_bytes, budget::kSceneGpuBytes);
+        }
+    }
+    return cost;
+}
+
+}  // namespace bz::game
