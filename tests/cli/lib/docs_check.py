@@ -145,6 +145,15 @@ class Checker:
             names = re.sub(r"\([^)]*\)", "", m.group(1))
             self.styles = set(re.findall(r"[a-z][a-z-]*", names)) - {"or"}
             self.styles |= {m.group(2), m.group(3)}
+        # Since the style table (src/scene/style_table.h) the help lists one style a line:
+        # "  NAME  help (old name: OLD)" under "--style: ...:".
+        t = re.search(r"^--style:[^\n]*:\n((?:  [a-z][a-z-]*  [^\n]*\n?)+)", self.help["render"], flags=re.M)
+        if t:
+            for sm in re.finditer(r"^  ([a-z][a-z-]*)  [^\n]*?(?:\(old name: ([a-z][a-z-]*)\))?$", t.group(1),
+                                  flags=re.M):
+                self.styles.add(sm.group(1))
+                if sm.group(2):
+                    self.styles.add(sm.group(2))
         if not {"vector", "toon", "halo"} <= self.styles:
             sys.exit("docs_check: cannot read the style list from `render --help`")
         self.settings_keys = set()
