@@ -73,16 +73,22 @@ std::vector<std::uint32_t> meshlet_of_triangles(const AdjacencyMesh& mesh) {
 
 float crease_key(const MeshEdge& e) {
     if (e.face_b == kNoVertex || e.opp_b == kNoVertex) return kAlwaysFeatureKey;
-    return std::isnan(e.cos_dihedral) ? 2.0f : e.cos_dihedral;
+    if (std::isnan(e.cos_dihedral)) return 2.0f;
+    return e.cos_dihedral >= 1.0f ? kFlatKey : e.cos_dihedral;
 }
 
-// Bounds of edges [first, first + count) of `c.edges`.
+// A cluster of edges [first, first + count) of `c.edges`, its bounds around the candidates
+// (the edges before the first flat one).
 EdgeCluster bound_cluster(const AdjacencyMesh& mesh, const std::vector<glm::dvec3>& unit_normals,
                           const std::vector<bool>& degenerate, const ClusteredEdges& c,
-                          std::uint32_t first, std::uint32_t count) {
+                          std::uint32_t first, std::uint32_t all) {
     EdgeCluster out;
     out.first = first;
-    out.count = count;
+    out.count = all;
+    std::uint32_t count = 0;
+    while (count < all && c.crease_keys[first + count] < kFlatKey) ++count;
+    out.candidates = count;
+    if (count == 0) return out;
     glm::dvec3 lo(INFINITY), hi(-INFINITY), sum(0.0);
     bool cone = true;
     for (std::uint32_t i = first; i < first + count; ++i) {

@@ -26,6 +26,12 @@ inline constexpr std::uint32_t kMaxClusterEdges = 64;
 // feature at every view) sorts first.
 inline constexpr float kAlwaysFeatureKey = -3.0f;
 
+// The crease key of an edge between coplanar faces (its cos_dihedral rounds to 1): never a
+// crease, and a silhouette only when the eye lies in the faces' plane (within the float
+// rounding of their normals), where the edge lies along the plane's own outline. It sorts last
+// and is never tested: flat subdivision and flat quads split into triangles cost nothing.
+inline constexpr float kFlatKey = 3.0f;
+
 struct EdgeCluster {
     glm::vec3 center{0.0f};  // a sphere around every end point of the cluster's edges
     float radius = 0.0f;
@@ -36,13 +42,16 @@ struct EdgeCluster {
     float cos_spread = -1.0f;
     std::uint32_t first = 0;  // its edges: [first, first + count) of ClusteredEdges::edges
     std::uint32_t count = 0;
+    // The first `candidates` edges may be feature edges; the rest are flat (kFlatKey). The
+    // sphere and the cone bound the candidates only.
+    std::uint32_t candidates = 0;
 };
 
 struct ClusteredEdges {
     std::vector<MeshEdge> edges;  // every edge of the list, cluster by cluster
     // Per edge, what the crease test compares with the instance's cos(crease angle): the
-    // edge's cos_dihedral, kAlwaysFeatureKey without face B, 2 where the cosine is not a
-    // number. Ascending inside each cluster.
+    // edge's cos_dihedral, kAlwaysFeatureKey without face B, kFlatKey between coplanar faces,
+    // 2 where the cosine is not a number. Ascending inside each cluster.
     std::vector<float> crease_keys;
     std::vector<EdgeCluster> clusters;
 };

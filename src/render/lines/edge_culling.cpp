@@ -89,6 +89,7 @@ void append_edge_work(const geo::ClusteredEdges& clusters, const glm::mat4& mode
     for (const geo::EdgeCluster& k : clusters.clusters) {
         ++stats.clusters;
         stats.edges += k.count;
+        if (k.candidates == 0) continue;  // flat edges only: never a feature edge
         const glm::dvec3 c(mv * glm::dvec4(glm::dvec3(k.center), 1.0));
         const double r = static_cast<double>(k.radius) * scale * (1.0 + 1e-6);
         const double depth = -c.z;
@@ -97,7 +98,7 @@ void append_edge_work(const geo::ClusteredEdges& clusters, const glm::mat4& mode
             ++stats.outside_frustum;
             continue;
         }
-        std::uint32_t count = k.count;
+        std::uint32_t count = k.candidates;
         switch (cluster_facing(k, eye, eye_sign.w)) {
             case Facing::mixed:
                 break;

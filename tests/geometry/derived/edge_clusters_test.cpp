@@ -29,7 +29,10 @@ void expect_well_formed(const AdjacencyMesh& m) {
         next = k.first + k.count;
         EXPECT_TRUE(std::is_sorted(c.crease_keys.begin() + k.first,
                                    c.crease_keys.begin() + k.first + k.count));
-        for (std::uint32_t i = k.first; i < k.first + k.count; ++i) {
+        EXPECT_LE(k.candidates, k.count);
+        for (std::uint32_t i = k.first; i < k.first + k.count; ++i)
+            EXPECT_EQ(i < k.first + k.candidates, c.crease_keys[i] < kFlatKey);
+        for (std::uint32_t i = k.first; i < k.first + k.candidates; ++i) {
             const MeshEdge& e = c.edges[i];
             // The sphere holds both end points.
             for (const std::uint32_t v : {e.a, e.b})

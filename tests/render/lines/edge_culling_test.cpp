@@ -8,6 +8,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "geometry/generated/primitives.h"
+#include "geometry/generated/subdivide.h"
 #include "geometry/line_mesh/line_mesh.h"
 
 namespace bz::render {
@@ -16,9 +17,9 @@ namespace {
 struct Scene {
     geo::AdjacencyMesh mesh;
     geo::ClusteredEdges clusters;
-    explicit Scene(const geo::TriMesh& m)
-        : mesh(geo::build_line_mesh(m)),
-          clusters(geo::cluster_edges(mesh, geo::build_edge_list(mesh))) {}
+    explicit Scene(const geo::TriMesh& m) : Scene(geo::build_line_mesh(m)) {}
+    explicit Scene(geo::AdjacencyMesh m)
+        : mesh(std::move(m)), clusters(geo::cluster_edges(mesh, geo::build_edge_list(mesh))) {}
 };
 
 CullView view_of(float fov_deg = 60.0f) {
@@ -112,6 +113,21 @@ TEST(EdgeCulling, CreasesOfAOneWayClusterAreStillTested) {
     const glm::mat4 mv = glm::lookAt(glm::vec3(4, 3, 5), glm::vec3(0.0f), glm::vec3(0, 1, 0));
     const Culled c = cull(s, mv, 0.5f, true);
     EXPECT_EQ(expect_features_kept(s, mv, 0.5f, true, c), 9u);  // 6 silhouette + 3 front creases
+}
+
+TEST(EdgeCulling, FlatSubdivisionAddsNoEdgeToTest) {
+    // A box split 4^3 times over: 12 creases of 8 pieces each; the rest lie between coplanar
+    // faces and are never tested, from any view.
+    const Scene s(geo::subdivide_flat(geo::build_line_mesh(geo::box(glm::vec3(1.0f))), 3));
+    for (const glm::vec3 eye :
+         {glm::vec3(4, 3, 5), glm::vec3(0.2f, 6, 0.1f), glm::vec3(-3, -2, 4)}) {
+        const glm::mat4 mv = glm::lookAt(eye, glm::vec3(0.0f), glm::vec3(0, 1, 0));
+        for (const bool skip : {true, false}) {
+            const Culled c = cull(s, mv, 0.5f, skip);
+            EXPECT_GT(expect_features_kept(s, mv, 0.5f, skip, c), 0u);
+            EXPECT_LE(c.stats.edges_dispatched, 12u * 8u);
+        }
+    }
 }
 
 TEST(EdgeCulling, AThinOpenSheetKeepsItsBoundaryFromBothSides) {
