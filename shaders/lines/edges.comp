@@ -81,6 +81,27 @@ vec2 on_screen_stretch(vec2 s0, vec2 s1) {
     return vec2(t0, t1);
 }
 
+mat4 model_view(uint inst) {
+    return mat4(instance_data[inst * 6u], instance_data[inst * 6u + 1u], instance_data[inst * 6u + 2u],
+                instance_data[inst * 6u + 3u]);
+}
+
+// Whether a face faces the eye: in object space (normal n, eye minus its vertex a), with the
+// view-space test of the geometry shader for a near tie, so that both line methods classify a
+// grazing face alike (the object-space rounding differs from the view-space one, and the
+// difference showed as a few lost silhouette pixels against the exact reference). The face is
+// a, v1, v2 in its winding.
+bool faces_eye_object(uint inst, vec3 n, vec3 to_eye, vec3 pa, uint v1, uint v2) {
+    float eye_w = uintBitsToFloat(work[inst]).w;
+    float s = eye_w * dot(n, to_eye);
+    if (abs(s) > 1e-4 * length(n) * length(to_eye)) return s > 0.0;
+    mat4 mv = model_view(inst);
+    vec3 a = (mv * vec4(pa, 1.0)).xyz;
+    vec3 b = (mv * vec4(position(v1), 1.0)).xyz;
+    vec3 c = (mv * vec4(position(v2), 1.0)).xyz;
+    return faces_eye(face_normal(a, b, c), a);
+}
+
 void main() {
     uvec4 item = work[u_work_base + gl_WorkGroupID.x];
     if (gl_LocalInvocationID.x >= item.z) return;
@@ -91,7 +112,7 @@ void main() {
     vec3 pa = position(me.a);
     vec3 to_eye = eye.xyz - pa;  // both faces hold vertex a
     vec3 obj_na = face_normals[me.face_a].xyz;
-    bool front_a = eye.w * dot(obj_na, to_eye) > 0.0;
+    bool front_a = faces_eye_object(inst, obj_na, to_eye, pa, me.b, me.opp_a);
 
     // The geometry shader's cases, seen from the edge instead of from each face; everything
     // that is no feature edge returns before any vertex is transformed.
@@ -108,7 +129,7 @@ void main() {
         if (me.flags == 3u) flags |= EDGE_INCONSISTENT;
     } else {
         obj_nb = face_normals[me.face_b].xyz;
-        front_b = eye.w * dot(obj_nb, to_eye) > 0.0;
+        front_b = faces_eye_object(inst, obj_nb, to_eye, pa, me.opp_b, me.b);
         flags |= EDGE_HAS_FACE_B | (front_b ? EDGE_FACE_B_FRONT : 0u);
         if (front_a != front_b) {
             kind = EDGE_SILHOUETTE;
@@ -122,8 +143,7 @@ void main() {
     // A feature edge: to view space. Normals go with the cofactor matrix (right for any
     // invertible model-view), which maps the object-space cross product of a face's edges to
     // the view-space one.
-    mat4 mv = mat4(instance_data[inst * 6u], instance_data[inst * 6u + 1u], instance_data[inst * 6u + 2u],
-                   instance_data[inst * 6u + 3u]);
+    mat4 mv = model_view(inst);
     mat3 l = mat3(mv);
     mat3 cof = mat3(cross(l[1], l[2]), cross(l[2], l[0]), cross(l[0], l[1]));
     vec3 a = (mv * vec4(pa, 1.0)).xyz;
