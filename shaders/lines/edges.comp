@@ -90,10 +90,9 @@ mat4 model_view(uint inst) {
 // view-space test of the geometry shader for a near tie, so that both line methods classify a
 // grazing face alike (the object-space rounding differs from the view-space one, and the
 // difference showed as a few lost silhouette pixels against the exact reference). The face is
-// a, v1, v2 in its winding.
-bool faces_eye_object(uint inst, vec3 n, vec3 to_eye, vec3 pa, uint v1, uint v2) {
-    float eye_w = uintBitsToFloat(work[inst]).w;
-    float s = eye_w * dot(n, to_eye);
+// a, v1, v2 in its winding; `det_sign` is the instance's (the eye's w).
+bool faces_eye_object(uint inst, float det_sign, vec3 n, vec3 to_eye, vec3 pa, uint v1, uint v2) {
+    float s = det_sign * dot(n, to_eye);
     if (abs(s) > 1e-4 * length(n) * length(to_eye)) return s > 0.0;
     mat4 mv = model_view(inst);
     vec3 a = (mv * vec4(pa, 1.0)).xyz;
@@ -112,7 +111,7 @@ void main() {
     vec3 pa = position(me.a);
     vec3 to_eye = eye.xyz - pa;  // both faces hold vertex a
     vec3 obj_na = face_normals[me.face_a].xyz;
-    bool front_a = faces_eye_object(inst, obj_na, to_eye, pa, me.b, me.opp_a);
+    bool front_a = faces_eye_object(inst, eye.w, obj_na, to_eye, pa, me.b, me.opp_a);
 
     // The geometry shader's cases, seen from the edge instead of from each face; everything
     // that is no feature edge returns before any vertex is transformed.
@@ -129,7 +128,7 @@ void main() {
         if (me.flags == 3u) flags |= EDGE_INCONSISTENT;
     } else {
         obj_nb = face_normals[me.face_b].xyz;
-        front_b = faces_eye_object(inst, obj_nb, to_eye, pa, me.opp_b, me.b);
+        front_b = faces_eye_object(inst, eye.w, obj_nb, to_eye, pa, me.opp_b, me.b);
         flags |= EDGE_HAS_FACE_B | (front_b ? EDGE_FACE_B_FRONT : 0u);
         if (front_a != front_b) {
             kind = EDGE_SILHOUETTE;

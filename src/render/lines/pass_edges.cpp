@@ -30,10 +30,10 @@ void pass_edges(const PassContext& ctx) {
     EdgeCullStats cull;
     struct Dispatch {
         const Batch* batch;
+        const GpuMesh* mesh;
         std::size_t first, count;  // its items in `work`
     };
     std::vector<Dispatch> dispatches;
-    std::size_t worst = 0;
     for (const Batch& b : ctx.batches.batches) {
         const GpuMesh& mesh = ctx.gpu_meshes.get(ctx.meshes, b.mesh, b.lod);
         if (mesh.edge_count == 0) continue;
@@ -41,19 +41,18 @@ void pass_edges(const PassContext& ctx) {
         const std::size_t first = work.size();
         for (GLsizei i = 0; i < b.instance_count; ++i) {
             const GLuint inst = b.first_instance + static_cast<GLuint>(i);
-            const EdgeCullStats before = cull;
             append_edge_work(mesh.edge_clusters, instances[inst].model_view,
                              instances[inst].params.x, skip_back_faces, view, inst, work, cull);
-            worst += cull.edges_dispatched - before.edges_dispatched;
         }
-        if (work.size() > first) dispatches.push_back({&b, first, work.size() - first});
+        if (work.size() > first) dispatches.push_back({&b, &mesh, first, work.size() - first});
     }
     if (ctx.stats) ctx.stats->edge_culling = cull;
 
     // A previous frame that overflowed asks for more; a frame that cannot overflow gets it all.
     const EdgeDrawCommand previous = ctx.edges.previous();
+    // At most one record per dispatched edge.
     ctx.edges.reserve(std::min(
-        worst,
+        cull.edges_dispatched,
         std::max(kInitialRecords, std::size_t{previous.vertex_count / kVerticesPerEdge} + 1024)));
     const bool samples = wants_spine_samples(ctx);
     if (samples)
@@ -84,7 +83,7 @@ void pass_edges(const PassContext& ctx) {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEdgeWorkBinding, ctx.edges.work().id());
     for (const Dispatch& d : dispatches) {
         const Batch& b = *d.batch;
-        const GpuMesh& mesh = ctx.gpu_meshes.get(ctx.meshes, b.mesh, b.lod);
+        const GpuMesh& mesh = *d.mesh;
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEdgeListBinding, mesh.edge_list.id());
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEdgePositionsBinding, mesh.positions.id());
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kVertexNormalsBinding, mesh.vertex_normals.id());
