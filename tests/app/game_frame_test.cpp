@@ -11,6 +11,7 @@
 #include "game/hud/hud_layout.h"
 #include "render/renderer.h"
 #include "support/gl_test.h"
+#include "support/tree_paths.h"
 
 namespace {
 
@@ -53,7 +54,7 @@ TEST_F(GameFrameTest, LightsHudAndLevelWhereTheyBelong) {
     renderer.render(game.frame(1.0, double(kW) / kH), game.meshes(),
                     bz::render::Renderer::kOffscreen);
     const Frame f{renderer.read_color()};
-    const auto out = std::filesystem::path(BEAMZONE_BINARY_DIR) / "test-out";
+    const auto out = bz::test::binary_dir() / "test-out";
     std::filesystem::create_directories(out);
     bz::write_png(out / "game_frame.png", bz::Image{kW, kH, 4, f.rgba});
 

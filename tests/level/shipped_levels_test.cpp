@@ -7,6 +7,7 @@
 
 #include "core/io/file_io.h"
 #include "level/loader.h"
+#include "support/tree_paths.h"
 
 namespace bz::level {
 namespace {
@@ -14,7 +15,7 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path levels() {
-    return fs::path(BEAMZONE_SOURCE_DIR) / "levels";
+    return bz::test::source_dir() / "levels";
 }
 
 Level load_shipped(const std::string& name) {
@@ -78,8 +79,7 @@ namespace {
 
 // The complete example in levels/README.md must stay a valid level.
 TEST(ShippedLevels, ReadmeExampleIsValid) {
-    const std::string readme =
-        read_file(std::filesystem::path(BEAMZONE_SOURCE_DIR) / "levels" / "README.md");
+    const std::string readme = read_file(bz::test::source_dir() / "levels" / "README.md");
     const auto heading = readme.find("## Example");
     ASSERT_NE(heading, std::string::npos);
     const auto begin = readme.find("```toml\n", heading);
@@ -87,8 +87,8 @@ TEST(ShippedLevels, ReadmeExampleIsValid) {
     const auto end = readme.find("```", begin + 8);
     ASSERT_NE(end, std::string::npos);
     const std::string example = readme.substr(begin + 8, end - begin - 8);
-    const LoadResult r = load_level_string(
-        example, std::filesystem::path(BEAMZONE_SOURCE_DIR) / "levels" / "readme-example.toml");
+    const LoadResult r =
+        load_level_string(example, bz::test::source_dir() / "levels" / "readme-example.toml");
     for (const auto& e : r.errors) ADD_FAILURE() << format(e);
     ASSERT_TRUE(r.ok());
     EXPECT_EQ(r.level->name, "Two Towers");

@@ -12,6 +12,7 @@
 #include "core/image_io.h"
 #include "geometry/generated/primitives.h"
 #include "render/render_fixture.h"
+#include "support/tree_paths.h"
 
 namespace {
 
@@ -23,7 +24,7 @@ class HaloSmoothingTest : public bz::test::RenderTest {
         renderer->set_settings(settings);
         renderer->render(frame, meshes, bz::render::Renderer::kOffscreen);
         const std::vector<std::uint8_t> rgba = renderer->read_color();
-        const auto dir = std::filesystem::path(BEAMZONE_BINARY_DIR) / "test-out";
+        const auto dir = bz::test::binary_dir() / "test-out";
         std::filesystem::create_directories(dir);
         bz::write_png(dir / (name + ".png"), bz::Image{kWidth, kHeight, 4, rgba});
         constexpr int kBins = 180;

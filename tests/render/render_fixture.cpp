@@ -8,12 +8,13 @@
 #include "core/image_io.h"
 #include "geometry/import/import.h"
 #include "render/camera/camera_framing.h"
+#include "support/tree_paths.h"
 
 namespace bz::test {
 
 namespace {
 std::filesystem::path out_dir() {
-    const auto dir = std::filesystem::path(BEAMZONE_BINARY_DIR) / "test-out";
+    const auto dir = bz::test::binary_dir() / "test-out";
     std::filesystem::create_directories(dir);
     return dir;
 }

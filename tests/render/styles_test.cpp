@@ -17,6 +17,7 @@
 #include "render/render_fixture.h"
 #include "render/style_regions.h"
 #include "render/styles/style_def.h"
+#include "support/tree_paths.h"
 
 using bz::scene::Style;
 using bz::test::Region;
@@ -49,7 +50,7 @@ class StyleTest : public bz::test::RenderTest {
         renderer->set_settings(settings);
         renderer->render(frame, meshes, bz::render::Renderer::kOffscreen);
         std::vector<std::uint8_t> rgba = renderer->read_color();
-        const auto dir = std::filesystem::path(BEAMZONE_BINARY_DIR) / "test-out";
+        const auto dir = bz::test::binary_dir() / "test-out";
         std::filesystem::create_directories(dir);
         bz::write_png(dir / ("style_" + name + ".png"), bz::Image{kWidth, kHeight, 4, rgba});
         return rgba;

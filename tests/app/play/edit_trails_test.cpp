@@ -13,6 +13,7 @@
 #include "render/renderer.h"
 #include "scene/presentation_clock.h"
 #include "support/gl_test.h"
+#include "support/tree_paths.h"
 
 namespace {
 
@@ -33,7 +34,7 @@ int differing(const std::vector<std::uint8_t>& a, const std::vector<std::uint8_t
 }
 
 void save(const std::string& name, const std::vector<std::uint8_t>& rgba) {
-    const auto dir = std::filesystem::path(BEAMZONE_BINARY_DIR) / "test-out";
+    const auto dir = bz::test::binary_dir() / "test-out";
     std::filesystem::create_directories(dir);
     bz::write_png(dir / name, bz::Image{kW, kH, 4, rgba});
 }

@@ -22,6 +22,7 @@
 #include "render/renderer.h"
 #include "scene/style_table.h"
 #include "support/gl_test.h"
+#include "support/tree_paths.h"
 
 namespace {
 
@@ -123,7 +124,7 @@ TEST_F(HudContrastTest, HudAndNoticesReachWcagContrastInEveryStyle) {
     overlay.notify("style halo");
     overlay.set_footer("58 FPS  17.2 MS");
 
-    const auto out = std::filesystem::path(BEAMZONE_BINARY_DIR) / "test-out";
+    const auto out = bz::test::binary_dir() / "test-out";
     std::filesystem::create_directories(out);
     for (const std::string& beam : bz::render::beam_look_names()) {
         bz::render::RenderSettings settings = bz::render::preset("balanced");

@@ -12,6 +12,7 @@
 #include "geometry/line_mesh/line_mesh.h"
 #include "level/kinds.h"
 #include "scene/shapes.h"
+#include "support/tree_paths.h"
 
 namespace bz::game {
 namespace {
@@ -54,7 +55,7 @@ TEST(Assets, ModelKindImportsOnceAndSharesTheMesh) {
     const std::size_t before = lib.size();
     scene::Placement p;
     p.kind = "model";
-    p.model = std::string(BEAMZONE_SOURCE_DIR) + "/data/models/pylon.obj";
+    p.model = (bz::test::source_dir() / "data/models/pylon.obj").string();
     const scene::Entity a = table.create(p);
     p.position = {50, 0, 0};
     const scene::Entity b = table.create(p);

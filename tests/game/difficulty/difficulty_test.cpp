@@ -14,6 +14,7 @@
 #include "game/difficulty/difficulty_probe.h"
 #include "game/records/replay.h"
 #include "level/loader.h"
+#include "support/tree_paths.h"
 
 namespace bz::game {
 namespace {
@@ -21,8 +22,7 @@ namespace {
 constexpr int kSeeds = 20;
 
 level::Level shipped(const std::string& name) {
-    const level::LoadResult r =
-        level::load_level_file(std::filesystem::path(BEAMZONE_SOURCE_DIR) / "levels" / name);
+    const level::LoadResult r = level::load_level_file(bz::test::source_dir() / "levels" / name);
     for (const auto& e : r.errors) ADD_FAILURE() << level::format(e);
     return r.level.value_or(level::Level{});
 }
