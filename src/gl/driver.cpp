@@ -9,6 +9,11 @@ std::string renderer_name() {
     return r ? r : "unknown";
 }
 
+std::string version_name() {
+    const auto* v = reinterpret_cast<const char*>(glGetString(GL_VERSION));
+    return v ? v : "unknown";
+}
+
 bool is_software_renderer() {
     const std::string r = renderer_name();
     return r.find("llvmpipe") != std::string::npos || r.find("softpipe") != std::string::npos ||

@@ -7,6 +7,8 @@ namespace bz::gl {
 
 // GL_RENDERER, or "unknown".
 std::string renderer_name();
+// GL_VERSION (with the driver's own version), or "unknown".
+std::string version_name();
 // llvmpipe, softpipe or another software rasteriser: timer queries miss its vertex and
 // geometry work, and its geometry shader runs on one thread.
 bool is_software_renderer();

@@ -63,6 +63,8 @@ struct PassContext {
     // Pixel rows from the bottom that the scene's lines may light (FrameList::view_top); the
     // rows above belong to the HUD band. 0: all of them.
     int view_rows = 0;
+    // Where draw_batch_triangles puts a frame's indirect draws; null: no cluster culling.
+    gl::Buffer* triangle_draws = nullptr;
 };
 
 void pass_prepass(const PassContext& ctx);
@@ -73,8 +75,14 @@ void pass_prepass(const PassContext& ctx);
 gl::PipelineState depth_writing_state(const PassContext& ctx, bool color_write);
 double depth_clear_value(const PassContext& ctx);
 // `vao` picks the mesh's vertex layout: positions only (prepass) or the fill's normals and colour.
-void draw_batch_triangles(const PassContext& ctx, gl::PipelineState state, bool occluders_only,
-                          gl::VertexArray GpuMesh::*vao = &GpuMesh::prepass_vao);
+// A mesh of many clusters draws only the clusters in view, and of a closed mesh seen from
+// outside only those not wholly facing away (render/gpu_scene/triangle_culling.h), unless
+// `moves_vertices` (a vertex stage that displaces vertices leaves the clusters' bounds); returns
+// what that culling did.
+TriangleCullStats draw_batch_triangles(const PassContext& ctx, gl::PipelineState state,
+                                       bool occluders_only,
+                                       gl::VertexArray GpuMesh::*vao = &GpuMesh::prepass_vao,
+                                       bool moves_vertices = false);
 // mask_mode: draw the 1-pixel visible-spine mask into targets.mask instead of shaded lines.
 void pass_lines(const PassContext& ctx, bool mask_mode);
 // Shared by both line methods' draw passes (pass_lines.cpp): binds and clears the lines (or

@@ -34,6 +34,7 @@ struct Renderer::Impl {
     Targets targets;
     StyleTextures style_textures = make_style_textures();
     gl::Buffer instances;
+    gl::Buffer triangle_draws;  // the prepass's and fills' indirect draws (draw_batch_triangles)
     MeshCache gpu_meshes{instances};
     EdgeStorage edges;
     gl::VertexArray empty_vao;
@@ -79,13 +80,17 @@ struct Renderer::Impl {
                         const CameraMatrices& cam, const StyleDef& style, GLsizei hud_count,
                         GLuint target, const scene::FrameList& frame, FramePicture* picture) {
         const int view_rows = scene_view_rows(frame.view_top, height);
-        return PassContext{
-            programs,       targets,       gpu_meshes,     meshes,
-            batches,        cam,           frame_settings, style.hidden_lines_removed,
-            empty_vao,      instances,     edges,          style,
-            style_textures, hud_vao,       hud_count,      target,
-            &stats,         &edge_counter, picture,        frame.seed,
-            view_rows};
+        return PassContext{programs,       targets,
+                           gpu_meshes,     meshes,
+                           batches,        cam,
+                           frame_settings, style.hidden_lines_removed,
+                           empty_vao,      instances,
+                           edges,          style,
+                           style_textures, hud_vao,
+                           hud_count,      target,
+                           &stats,         &edge_counter,
+                           picture,        frame.seed,
+                           view_rows,      &triangle_draws};
     }
 
     CameraMatrices camera(const scene::FrameList& frame) const {
@@ -126,7 +131,8 @@ struct Renderer::Impl {
     void choose_line_method(const FrameBatches& batches, const StyleDef& style,
                             bool (*fills_edges)(const StyleDef&, const RenderSettings&)) {
         frame_settings.method =
-            resolve_line_method(settings.method, batches.stats.triangles_submitted, software);
+            resolve_line_method(settings.method, batches.stats.triangles_submitted, software,
+                                settings.auto_compute_from_triangles);
         const bool fills = fills_edges(style, frame_settings);
         if (fills && !edges_filled_last_frame) edges.forget_previous();
         edges_filled_last_frame = fills;

@@ -8,6 +8,7 @@
 
 #include "gl/pass_timer.h"
 #include "gl/texture.h"
+#include "render/gpu_scene/triangle_culling.h"
 #include "render/lines/edge_culling.h"
 #include "render/settings.h"
 #include "scene/frame_list.h"
@@ -28,6 +29,8 @@ struct FrameStats {
     // LineMethod::compute: what culling before per-edge work left to the edge pass
     // (render/lines/edge_culling.h); zero with the geometry shader.
     EdgeCullStats edge_culling;
+    // What cluster culling left to the depth prepass (render/gpu_scene/triangle_culling.h).
+    TriangleCullStats triangle_culling;
 };
 
 class Renderer {

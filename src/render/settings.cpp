@@ -40,8 +40,11 @@ const std::vector<LineMethod>& feature_line_methods() {
 }
 
 LineMethod resolve_line_method(LineMethod method, std::size_t triangles_submitted,
-                               bool software_rasteriser) {
+                               bool software_rasteriser, std::optional<std::size_t> measured) {
     if (method != LineMethod::automatic) return method;
+    if (measured) {
+        return triangles_submitted >= *measured ? LineMethod::compute : LineMethod::geometry_shader;
+    }
     if (!software_rasteriser) return LineMethod::compute;
     return triangles_submitted >= kAutoComputeFromTriangles ? LineMethod::compute
                                                             : LineMethod::geometry_shader;

@@ -35,8 +35,9 @@ const char* line_method_name(LineMethod method);
 // which draws each frame with one of these two).
 const std::vector<LineMethod>& feature_line_methods();
 
-// LineMethod::automatic on a software rasteriser (llvmpipe) draws a frame with the compute
-// method from this many submitted triangles (after culling and LOD,
+// Without a measurement for the machine (RenderSettings::auto_compute_from_triangles,
+// render/auto_threshold.h), LineMethod::automatic on a software rasteriser (llvmpipe) draws a
+// frame with the compute method from this many submitted triangles (after culling and LOD,
 // FrameStats::triangles_submitted) and with the geometry shader below. The compute path has
 // fixed per-frame costs (dispatches, counters, the visibility pass, an indirect draw) but
 // scales with llvmpipe's threads; the geometry shader runs on one thread at a cost per
@@ -47,8 +48,11 @@ inline constexpr std::size_t kAutoComputeFromTriangles = 4000;
 // The method that draws a frame of `triangles_submitted` triangles: `method` itself unless it
 // is LineMethod::automatic. Depends on the frame's content and the renderer only, never on
 // timings, so the same frame on the same machine always gets the same method.
+// `measured`: the machine's measured crossing (render/auto_threshold.h), which replaces the
+// built-in rule.
 LineMethod resolve_line_method(LineMethod method, std::size_t triangles_submitted,
-                               bool software_rasteriser);
+                               bool software_rasteriser,
+                               std::optional<std::size_t> measured = std::nullopt);
 
 // The method presets use: auto, which on llvmpipe is as fast as the geometry shader on small
 // game frames and as the compute method on large scenes, and on a hardware GPU is the compute
@@ -133,9 +137,16 @@ struct RenderSettings {
     float bloom_strength = 1.0f;
     float exposure = 1.0f;
     bool frustum_culling = true;
+    // Draw only the triangle clusters in view in the depth prepass and the fills, and of a
+    // closed mesh seen from outside only those not wholly facing away (triangle_culling.h);
+    // false: whole meshes (the same picture, for comparing).
+    bool cluster_culling = true;
     bool lod = true;           // raise the crease threshold / use simplified meshes far away
     bool count_edges = false;  // count emitted feature edges (costs a query per frame)
     LineMethod method = kDefaultLineMethod;
+    // LineMethod::automatic: compute from this many submitted triangles, as measured on this
+    // machine (render/auto_threshold.h, app/line_method_profile.h); unset: the built-in rule.
+    std::optional<std::size_t> auto_compute_from_triangles;
     bool instancing = true;  // false: one draw call per object (for measuring batching)
     // image_outline thresholds: relative depth step, and normal step as a crease angle.
     float outline_depth_threshold = 0.1f;

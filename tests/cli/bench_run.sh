@@ -51,7 +51,9 @@ expect 0 "" reference --level "$level" --time 0.0667 --size 192x108 --mask "$wor
 cmp -s "$work/again.png" "$work/sweep/masks/reference_frame0001.png" || fail "reference --level --time differs from the sweep's"
 
 # Scaling on two frames.
-expect 0 "ms per 100k triangles" bench "$level" --scaling --frames 2 --warmup 1 --size 96x54 --out "$work/scale"
+expect 0 "ms per 100k triangles" bench "$level" --scaling --frames 2 --warmup 1 --size 96x54 --series-max 30000 --out "$work/scale"
+grep -q '"model_series"' "$work/scale/scaling.json" || fail "scaling.json has no model series"
+grep -q '"edges_pass_ms_mean"' "$work/scale/scaling.json" || fail "scaling.json has no edges pass"
 [ -s "$work/scale/scaling.png" ] && [ -s "$work/scale/scaling.json" ] || fail "scaling files missing"
 
 # Bad input: exit 1 with the file named.

@@ -215,7 +215,8 @@ AccuracyResult run_accuracy(const AccuracyOptions& o, gl::TimingMethod timing) {
 
     const std::vector<SweepConfig> configs = accuracy_configs();
     std::vector<std::unique_ptr<render::Renderer>> renderers;
-    for (const SweepConfig& c : configs) {
+    for (SweepConfig c : configs) {
+        c.settings.auto_compute_from_triangles = o.auto_compute_from_triangles;
         result.rows.push_back({c, {}, 0.0, 1.0, 0.0, 0.0, 0.0, {}});
         renderers.push_back(
             std::make_unique<render::Renderer>(c.settings, o.width, o.height, timing));

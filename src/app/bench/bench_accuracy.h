@@ -6,6 +6,7 @@
 // of low-poly primitives; this suite is where touching members, thin walls, dense organic
 // meshes and CAD parts show what the spine test gets wrong.
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -46,6 +47,8 @@ struct AccuracyOptions {
     int warmup = 1;
     std::filesystem::path out;  // masks/, diffs/ and the reference cache go here
     bool progress = true;
+    // The machine's measured LineMethod::automatic crossing (app/line_method_profile.h).
+    std::optional<std::size_t> auto_compute_from_triangles;
 };
 
 struct AccuracyViewScore {

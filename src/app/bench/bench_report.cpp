@@ -122,6 +122,7 @@ Json meta_json(const BenchMeta& m) {
     j["timing_note"] = timing_note(m.timing);
     j["load_average_before"] = m.load_before;
     j["load_average_after"] = m.load_after;
+    j["auto_line_method"] = m.auto_line_method;
     return j;
 }
 
@@ -193,6 +194,16 @@ void print_summary_table(std::FILE* out, const BenchMeta& m, const std::vector<R
                  m.width, m.height, m.frames, m.warmup, m.camera.c_str());
     std::fprintf(out, "%s on %s; load average %.2f -> %.2f\n", timing_name(m.timing),
                  m.gl_renderer.c_str(), m.load_before, m.load_after);
+    const Json& auto_method = m.auto_line_method;
+    if (auto_method.is_object() && auto_method.contains("source")) {
+        std::string from = "the built-in rule";
+        if (auto_method.contains("measurement") && auto_method.at("measurement").is_object()) {
+            const Json& f = auto_method.at("measurement").at("compute_from_triangles");
+            from = f.is_null() ? "never" : f.dump() + " triangles";
+        }
+        std::fprintf(out, "auto line method: compute from %s (%s)\n", from.c_str(),
+                     auto_method.at("source").get<std::string>().c_str());
+    }
     std::fprintf(out, "%-24s %8s %8s %8s %8s %8s %9s %9s\n", "config", "mean ms", "p50", "p95",
                  "p99", "max", "1%low fps", "tris/frm");
     for (const RunResult& r : runs) {

@@ -127,4 +127,19 @@ void ProgressBar::operator()() {
     std::fflush(stderr);
 }
 
+double mean_pass_ms(const RunResult& run, const std::string& pass) {
+    std::size_t index = run.pass_names.size();
+    for (std::size_t i = 0; i < run.pass_names.size(); ++i)
+        if (run.pass_names[i] == pass) index = i;
+    double sum = 0.0;
+    int n = 0;
+    for (const FrameRecord& f : run.frames) {
+        if (index < f.pass_ms.size() && f.pass_ms[index] >= 0.0) {
+            sum += f.pass_ms[index];
+            ++n;
+        }
+    }
+    return n > 0 ? sum / n : 0.0;
+}
+
 }  // namespace bz::app

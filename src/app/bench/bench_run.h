@@ -38,6 +38,9 @@ struct RunResult {
     FrameTimeStats stats;  // over ms_between
 };
 
+// The mean of one pass's time over a run's timed frames (0 when it never ran).
+double mean_pass_ms(const RunResult& run, const std::string& pass);
+
 // Called after every timed frame.
 using Progress = std::function<void()>;
 

@@ -28,6 +28,12 @@ scene::MeshLibrary subdivided(const scene::MeshLibrary& src, int levels) {
 
 }  // namespace
 
+double mean_feature_edges(const RunResult& run) {
+    double sum = 0.0;
+    for (const FrameRecord& f : run.frames) sum += static_cast<double>(f.stats.feature_edges);
+    return run.frames.empty() ? 0.0 : sum / static_cast<double>(run.frames.size());
+}
+
 ScalingResult run_scaling(const BenchFrames& bf, const scene::MeshLibrary& meshes,
                           const render::RenderSettings& settings, int width, int height,
                           gl::TimingMethod timing, std::size_t max_tris, bool show_progress) {
@@ -73,6 +79,8 @@ std::string scaling_json(const BenchMeta& meta, const ScalingResult& r) {
         Json p = Json::object();
         p["factor"] = r.points[i].label;
         p["triangles_submitted_mean"] = r.points[i].triangles;
+        p["edges_pass_ms_mean"] = mean_pass_ms(r.runs[i], "edges");
+        p["feature_edges_mean"] = mean_feature_edges(r.runs[i]);
         p.update(run_json(r.runs[i]));
         points.push_back(std::move(p));
     }
@@ -81,6 +89,7 @@ std::string scaling_json(const BenchMeta& meta, const ScalingResult& r) {
                     {"intercept_ms", r.fit.intercept},
                     {"r2", r.fit.r2}};
     j["skipped"] = r.skipped;
+    if (!r.series.points.empty()) j["model_series"] = model_series_json(r.series);
     return json_text(j);
 }
 

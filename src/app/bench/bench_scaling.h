@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "app/bench/bench_model_series.h"
 #include "app/bench/bench_plots.h"
 #include "app/bench/bench_report.h"
 #include "app/bench/bench_run.h"
@@ -15,6 +16,7 @@ struct ScalingResult {
     std::vector<RunResult> runs;
     LineFit fit;                       // p50 ms over triangles submitted per frame
     std::vector<std::string> skipped;  // factors left out, and why
+    ModelSeries series;                // the model series (run_model_series), when run
 };
 
 // `max_library_triangles` caps the subdivided library's size (memory): larger factors are
@@ -23,6 +25,9 @@ ScalingResult run_scaling(const BenchFrames& frames, const scene::MeshLibrary& m
                           const render::RenderSettings& settings, int width, int height,
                           gl::TimingMethod timing, std::size_t max_library_triangles,
                           bool show_progress);
+
+// Feature edges per frame, mean over the run's timed frames.
+double mean_feature_edges(const RunResult& run);
 
 std::string scaling_json(const BenchMeta& meta, const ScalingResult& result);
 

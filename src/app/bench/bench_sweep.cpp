@@ -157,7 +157,8 @@ SweepResult run_sweep(const BenchFrames& bf, const scene::MeshLibrary& meshes, i
     const std::vector<SweepConfig> configs = sweep_configs();
     std::vector<std::unique_ptr<render::Renderer>> renderers;
     std::vector<RunResult> runs;
-    for (const SweepConfig& c : configs) {
+    for (SweepConfig c : configs) {
+        c.settings.auto_compute_from_triangles = o.auto_compute_from_triangles;
         renderers.push_back(std::make_unique<render::Renderer>(c.settings, width, height, timing));
         runs.push_back(start_run(bf, c.label, c.settings));
     }

@@ -3,6 +3,7 @@
 // modelling switches (frustum culling, distance LOD, instancing) on the same frames, each
 // timed and, at sampled frames, scored against the exact CPU reference.
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -54,6 +55,8 @@ struct SweepOptions {
     int warm_per_stretch = 5;         // untimed frames leading into each later stretch
     std::filesystem::path masks_dir;  // where sampled masks are written; empty = nowhere
     bool progress = true;
+    // The machine's measured LineMethod::automatic crossing (app/line_method_profile.h).
+    std::optional<std::size_t> auto_compute_from_triangles;
 };
 
 struct SweepResult {

@@ -16,6 +16,7 @@
 #include "app/commands/commands.h"
 #include "app/commands/parse_command.h"
 #include "app/headless_gl.h"
+#include "app/line_method_profile.h"
 #include "core/error.h"
 #include "core/io/file_io.h"
 #include "core/io/output_path.h"
@@ -36,7 +37,7 @@ constexpr const char* kUsage =
     "                      [--line-method compute|geometry_shader|auto|image_outline]\n"
     "                      [--out DIR] [--replay FILE] [--samples N] [--rounds N]\n"
     "                      [--timing auto|cpu|gpu] [--beam classic|mame] [--no-phosphor]\n"
-    "                      [--overwrite]\n"
+    "                      [--series-max TRIANGLES] [--overwrite]\n"
     "       beamzone bench --accuracy [--models-dir DIR] [--model FILE]... [--size WxH]\n"
     "                      [--frames N] [--out DIR] [--timing auto|cpu|gpu]\n"
     "Renders the level offscreen along its benchmark camera path ([[camera_key]]; without one\n"
@@ -58,7 +59,9 @@ constexpr const char* kUsage =
     "Its timed frames run in --rounds stretches (default 4), round-robin over the\n"
     "configurations, so a machine whose load drifts treats them alike.\n"
     "--scaling draws the frames from meshes subdivided to 1x, 4x, 16x and 64x the triangles\n"
-    "and writes scaling.json and scaling.png (default 40 frames).\n"
+    "and writes scaling.json and scaling.png (default 40 frames), then draws one model (a\n"
+    "sphere) at about 20k, 80k, 320k and 1.3M triangles and prints the edges pass against the\n"
+    "silhouette it finds (--series-max leaves out the larger sizes; 0 none).\n"
     "--beam picks the vector beam's look (default: the level's, else mame, as play and render);\n"
     "the sweep's rows keep each preset's classic beam and add balanced with the mame beam,\n"
     "which times its passes (phosphor, mip-chain bloom).\n"
@@ -91,6 +94,7 @@ struct Options {
     std::string replay;
     int samples = 6;
     int rounds = 4;
+    int series_max = 1'400'000;  // --scaling's model series: sizes up to this many triangles
     std::string timing = "auto";
     std::string beam;
     bool no_phosphor = false;
@@ -153,6 +157,8 @@ Options parse(Args args) {
             o.replay = cur.value(a);
         } else if (a == "--samples") {
             o.samples = parse_int(a, cur.value(a), 1, 1000);
+        } else if (a == "--series-max") {
+            o.series_max = parse_int(a, cur.value(a), 0, 100'000'000);
         } else if (a == "--rounds") {
             o.rounds = parse_int(a, cur.value(a), 1, 1000);
         } else if (a == "--timing") {
@@ -249,6 +255,7 @@ int run_accuracy_mode(const Options& o) {
     auto context = make_headless_context();
     check_image_size(*context, "--size", o.size.x, o.size.y);
     const gl::TimingMethod timing = pick_timing(o.timing, *context);
+    const LineMethodProfile profile = user_line_method_profile(Calibration::measure_if_missing);
     std::unique_ptr<scene::VectorFont> font;
     try {
         font = std::make_unique<scene::VectorFont>(scene::VectorFont::load_default());
@@ -263,6 +270,7 @@ int run_accuracy_mode(const Options& o) {
     ao.frames = o.frames;
     ao.warmup = std::min(o.warmup, 1);
     ao.out = o.out;
+    ao.auto_compute_from_triangles = profile.threshold();
     BenchMeta meta;
     meta.level = "real models (" + o.models_dir + ")";
     meta.camera = "framed, behind, close, above per model";
@@ -273,6 +281,7 @@ int run_accuracy_mode(const Options& o) {
     meta.gl_renderer = context->renderer_name();
     meta.software = context->is_software();
     meta.timing = timing;
+    meta.auto_line_method = line_method_profile_json(profile);
     meta.load_before = load_average();
     const AccuracyResult result = run_accuracy(ao, timing);
     meta.load_after = load_average();
@@ -352,6 +361,8 @@ int run(const Options& o) {
     auto context = make_headless_context();
     check_image_size(*context, "--size", o.size.x, o.size.y);
     const gl::TimingMethod timing = pick_timing(o.timing, *context);
+    const LineMethodProfile profile = user_line_method_profile(Calibration::measure_if_missing);
+    settings.auto_compute_from_triangles = profile.threshold();
     const scene::VectorFont* font = nullptr;
     std::unique_ptr<scene::VectorFont> font_storage;
     try {
@@ -371,6 +382,7 @@ int run(const Options& o) {
     meta.gl_renderer = context->renderer_name();
     meta.software = context->is_software();
     meta.timing = timing;
+    meta.auto_line_method = line_method_profile_json(profile);
     meta.load_before = load_average();
     const fs::path out(o.out);
 
@@ -382,6 +394,7 @@ int run(const Options& o) {
         fs::create_directory(so.masks_dir, ec);
         if (ec) throw UserError(so.masks_dir.string() + ": cannot create: " + ec.message());
         so.rounds = o.rounds;
+        so.auto_compute_from_triangles = profile.threshold();
         const SweepResult result =
             run_sweep(frames, scene.meshes(), o.size.x, o.size.y, timing, so);
         meta.load_after = load_average();
@@ -404,8 +417,10 @@ int run(const Options& o) {
         print_summary_table(stdout, meta, runs);
         print_sweep_table(stdout, result, goals);
     } else if (o.mode == Mode::scaling) {
-        const ScalingResult result = run_scaling(frames, scene.meshes(), settings, o.size.x,
-                                                 o.size.y, timing, 60'000'000, true);
+        ScalingResult result = run_scaling(frames, scene.meshes(), settings, o.size.x, o.size.y,
+                                           timing, 60'000'000, true);
+        result.series = run_model_series(settings, o.size.x, o.size.y, timing,
+                                         std::min(o.frames, 10), o.series_max, true);
         meta.load_after = load_average();
         runs = result.runs;
         write_text(out / "scaling.json", scaling_json(meta, result));
@@ -419,6 +434,12 @@ int run(const Options& o) {
             "growth: %.2f ms per 100k triangles submitted (fit intercept %.2f ms, r2 %.3f)\n",
             result.fit.slope * 1e5, result.fit.intercept, result.fit.r2);
         for (const std::string& s : result.skipped) std::printf("skipped %s\n", s.c_str());
+        std::printf("%-8s %12s %14s\n", "factor", "edges pass ms", "feature edges");
+        for (std::size_t i = 0; i < result.points.size(); ++i) {
+            std::printf("%-8s %12.2f %14.0f\n", result.points[i].label.c_str(),
+                        mean_pass_ms(result.runs[i], "edges"), mean_feature_edges(result.runs[i]));
+        }
+        print_model_series(stdout, result.series);
     } else {
         render::Renderer renderer(settings, o.size.x, o.size.y, timing);
         ProgressBar bar(settings.preset, meta.frames);

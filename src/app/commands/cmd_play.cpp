@@ -10,6 +10,7 @@
 
 #include "app/commands/cli_args.h"
 #include "app/commands/commands.h"
+#include "app/line_method_profile.h"
 #include "app/play/menu/level_list.h"
 #include "app/play/play_look.h"
 #include "app/play/play_loop.h"
@@ -145,8 +146,15 @@ struct Play {
         }
 
         auto choose = [&look](const level::Level* current) { return choose_look(look, current); };
-        auto make_renderer = [](const render::RenderSettings& r, int w, int h) {
-            return std::make_unique<render::Renderer>(r, w, h, gl::TimingMethod::off);
+        // LineMethod::automatic's crossing, measured once per machine and kept.
+        const LineMethodProfile line_methods =
+            line_method_profile(paths.dir / "line-methods.json", Calibration::measure_if_missing);
+        log.info(line_methods.describe());
+        auto make_renderer = [threshold = line_methods.threshold()](const render::RenderSettings& r,
+                                                                    int w, int h) {
+            render::RenderSettings with_threshold = r;
+            with_threshold.auto_compute_from_triangles = threshold;
+            return std::make_unique<render::Renderer>(with_threshold, w, h, gl::TimingMethod::off);
         };
 
         platform::Audio audio(log, settings.volume, settings.mute);

@@ -8,6 +8,7 @@
 #include "app/commands/commands.h"
 #include "app/commands/parse_command.h"
 #include "app/headless_gl.h"
+#include "app/line_method_profile.h"
 #include "app/model_source.h"
 #include "core/budgets.h"
 #include "core/error.h"
@@ -37,7 +38,7 @@ const std::string& usage() {
             "                       [--color r,g,b] [--out frame.png]\n"
             "                       [--mask mask.png] [--repeat N] [--copies N] [--beam "
             "classic|mame]\n"
-            "                       [--lit-share] [--overwrite]\n"
+            "                       [--lit-share] [--no-cluster-culling] [--overwrite]\n"
             "Renders a model file (or builtin:cube, builtin:sphere, builtin:grid) headless to PNG. "
             "Without "
             "--eye the camera frames the model's bounding\n"
@@ -53,6 +54,8 @@ const std::string& usage() {
             "of a\n"
             "chosen size for timing; the camera frames them all).\n"
             "--beam picks the vector beam's look (default mame, as `play` and `bench`).\n"
+            "--no-cluster-culling draws whole meshes in the depth prepass and the fills (the same\n"
+            "picture; for timing what culling triangle clusters saves).\n"
             "--lit-share prints the share of the picture's pixels whose brightest channel is "
             "above\n"
             "1/255 (the haze figure; tools/haze measures Bernardoni 2018's hallway with it).\n"
@@ -78,6 +81,7 @@ struct RenderOptions {
     int copies = 1;
     std::string beam{render::kDefaultBeamLook};
     bool lit_share = false;
+    bool cluster_culling = true;
     bool overwrite = false;  // may replace an existing file that is not a PNG
 };
 
@@ -105,6 +109,8 @@ RenderOptions parse(Args args) {
             o.beam = cur.value(a);
         else if (a == "--lit-share")
             o.lit_share = true;
+        else if (a == "--no-cluster-culling")
+            o.cluster_culling = false;
         else if (a == "--overwrite")
             o.overwrite = true;
         else if (a == "--style") {
@@ -156,6 +162,13 @@ void print_timings(const render::Renderer& r,
                      "edges tested %zu of %zu\n",
                      c.clusters, c.outside_frustum, c.facing_away, c.one_way, c.edges_dispatched,
                      c.edges);
+    }
+    const render::TriangleCullStats& t = s.triangle_culling;
+    if (t.clusters > 0) {
+        std::fprintf(stdout,
+                     "triangle clusters %zu: %zu outside the view, %zu facing away; "
+                     "prepass triangles %zu of %zu\n",
+                     t.clusters, t.outside_frustum, t.facing_away, t.triangles_drawn, t.triangles);
     }
 }
 
@@ -223,6 +236,11 @@ int cmd_render(Args args) {
     settings.count_edges = o.repeat > 0;
     settings.cubic_smoothing = o.smoothing;
     settings.one_sided_outlines = o.one_sided;
+    settings.cluster_culling = o.cluster_culling;
+    // A one-off frame measures nothing: it uses the machine's kept crossing, if any.
+    const LineMethodProfile line_methods = user_line_method_profile(Calibration::kept_only);
+    settings.auto_compute_from_triangles = line_methods.threshold();
+    if (o.repeat > 0) std::fprintf(stdout, "%s\n", line_methods.describe().c_str());
     render::Renderer renderer(settings, o.camera.size.x, o.camera.size.y,
                               o.repeat > 0 ? gl::TimingMethod::cpu_finish : gl::TimingMethod::off);
     std::vector<std::vector<gl::PassTime>> timings;

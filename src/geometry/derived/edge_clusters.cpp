@@ -17,9 +17,6 @@ constexpr std::size_t kMeshletTriangles = 40;
 constexpr std::size_t kMeshletVertices = 64;
 // Weight meshoptimizer gives to tight normal cones against compact clusters.
 constexpr float kConeWeight = 0.5f;
-// The cone's half-angle is widened by this much of its cosine, for the rounding of the float
-// normals the shader compares (the test also keeps a margin: render/lines/edge_culling.cpp).
-constexpr double kConeSlack = 1e-5;
 
 // A triangle by its vertices, rotated so the smallest comes first (winding kept): the same key
 // for a triangle and its copy in a meshlet.
@@ -78,53 +75,24 @@ float crease_key(const MeshEdge& e) {
 }
 
 // A cluster of edges [first, first + count) of `c.edges`, its bounds around the candidates
-// (the edges before the first flat one).
-EdgeCluster bound_cluster(const AdjacencyMesh& mesh, const std::vector<glm::dvec3>& unit_normals,
-                          const std::vector<bool>& degenerate, const ClusteredEdges& c,
-                          std::uint32_t first, std::uint32_t all) {
-    EdgeCluster out;
-    out.first = first;
-    out.count = all;
+// (the edges before the first flat one) and the faces on both sides of each.
+EdgeCluster bound_cluster(const AdjacencyMesh& mesh,
+                          const std::vector<std::optional<glm::dvec3>>& face_normals,
+                          const ClusteredEdges& c, std::uint32_t first, std::uint32_t all) {
     std::uint32_t count = 0;
     while (count < all && c.crease_keys[first + count] < kFlatKey) ++count;
-    out.candidates = count;
-    if (count == 0) return out;
-    glm::dvec3 lo(INFINITY), hi(-INFINITY), sum(0.0);
-    bool cone = true;
+    std::vector<std::uint32_t> vertices;
+    std::vector<std::optional<glm::dvec3>> normals;
     for (std::uint32_t i = first; i < first + count; ++i) {
         const MeshEdge& e = c.edges[i];
-        for (const std::uint32_t v : {e.a, e.b}) {
-            lo = glm::min(lo, glm::dvec3(mesh.positions[v]));
-            hi = glm::max(hi, glm::dvec3(mesh.positions[v]));
-        }
-        for (const std::uint32_t f : {e.face_a, e.face_b}) {
-            if (f == kNoVertex) continue;
-            if (degenerate[f]) cone = false;
-            sum += unit_normals[f];
-        }
+        vertices.insert(vertices.end(), {e.a, e.b});
+        for (const std::uint32_t f : {e.face_a, e.face_b})
+            if (f != kNoVertex) normals.push_back(face_normals[f]);
     }
-    const glm::dvec3 centre = (lo + hi) * 0.5;
-    double radius = 0.0;
-    for (std::uint32_t i = first; i < first + count; ++i) {
-        for (const std::uint32_t v : {c.edges[i].a, c.edges[i].b})
-            radius = std::max(radius, glm::length(glm::dvec3(mesh.positions[v]) - centre));
-    }
-    out.center = glm::vec3(centre);
-    // Widened for the centre's rounding to float.
-    out.radius = static_cast<float>(radius * (1.0 + 1e-6) +
-                                    glm::length(glm::dvec3(out.center) - centre) + 1e-30);
-    const double length = glm::length(sum);
-    if (!cone || !(length > 1e-9)) return out;
-    const glm::dvec3 axis = sum / length;
-    double spread = 1.0;
-    for (std::uint32_t i = first; i < first + count; ++i) {
-        for (const std::uint32_t f : {c.edges[i].face_a, c.edges[i].face_b})
-            if (f != kNoVertex) spread = std::min(spread, glm::dot(axis, unit_normals[f]));
-    }
-    spread -= kConeSlack;
-    if (spread <= 0.0) return out;  // over a half-space: no view sees all of it one way
-    out.axis = glm::vec3(axis);
-    out.cos_spread = static_cast<float>(spread);
+    EdgeCluster out{bound_faces(mesh, vertices, normals)};
+    out.first = first;
+    out.count = all;
+    out.candidates = count;
     return out;
 }
 
@@ -156,21 +124,7 @@ ClusteredEdges cluster_edges(const AdjacencyMesh& mesh, std::span<const MeshEdge
     out.edges.reserve(edges.size());
     out.crease_keys.reserve(edges.size());
 
-    const std::size_t tris = mesh.triangle_count();
-    std::vector<glm::dvec3> unit_normals(tris, glm::dvec3(0.0));
-    std::vector<bool> degenerate(tris, true);
-    for (std::size_t t = 0; t < tris; ++t) {
-        const std::uint32_t* v = &mesh.triangles[3 * t];
-        const glm::dvec3 p0(mesh.positions[v[0]]);
-        const glm::dvec3 n = glm::cross(glm::dvec3(mesh.positions[v[1]]) - p0,
-                                        glm::dvec3(mesh.positions[v[2]]) - p0);
-        const double l = glm::length(n);
-        // The shader's float normal of such a face may round to zero, or differ in direction.
-        if (l > 1e-30 && std::isfinite(l)) {
-            unit_normals[t] = n / l;
-            degenerate[t] = false;
-        }
-    }
+    const std::vector<std::optional<glm::dvec3>> normals = unit_face_normals(mesh);
 
     for (std::uint32_t g = 0; g + 1 < start.size(); ++g) {
         const std::uint32_t begin = start[g], end = start[g + 1];
@@ -190,8 +144,7 @@ ClusteredEdges cluster_edges(const AdjacencyMesh& mesh, std::span<const MeshEdge
                 out.edges.push_back(edges[group[i]]);
                 out.crease_keys.push_back(crease_key(edges[group[i]]));
             }
-            out.clusters.push_back(
-                bound_cluster(mesh, unit_normals, degenerate, out, first, to - from));
+            out.clusters.push_back(bound_cluster(mesh, normals, out, first, to - from));
         }
     }
     return out;

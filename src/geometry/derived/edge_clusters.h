@@ -14,6 +14,7 @@
 #include <span>
 #include <vector>
 
+#include "geometry/derived/cluster_bounds.h"
 #include "geometry/derived/edge_list.h"
 #include "geometry/mesh.h"
 
@@ -32,18 +33,11 @@ inline constexpr float kAlwaysFeatureKey = -3.0f;
 // and is never tested: flat subdivision and flat quads split into triangles cost nothing.
 inline constexpr float kFlatKey = 3.0f;
 
-struct EdgeCluster {
-    glm::vec3 center{0.0f};  // a sphere around every end point of the cluster's edges
-    float radius = 0.0f;
-    glm::vec3 axis{0.0f};  // unit axis of the cone around its faces' unit normals
-    // Cosine of the cone's half-angle, already widened for rounding; -1 when the faces have no
-    // usable cone (a degenerate face, or normals spread over a half-space): never culled by
-    // facing.
-    float cos_spread = -1.0f;
+// The sphere and the cone (ClusterBounds) bound the candidates only.
+struct EdgeCluster : ClusterBounds {
     std::uint32_t first = 0;  // its edges: [first, first + count) of ClusteredEdges::edges
     std::uint32_t count = 0;
-    // The first `candidates` edges may be feature edges; the rest are flat (kFlatKey). The
-    // sphere and the cone bound the candidates only.
+    // The first `candidates` edges may be feature edges; the rest are flat (kFlatKey).
     std::uint32_t candidates = 0;
 };
 

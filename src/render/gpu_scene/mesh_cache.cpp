@@ -75,7 +75,9 @@ void MeshCache::upload(GpuMesh& gpu, const geo::AdjacencyMesh& mesh) {
     const std::vector<glm::vec3> normals = geo::vertex_normals(mesh);
     gpu.vertex_normals.set(std::span<const glm::vec3>(normals), GL_STATIC_DRAW);
     gpu.adjacency.set(std::span<const std::uint32_t>(mesh.adjacency), GL_STATIC_DRAW);
-    gpu.triangles.set(std::span<const std::uint32_t>(mesh.triangles), GL_STATIC_DRAW);
+    geo::ClusteredTriangles clustered = geo::cluster_triangles(mesh);
+    gpu.triangles.set(std::span<const std::uint32_t>(clustered.indices), GL_STATIC_DRAW);
+    gpu.triangle_clusters = std::move(clustered.clusters);
     gpu.outward_closed = geo::is_outward_closed(mesh);
     const std::vector<float> cosines = geo::edge_dihedral_cosines(mesh);
     gpu.edge_cosines.set(std::span<const float>(cosines), GL_STATIC_DRAW);

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "geometry/derived/edge_clusters.h"
+#include "geometry/derived/triangle_clusters.h"
 #include "gl/buffer.h"
 #include "gl/vertex_array.h"
 #include "scene/mesh_library.h"
@@ -39,7 +40,10 @@ struct GpuMesh {
     // (render/lines/edge_culling.h); `edges` is emptied once uploaded.
     geo::ClusteredEdges edge_clusters;
     gl::Buffer adjacency;
+    // The triangle list cluster by cluster (geo::cluster_triangles), for the prepass and the
+    // fills, and the clusters' bounds, for culling them on the CPU each frame.
     gl::Buffer triangles;
+    std::vector<geo::TriangleCluster> triangle_clusters;
     gl::Buffer edge_cosines;     // 3 per triangle, read by the geometry shader (binding 0)
     bool has_edge_list = false;  // edge_list is filled (uploaded on first use with edge lists on)
     gl::VertexArray lines_vao;

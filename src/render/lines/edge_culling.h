@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "geometry/derived/edge_clusters.h"
+#include "render/gpu_scene/cluster_culling.h"
 
 namespace bz::render {
 
@@ -37,12 +38,6 @@ struct CullView {
     float near = 0.1f;
     float far = 1000.0f;
 };
-
-// The eye in the instance's object space (xyz) and the sign of det(model_view) (w): a face
-// with object-space normal n and vertex p faces the eye when w * dot(n, xyz - p) > 0, exactly
-// when its view-space normal faces the view-space origin. w is 0 for a singular model-view
-// (no face then faces the eye, as in view space, where every normal is zero).
-glm::vec4 object_space_eye(const glm::mat4& model_view);
 
 // Appends the work items of one instance's clusters to `work`.
 void append_edge_work(const geo::ClusteredEdges& clusters, const glm::mat4& model_view,

@@ -60,7 +60,8 @@ void pass_shrunk_depth(const PassContext& ctx) {
     // Pixels to view-space distance per unit of depth: 2 / (height * P[1][1]).
     p.set("u_shrink", ctx.style.halo.shrink_px * 2.0f /
                           (static_cast<float>(ctx.targets.height) * ctx.cam.proj[1][1]));
-    draw_batch_triangles(ctx, state, true, &GpuMesh::fill_vao);
+    // Shrunk vertices leave the clusters' bounds, and a shrunk face may turn: no cluster culling.
+    draw_batch_triangles(ctx, state, true, &GpuMesh::fill_vao, true);
 }
 
 }  // namespace bz::render

@@ -1,0 +1,72 @@
+#include "geometry/derived/triangle_clusters.h"
+
+#include <meshoptimizer.h>
+
+namespace bz::geo {
+
+namespace {
+
+// Meshlets of at most this many vertices and triangles: large enough that a frame's draws stay
+// few (one command per run of kept clusters), small enough that a silhouette's neighbourhood
+// is a small share of them. meshoptimizer wants the triangle count a multiple of 4.
+constexpr std::size_t kClusterVertices = 64;
+constexpr std::size_t kClusterTriangles = 124;
+// Weight meshoptimizer gives to tight normal cones against compact clusters: back-facing
+// clusters are what a closed mesh skips.
+constexpr float kConeWeight = 0.5f;
+
+ClusteredTriangles one_cluster(const AdjacencyMesh& mesh) {
+    ClusteredTriangles out;
+    out.indices = mesh.triangles;
+    const std::optional<glm::dvec3> no_cone[] = {std::nullopt};
+    TriangleCluster all{bound_faces(mesh, mesh.triangles, no_cone)};
+    all.index_count = static_cast<std::uint32_t>(mesh.triangles.size());
+    if (all.index_count > 0) out.clusters.push_back(all);
+    return out;
+}
+
+}  // namespace
+
+ClusteredTriangles cluster_triangles(const AdjacencyMesh& mesh) {
+    const std::size_t tris = mesh.triangle_count();
+    if (tris == 0 || mesh.positions.empty()) return one_cluster(mesh);
+    const std::size_t bound =
+        meshopt_buildMeshletsBound(mesh.triangles.size(), kClusterVertices, kClusterTriangles);
+    std::vector<meshopt_Meshlet> meshlets(bound);
+    std::vector<unsigned int> vertices(bound * kClusterVertices);
+    std::vector<unsigned char> local(bound * kClusterTriangles * 3);
+    meshlets.resize(
+        meshopt_buildMeshlets(meshlets.data(), vertices.data(), local.data(), mesh.triangles.data(),
+                              mesh.triangles.size(), &mesh.positions[0].x, mesh.positions.size(),
+                              sizeof(glm::vec3), kClusterVertices, kClusterTriangles, kConeWeight));
+    std::size_t placed = 0;
+    for (const meshopt_Meshlet& ml : meshlets) placed += ml.triangle_count;
+    if (placed != tris) return one_cluster(mesh);
+
+    // A meshlet keeps each triangle's vertices and winding, so its normal is the original's.
+    ClusteredTriangles out;
+    out.indices.reserve(mesh.triangles.size());
+    out.clusters.reserve(meshlets.size());
+    std::vector<std::uint32_t> cluster_vertices;
+    std::vector<std::optional<glm::dvec3>> cluster_normals;
+    for (const meshopt_Meshlet& ml : meshlets) {
+        const auto first = static_cast<std::uint32_t>(out.indices.size());
+        cluster_vertices.assign(vertices.begin() + ml.vertex_offset,
+                                vertices.begin() + ml.vertex_offset + ml.vertex_count);
+        cluster_normals.clear();
+        for (std::size_t t = 0; t < ml.triangle_count; ++t) {
+            const unsigned char* l = &local[ml.triangle_offset + 3 * t];
+            const std::uint32_t* mv = &vertices[ml.vertex_offset];
+            const std::uint32_t a = mv[l[0]], b = mv[l[1]], c = mv[l[2]];
+            out.indices.insert(out.indices.end(), {a, b, c});
+            cluster_normals.push_back(unit_normal(mesh, a, b, c));
+        }
+        TriangleCluster k{bound_faces(mesh, cluster_vertices, cluster_normals)};
+        k.first_index = first;
+        k.index_count = static_cast<std::uint32_t>(out.indices.size()) - first;
+        out.clusters.push_back(k);
+    }
+    return out;
+}
+
+}  // namespace bz::geo

@@ -1,0 +1,29 @@
+#pragma once
+// Triangle clusters: a mesh's triangle list reordered cluster by cluster (meshoptimizer's
+// meshlets), each cluster with a sphere and a normal cone (cluster_bounds.h), so a depth or
+// fill pass can skip a cluster outside the view, or, for a closed mesh seen from outside, one
+// whose faces all face away, before any of its vertices is shaded.
+#include <cstdint>
+#include <vector>
+
+#include "geometry/derived/cluster_bounds.h"
+#include "geometry/mesh.h"
+
+namespace bz::geo {
+
+struct TriangleCluster : ClusterBounds {
+    std::uint32_t first_index = 0;  // its triangles: [first_index, first_index + index_count)
+    std::uint32_t index_count = 0;  // of ClusteredTriangles::indices, 3 per triangle
+};
+
+struct ClusteredTriangles {
+    // Every triangle of the mesh exactly once, with its winding, cluster by cluster.
+    std::vector<std::uint32_t> indices;
+    std::vector<TriangleCluster> clusters;
+};
+
+// Deterministic. A mesh meshoptimizer cannot split whole comes back as one cluster in the
+// original order, with no cone and a sphere around all of it (never culled by facing).
+ClusteredTriangles cluster_triangles(const AdjacencyMesh& mesh);
+
+}  // namespace bz::geo

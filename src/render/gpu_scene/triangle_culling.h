@@ -1,0 +1,40 @@
+#pragma once
+// Culling before vertex work in the passes that draw triangles (the depth prepass, the fills):
+// each instance's triangle clusters (geometry/derived/triangle_clusters.h) are tested against
+// the view on the CPU, and the runs of kept clusters become indirect draws. Dropped:
+//  - a cluster outside the view frustum (it would be clipped whole);
+//  - a cluster whose faces all face away, where the pass culls back faces anyway (an
+//    outward-closed mesh seen from outside): the picture is the same, minus the vertex work.
+#include <cstdint>
+#include <vector>
+
+#include "geometry/derived/triangle_clusters.h"
+#include "render/gpu_scene/cluster_culling.h"
+
+namespace bz::render {
+
+// glMultiDrawElementsIndirect's command (DrawElementsIndirectCommand).
+struct TriangleDraw {
+    std::uint32_t count = 0;
+    std::uint32_t instance_count = 1;
+    std::uint32_t first_index = 0;
+    std::int32_t base_vertex = 0;
+    std::uint32_t base_instance = 0;
+};
+static_assert(sizeof(TriangleDraw) == 20, "the GL command layout");
+
+struct TriangleCullStats {
+    std::size_t clusters = 0;         // (instance, cluster) pairs looked at
+    std::size_t outside_frustum = 0;  // dropped: outside the view
+    std::size_t facing_away = 0;      // dropped: every face away, back faces culled
+    std::size_t triangles = 0;        // triangles of the clusters looked at
+    std::size_t triangles_drawn = 0;  // triangles of the kept clusters
+};
+
+// Appends one draw per run of consecutive kept clusters of instance `instance`.
+void append_triangle_draws(const std::vector<geo::TriangleCluster>& clusters,
+                           const glm::mat4& model_view, bool skip_back_faces,
+                           const ViewVolume& view, std::uint32_t instance,
+                           std::vector<TriangleDraw>& draws, TriangleCullStats& stats);
+
+}  // namespace bz::render

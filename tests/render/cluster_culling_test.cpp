@@ -1,0 +1,64 @@
+// Culling triangle clusters in the prepass and the fills (render/gpu_scene/triangle_culling.h)
+// draws only what would be clipped or back-face culled anyway: the frame must be the one whole
+// meshes give, byte for byte, on real models, in every style, from outside and inside.
+#include <gtest/gtest.h>
+
+#include "render/render_fixture.h"
+
+namespace bz::test {
+namespace {
+
+class ClusterCullingTest : public RenderTest {
+  protected:
+    // The picture and the mask with cluster culling on and off.
+    void expect_same_frames(const std::string& what) {
+        std::vector<std::uint8_t> pictures[2], masks[2];
+        for (const bool cull : {false, true}) {  // culling last: its stats stay
+            settings.cluster_culling = cull;
+            renderer->set_settings(settings);
+            renderer->render(frame, meshes, render::Renderer::kOffscreen);
+            pictures[cull] = renderer->read_color();
+            masks[cull] = renderer->render_mask(frame, meshes);
+        }
+        EXPECT_EQ(pictures[0], pictures[1]) << what << ": the picture changed";
+        EXPECT_EQ(masks[0], masks[1]) << what << ": the mask changed";
+        std::size_t lines = 0;
+        for (const std::uint8_t m : masks[1]) lines += m > 0;
+        EXPECT_GT(lines, 100u) << what << ": nothing drawn, the comparison means nothing";
+    }
+};
+
+TEST_F(ClusterCullingTest, RealModelsDrawTheSameFrameInEveryStyle) {
+    settings.beam = render::beam_look("classic");  // no flicker: frames repeat exactly
+    for (const char* path : {"/usr/share/assimp/models/PLY/Wuson.ply",
+                             "/usr/share/assimp/models/BLEND/Suzanne_248.blend",
+                             "/usr/share/assimp/models/OBJ/spider.obj"}) {
+        show_model(path);
+        for (const scene::Style style :
+             {scene::Style::vector, scene::Style::toon, scene::Style::halo}) {
+            frame.style = style;
+            expect_same_frames(std::string(path) + " style " + std::to_string(int(style)));
+        }
+    }
+}
+
+TEST_F(ClusterCullingTest, AModelCutByTheFrustumAndSeenFromInside) {
+    settings.beam = render::beam_look("classic");
+    show_model("/usr/share/assimp/models/BLEND/Suzanne_248.blend");
+    frame.style = scene::Style::vector;
+    // Close up: the head overfills the view, clusters lie outside it and across its edges.
+    const scene::Camera framed = frame.camera;
+    frame.camera.eye = framed.target + (framed.eye - framed.target) * 0.3;
+    expect_same_frames("close up");
+    EXPECT_GT(renderer->stats().triangle_culling.outside_frustum, 0u);
+    // The eye inside the head: nothing may be skipped as facing away.
+    frame.camera.eye = framed.target;
+    frame.camera.target = framed.target + glm::dvec3(0.0, 0.0, -1.0);
+    settings.cluster_culling = true;
+    renderer->set_settings(settings);
+    renderer->render(frame, meshes, render::Renderer::kOffscreen);
+    EXPECT_EQ(renderer->stats().triangle_culling.facing_away, 0u);
+}
+
+}  // namespace
+}  // namespace bz::test
