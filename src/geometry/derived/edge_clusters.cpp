@@ -147,6 +147,12 @@ ClusteredEdges cluster_edges(const AdjacencyMesh& mesh, std::span<const MeshEdge
             out.clusters.push_back(bound_cluster(mesh, normals, out, first, to - from));
         }
     }
+    std::vector<std::uint32_t> candidates;
+    for (const EdgeCluster& k : out.clusters) {
+        for (std::uint32_t i = k.first; i < k.first + k.candidates; ++i)
+            candidates.insert(candidates.end(), {out.edges[i].a, out.edges[i].b});
+    }
+    out.all = bound_faces(mesh, candidates, {});
     return out;
 }
 

@@ -48,6 +48,7 @@ struct ClusteredEdges {
     // 2 where the cosine is not a number. Ascending inside each cluster.
     std::vector<float> crease_keys;
     std::vector<EdgeCluster> clusters;
+    ClusterBounds all;  // a sphere around every cluster's candidates (no cone)
 };
 
 // Groups `edges` (build_edge_list(mesh)) with meshoptimizer's meshlet builder: each edge goes

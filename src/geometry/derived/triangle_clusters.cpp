@@ -20,6 +20,7 @@ ClusteredTriangles one_cluster(const AdjacencyMesh& mesh) {
     out.indices = mesh.triangles;
     const std::optional<glm::dvec3> no_cone[] = {std::nullopt};
     TriangleCluster all{bound_faces(mesh, mesh.triangles, no_cone)};
+    out.all = all;
     all.index_count = static_cast<std::uint32_t>(mesh.triangles.size());
     if (all.index_count > 0) out.clusters.push_back(all);
     return out;
@@ -66,6 +67,7 @@ ClusteredTriangles cluster_triangles(const AdjacencyMesh& mesh) {
         k.index_count = static_cast<std::uint32_t>(out.indices.size()) - first;
         out.clusters.push_back(k);
     }
+    out.all = bound_faces(mesh, out.indices, {});
     return out;
 }
 

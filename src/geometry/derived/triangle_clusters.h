@@ -20,6 +20,7 @@ struct ClusteredTriangles {
     // Every triangle of the mesh exactly once, with its winding, cluster by cluster.
     std::vector<std::uint32_t> indices;
     std::vector<TriangleCluster> clusters;
+    ClusterBounds all;  // a sphere around every triangle (no cone)
 };
 
 // Deterministic. A mesh meshoptimizer cannot split whole comes back as one cluster in the

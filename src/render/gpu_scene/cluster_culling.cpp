@@ -49,6 +49,14 @@ bool ViewVolume::outside(const glm::dvec3& c, double r) const {
     return false;
 }
 
+bool ViewVolume::contains(const glm::dvec3& c, double r) const {
+    const double depth = -c.z;
+    if (depth - r < near_ || depth + r > far_) return false;
+    for (const glm::dvec4& p : planes_)
+        if (glm::dot(glm::dvec3(p), c) + p.w < r) return false;
+    return true;
+}
+
 InstanceClusters::InstanceClusters(const glm::mat4& model_view)
     : model_view_(model_view), scale_(max_axis_scale(glm::dmat3(model_view_))) {
     const glm::vec4 eye = object_space_eye(model_view);
@@ -59,6 +67,11 @@ InstanceClusters::InstanceClusters(const glm::mat4& model_view)
 bool InstanceClusters::outside(const geo::ClusterBounds& k, const ViewVolume& volume) const {
     const glm::dvec3 c(model_view_ * glm::dvec4(glm::dvec3(k.center), 1.0));
     return volume.outside(c, static_cast<double>(k.radius) * scale_ * (1.0 + 1e-6));
+}
+
+bool InstanceClusters::inside(const geo::ClusterBounds& k, const ViewVolume& volume) const {
+    const glm::dvec3 c(model_view_ * glm::dvec4(glm::dvec3(k.center), 1.0));
+    return volume.contains(c, static_cast<double>(k.radius) * scale_ * (1.0 + 1e-6));
 }
 
 // For a face with unit normal u through p: dot(u, e - p) = dot(u, e - c) + dot(u, c - p), the

@@ -19,8 +19,9 @@ glm::vec4 object_space_eye(const glm::mat4& model_view);
 class ViewVolume {
   public:
     ViewVolume(const glm::mat4& proj, float near, float far, double guard);
-    // Whether a view-space sphere lies wholly outside.
+    // Whether a view-space sphere lies wholly outside, or wholly inside.
     bool outside(const glm::dvec3& center, double radius) const;
+    bool contains(const glm::dvec3& center, double radius) const;
 
   private:
     glm::dvec4 planes_[4];  // unit normals: inside where dot(xyz, p) + w >= 0
@@ -34,6 +35,8 @@ class InstanceClusters {
   public:
     explicit InstanceClusters(const glm::mat4& model_view);
     bool outside(const geo::ClusterBounds& k, const ViewVolume& volume) const;
+    // Whether the sphere lies wholly inside: then none of the clusters it holds is outside.
+    bool inside(const geo::ClusterBounds& k, const ViewVolume& volume) const;
     // Whether every face of the cluster faces the eye, or every one faces away, with a margin
     // far above the float rounding of a shader's facing test; mixed when unsure.
     ClusterFacing facing(const geo::ClusterBounds& k) const;

@@ -78,6 +78,7 @@ void MeshCache::upload(GpuMesh& gpu, const geo::AdjacencyMesh& mesh) {
     geo::ClusteredTriangles clustered = geo::cluster_triangles(mesh);
     gpu.triangles.set(std::span<const std::uint32_t>(clustered.indices), GL_STATIC_DRAW);
     gpu.triangle_clusters = std::move(clustered.clusters);
+    gpu.triangle_bounds = clustered.all;
     gpu.outward_closed = geo::is_outward_closed(mesh);
     const std::vector<float> cosines = geo::edge_dihedral_cosines(mesh);
     gpu.edge_cosines.set(std::span<const float>(cosines), GL_STATIC_DRAW);

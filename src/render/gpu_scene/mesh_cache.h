@@ -44,7 +44,8 @@ struct GpuMesh {
     // fills, and the clusters' bounds, for culling them on the CPU each frame.
     gl::Buffer triangles;
     std::vector<geo::TriangleCluster> triangle_clusters;
-    gl::Buffer edge_cosines;     // 3 per triangle, read by the geometry shader (binding 0)
+    geo::ClusterBounds triangle_bounds;  // a sphere around them all
+    gl::Buffer edge_cosines;             // 3 per triangle, read by the geometry shader (binding 0)
     bool has_edge_list = false;  // edge_list is filled (uploaded on first use with edge lists on)
     gl::VertexArray lines_vao;
     gl::VertexArray prepass_vao;

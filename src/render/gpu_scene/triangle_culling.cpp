@@ -3,16 +3,18 @@
 namespace bz::render {
 
 void append_triangle_draws(const std::vector<geo::TriangleCluster>& clusters,
-                           const glm::mat4& model_view, bool skip_back_faces,
-                           const ViewVolume& view, std::uint32_t instance,
+                           const geo::ClusterBounds& all, const glm::mat4& model_view,
+                           bool skip_back_faces, const ViewVolume& view, std::uint32_t instance,
                            std::vector<TriangleDraw>& draws, TriangleCullStats& stats) {
     const InstanceClusters instance_view(model_view);
+    // An instance wholly inside the view needs no test per cluster.
+    const bool inside = instance_view.inside(all, view);
     bool extend = false;  // the last draw ends where this cluster begins
     for (const geo::TriangleCluster& k : clusters) {
         ++stats.clusters;
         stats.triangles += k.index_count / 3;
         bool keep = true;
-        if (instance_view.outside(k, view)) {
+        if (!inside && instance_view.outside(k, view)) {
             ++stats.outside_frustum;
             keep = false;
         } else if (skip_back_faces && instance_view.facing(k) == ClusterFacing::all_back) {

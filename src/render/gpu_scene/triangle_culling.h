@@ -32,9 +32,10 @@ struct TriangleCullStats {
 };
 
 // Appends one draw per run of consecutive kept clusters of instance `instance`.
+// `all`: a sphere around all the clusters (ClusteredTriangles::all).
 void append_triangle_draws(const std::vector<geo::TriangleCluster>& clusters,
-                           const glm::mat4& model_view, bool skip_back_faces,
-                           const ViewVolume& view, std::uint32_t instance,
+                           const geo::ClusterBounds& all, const glm::mat4& model_view,
+                           bool skip_back_faces, const ViewVolume& view, std::uint32_t instance,
                            std::vector<TriangleDraw>& draws, TriangleCullStats& stats);
 
 }  // namespace bz::render

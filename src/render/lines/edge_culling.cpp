@@ -15,11 +15,13 @@ void append_edge_work(const geo::ClusteredEdges& clusters, const glm::mat4& mode
                       EdgeCullStats& stats) {
     const ViewVolume guard(view.proj, view.near, view.far, kGuard);
     const InstanceClusters instance_view(model_view);
+    // An instance wholly inside the view needs no test per cluster.
+    const bool inside = instance_view.inside(clusters.all, guard);
     for (const geo::EdgeCluster& k : clusters.clusters) {
         ++stats.clusters;
         stats.edges += k.count;
         if (k.candidates == 0) continue;  // flat edges only: never a feature edge
-        if (instance_view.outside(k, guard)) {
+        if (!inside && instance_view.outside(k, guard)) {
             ++stats.outside_frustum;
             continue;
         }

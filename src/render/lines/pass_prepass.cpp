@@ -51,8 +51,9 @@ TriangleCullStats draw_batch_triangles(const PassContext& ctx, gl::PipelineState
         ranges[i].first = draws.size();
         for (GLsizei k = 0; k < b.instance_count; ++k) {
             const GLuint inst = b.first_instance + static_cast<GLuint>(k);
-            append_triangle_draws(mesh.triangle_clusters, ctx.batches.instances[inst].model_view,
-                                  skip_back_faces, view, inst, draws, stats);
+            append_triangle_draws(mesh.triangle_clusters, mesh.triangle_bounds,
+                                  ctx.batches.instances[inst].model_view, skip_back_faces, view,
+                                  inst, draws, stats);
         }
         ranges[i].count = draws.size() - ranges[i].first;
     }

@@ -36,7 +36,8 @@ Culled cull(const Scene& s, const glm::mat4& mv, bool skip_back_faces,
     Culled out;
     std::vector<TriangleDraw> draws;
     const ViewVolume view(proj, kNear, kFar, 1.0);
-    append_triangle_draws(s.clusters.clusters, mv, skip_back_faces, view, 5u, draws, out.stats);
+    append_triangle_draws(s.clusters.clusters, s.clusters.all, mv, skip_back_faces, view, 5u, draws,
+                          out.stats);
     out.drawn.assign(s.clusters.indices.size() / 3, false);
     for (const TriangleDraw& d : draws) {
         EXPECT_EQ(d.base_instance, 5u);
@@ -162,7 +163,7 @@ TEST(TriangleCulling, KeptNeighboursMergeIntoOneDraw) {
     TriangleCullStats stats;
     const ViewVolume view(projection(), kNear, kFar, 1.0);
     const glm::mat4 mv = glm::lookAt(glm::vec3(0, 0, 6), glm::vec3(0.0f), glm::vec3(0, 1, 0));
-    append_triangle_draws(s.clusters.clusters, mv, false, view, 0u, draws, stats);
+    append_triangle_draws(s.clusters.clusters, s.clusters.all, mv, false, view, 0u, draws, stats);
     ASSERT_EQ(draws.size(), 1u);  // everything in view, nothing skipped: one run
     EXPECT_EQ(draws[0].count, s.clusters.indices.size());
 }
