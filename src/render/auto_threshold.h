@@ -22,9 +22,9 @@ struct AutoThresholdMeasurement {
     // The compute method from this many submitted triangles (0: always; kNeverCompute: never).
     std::size_t compute_from_triangles = 0;
     MethodCost geometry_shader, compute;
-    std::vector<std::size_t> sizes;  // triangles of the calibration frames
+    std::vector<std::size_t> sizes;                      // triangles of the calibration frames
     std::vector<double> geometry_shader_ms, compute_ms;  // each size's fastest frame
-    double seconds = 0.0;            // how long the measurement took
+    double seconds = 0.0;                                // how long the measurement took
 };
 
 inline constexpr std::size_t kNeverCompute = static_cast<std::size_t>(-1);
