@@ -75,11 +75,11 @@ class Visibility {
     ReferenceStats& stats_;
 };
 
-// Samples visibility along the on-screen part of the edge and marks the pixels crossed by each
-// visible stretch; where visibility changes between two samples, bisection finds the switch.
-void draw_edge(const ClippedEdge& e, const FeatureEdge& f, const Visibility& visible,
-               const detail::Projection& p, const ReferenceOptions& o,
-               std::vector<std::uint8_t>& mask, ReferenceStats& stats) {
+// Samples visibility along the on-screen part of the edge and appends each visible stretch;
+// where visibility changes between two samples, bisection finds the switch.
+void split_edge(const ClippedEdge& e, const FeatureEdge& f, const Visibility& visible,
+                const detail::Projection& p, const ReferenceOptions& o,
+                std::vector<VisibleSegment>& out, ReferenceStats& stats) {
     const auto range =
         detail::clip_to_rect(e.sa, e.sb, {-1.0, -1.0}, {p.width + 1.0, p.height + 1.0});
     if (!range) return;
@@ -89,6 +89,9 @@ void draw_edge(const ClippedEdge& e, const FeatureEdge& f, const Visibility& vis
     const int n = std::max(1, static_cast<int>(std::ceil(len_px * o.samples_per_pixel)));
     auto window = [&](double u) { return e.sa + (e.sb - e.sa) * u; };
     auto param = [&](int i) { return u0 + (u1 - u0) * (static_cast<double>(i) / n); };
+    auto emit = [&](double from, double to) {
+        out.push_back({window(from), window(to), f.kind, f.instance});
+    };
 
     double run_start = 0.0;
     bool in_run = false;
@@ -105,8 +108,7 @@ void draw_edge(const ClippedEdge& e, const FeatureEdge& f, const Visibility& vis
                 (visible(e, f, mid) == prev ? lo : hi) = mid;
             }
             if (prev) {
-                stats.lit_pixels +=
-                    detail::mark_segment(mask, p.width, p.height, window(run_start), window(lo));
+                emit(run_start, lo);
                 in_run = false;
             } else {
                 run_start = hi;
@@ -119,16 +121,15 @@ void draw_edge(const ClippedEdge& e, const FeatureEdge& f, const Visibility& vis
         prev = vis;
         prev_u = u;
     }
-    if (in_run)
-        stats.lit_pixels +=
-            detail::mark_segment(mask, p.width, p.height, window(run_start), window(u1));
+    if (in_run) emit(run_start, u1);
 }
 
 }  // namespace
 
-std::vector<std::uint8_t> reference_mask(std::span<const ReferenceInstance> instances,
-                                         const ReferenceView& view, const ReferenceOptions& options,
-                                         ReferenceStats* stats_out) {
+std::vector<VisibleSegment> reference_segments(std::span<const ReferenceInstance> instances,
+                                               const ReferenceView& view,
+                                               const ReferenceOptions& options,
+                                               ReferenceStats* stats_out) {
     check_inputs(instances, view, options);
     ReferenceStats stats;
     std::vector<FeatureEdge> edges;
@@ -146,12 +147,32 @@ std::vector<std::uint8_t> reference_mask(std::span<const ReferenceInstance> inst
     const detail::Projection proj = detail::Projection::of(view);
     const Visibility visible(bvh, proj, options, stats);
 
-    std::vector<std::uint8_t> mask(
-        static_cast<std::size_t>(view.width) * static_cast<std::size_t>(view.height), 0);
+    std::vector<VisibleSegment> segments;
     for (const FeatureEdge& f : edges) {
         const auto clipped = detail::clip_edge(f.a, f.b, proj);
-        if (clipped) draw_edge(*clipped, f, visible, proj, options, mask, stats);
+        if (clipped) split_edge(*clipped, f, visible, proj, options, segments, stats);
     }
+    if (stats_out) *stats_out = stats;
+    return segments;
+}
+
+std::size_t mark_segments(std::span<const VisibleSegment> segments, int width, int height,
+                          std::vector<std::uint8_t>& mask) {
+    std::size_t lit = 0;
+    for (const VisibleSegment& s : segments)
+        lit += detail::mark_segment(mask, width, height, s.a, s.b);
+    return lit;
+}
+
+std::vector<std::uint8_t> reference_mask(std::span<const ReferenceInstance> instances,
+                                         const ReferenceView& view, const ReferenceOptions& options,
+                                         ReferenceStats* stats_out) {
+    ReferenceStats stats;
+    const std::vector<VisibleSegment> segments =
+        reference_segments(instances, view, options, &stats);
+    std::vector<std::uint8_t> mask(
+        static_cast<std::size_t>(view.width) * static_cast<std::size_t>(view.height), 0);
+    stats.lit_pixels = mark_segments(segments, view.width, view.height, mask);
     if (stats_out) *stats_out = stats;
     return mask;
 }

@@ -46,6 +46,19 @@ struct ReferenceOptions {
     double relative_epsilon = 1e-7;  // a hit at t >= 1 - eps (t = 1 at the point) does not hide
 };
 
+// The kinds of feature line, as the geometry shader classifies them.
+enum class LineKind : std::uint8_t { crease, silhouette, boundary };
+
+// One visible stretch of a feature edge, split at its exact visibility changes: window
+// coordinates in pixels (OpenGL's: origin at the bottom-left, y up), on or just beyond the
+// viewport (the on-screen part, clipped to the viewport grown by 1 px).
+struct VisibleSegment {
+    glm::dvec2 a{0.0};
+    glm::dvec2 b{0.0};
+    LineKind kind = LineKind::crease;
+    std::uint32_t instance = 0;  // index into the instances given
+};
+
 struct ReferenceStats {
     std::size_t feature_edges = 0;  // edges found, before clipping
     std::size_t drawn_edges = 0;    // edges left after clipping that touch the viewport
@@ -53,6 +66,18 @@ struct ReferenceStats {
     std::size_t rays = 0;  // visibility queries
     std::size_t lit_pixels = 0;
 };
+
+// The visible stretches of every feature edge, in the order the edges are found. The mask
+// below is exactly the pixels these segments cross.
+// Throws std::invalid_argument for a null mesh, a size below 1 or a bad view.
+std::vector<VisibleSegment> reference_segments(std::span<const ReferenceInstance> instances,
+                                               const ReferenceView& view,
+                                               const ReferenceOptions& options = {},
+                                               ReferenceStats* stats = nullptr);
+
+// Marks the pixels `segments` cross (the mask format below); returns how many are lit.
+std::size_t mark_segments(std::span<const VisibleSegment> segments, int width, int height,
+                          std::vector<std::uint8_t>& mask);
 
 // The 8-bit mask (255 = lit), row 0 at the top, width * height bytes. Pixel (x, y) in OpenGL
 // window coordinates has its centre at (x + 0.5, y + 0.5) from the bottom-left.

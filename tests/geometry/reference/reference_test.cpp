@@ -291,3 +291,45 @@ TEST(ReferenceBvh, AnswersLikeBruteForce) {
 
 }  // namespace
 }  // namespace bz::geo
+
+namespace bz::geo {
+namespace {
+
+TEST(ReferenceSegments, CrossExactlyTheMasksPixelsAndSplitWhereHidden) {
+    // The bar behind the wall: its long edges split in two at the wall's sides.
+    const AdjacencyMesh bar = build_line_mesh(box({3.0, 0.1, 0.1}));
+    const AdjacencyMesh wall = build_line_mesh(box({1.0, 1.0, 0.05}));
+    const glm::dmat4 v = look({0.0, 0.0, 10.0});
+    const ReferenceInstance insts[] = {
+        {&bar, v * glm::translate(glm::dmat4(1.0), {0.0, 0.0, -1.0}), 0.5, true},
+        {&wall, v, 0.5, true}};
+    ReferenceStats stats;
+    const std::vector<VisibleSegment> segs = reference_segments(insts, view(), {}, &stats);
+    std::vector<std::uint8_t> m(static_cast<std::size_t>(kW * kH), 0);
+    const std::size_t marked = mark_segments(segs, kW, kH, m);
+    EXPECT_EQ(marked, lit(m));
+    EXPECT_EQ(m, reference_mask(insts, view()));
+    std::size_t bar_pieces = 0, wall_pieces = 0;
+    for (const VisibleSegment& s : segs) {
+        // The wall's edges along the view axis project to points: dots, not pieces.
+        if (glm::length(s.b - s.a) < 1e-9) continue;
+        (s.instance == 0 ? bar_pieces : wall_pieces) += 1;
+        EXPECT_TRUE(s.kind == LineKind::silhouette || s.kind == LineKind::crease);
+    }
+    EXPECT_EQ(wall_pieces, 4u);  // the wall's front square, whole
+    // Seen head on, the bar's outline is its front face: the two long edges show in two pieces
+    // each, one either side of the wall, and the two short end edges whole.
+    EXPECT_EQ(bar_pieces, 6u);
+    // No visible piece of the bar lies between the wall's sides on the wall's rows.
+    const auto p = detail::Projection::of(view());
+    const double left = p.window(p.clip(glm::dvec3(v * glm::dvec4(-1.0, 0.0, 0.05, 1.0)))).x;
+    const double right = p.window(p.clip(glm::dvec3(v * glm::dvec4(1.0, 0.0, 0.05, 1.0)))).x;
+    for (const VisibleSegment& s : segs) {
+        if (s.instance != 0) continue;
+        const double mid = 0.5 * (s.a.x + s.b.x);
+        EXPECT_FALSE(mid > left + 1.0 && mid < right - 1.0) << s.a.x << " .. " << s.b.x;
+    }
+}
+
+}  // namespace
+}  // namespace bz::geo
