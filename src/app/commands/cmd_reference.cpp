@@ -92,7 +92,7 @@ Options parse(Args args) {
             throw UsageError("--level takes its camera from the level's path: only --size applies");
     }
     if (!(o.crease > 0.0 && o.crease <= 180.0)) throw UsageError("--crease must be in (0, 180]");
-    if (o.svg == o.mask) throw UsageError("--svg and --mask name the same file");
+    if (!o.svg.empty() && o.svg == o.mask) throw UsageError("--svg and --mask name the same file");
     return o;
 }
 

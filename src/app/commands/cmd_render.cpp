@@ -135,7 +135,7 @@ RenderOptions parse(Args args) {
     }
     if (o.input.empty()) throw UsageError("no INPUT model given");
     if (o.out == o.mask) throw UsageError("--out and --mask name the same file");
-    if (o.svg == o.out || o.svg == o.mask)
+    if (!o.svg.empty() && (o.svg == o.out || o.svg == o.mask))
         throw UsageError("--svg names the same file as --out or --mask");
     validate_camera(o.camera);
     return o;
