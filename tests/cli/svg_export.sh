@@ -58,6 +58,16 @@ expect 0 "paths after chaining" reference --level "$root/levels/classic.toml" --
   --size 320x180 --mask "$work/level-ref.png" --svg "$work/level.svg"
 score level 320 180
 
+# The play key: Shift+F12 writes screenshot-0001.svg into the pref folder, F12 still the PNG.
+mkdir -p "$work/pref"
+BEAMZONE_PREF_DIR="$work/pref" timeout 120 "$bin" play --headless-test --frames 40 --size 320x180 \
+  --press 2:Return,30:Shift+F12,35:F12 >"$work/out" 2>&1 || fail "play exit $?: $(tail -3 "$work/out")"
+grep -q "vector screenshot saved: .*paths after chaining" "$work/out" || fail "no vector screenshot log"
+[ -f "$work/pref/screenshots/screenshot-0001.png" ] || fail "F12 wrote no PNG"
+"$py" "$lines" check "$work/pref/screenshots/screenshot-0001.svg" 320 180 >"$work/check" ||
+  fail "the play SVG is invalid"
+grep -q "hud=" "$work/check" || fail "the play SVG lacks the HUD: $(cat "$work/check")"
+
 # Outputs: an existing non-SVG file is not replaced; an SVG is; usage errors exit 2.
 printf 'keep me' >"$work/keep.svg"
 expect 1 "not a SVG document" render builtin:cube --out "$work/c.png" --svg "$work/keep.svg"
