@@ -53,6 +53,15 @@ grep -q 'fill="#c7dbed"' "$work/toon.svg" || fail "toon SVG lacks its paper back
 grep -q '<g id="silhouette"[^>]*stroke="#050508" stroke-width="3"' "$work/toon.svg" ||
   fail "toon SVG lacks its ink and width: $(grep '<g' "$work/toon.svg")"
 
+# The technical style: the cube's three hidden edges, dashed and anchored, in hidden-1; its
+# visible lines still match the reference.
+expect 0 "" render builtin:cube --size 320x240 --style technical --out "$work/t.png" \
+  --svg "$work/tech.svg"
+expect 0 "" reference builtin:cube --size 320x240 --style technical --mask "$work/tech-ref.png"
+score tech 320 240
+grep -q "hidden-1=3" "$work/check" || fail "technical cube: $(cat "$work/check")"
+grep -q 'stroke-dasharray="6 4"' "$work/tech.svg" || fail "technical cube: no dashes"
+
 # A level frame, from reference (the level's benchmark camera).
 expect 0 "paths after chaining" reference --level "$root/levels/classic.toml" --time 2 \
   --size 320x180 --mask "$work/level-ref.png" --svg "$work/level.svg"

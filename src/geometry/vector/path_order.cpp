@@ -21,7 +21,7 @@ namespace {
 // so a search scans rings of cells outwards until no nearer end can remain.
 class EndGrid {
   public:
-    explicit EndGrid(const std::vector<Polyline>& paths) {
+    EndGrid(const std::vector<Polyline>& paths, bool both_ends) {
         lo_ = glm::dvec2(std::numeric_limits<double>::max());
         glm::dvec2 hi(std::numeric_limits<double>::lowest());
         for (const Polyline& p : paths) {
@@ -38,7 +38,7 @@ class EndGrid {
         cells_.resize(static_cast<std::size_t>(nx_) * ny_);
         for (std::size_t i = 0; i < paths.size(); ++i) {
             add(paths[i].points.front(), static_cast<std::uint32_t>(2 * i));
-            add(paths[i].points.back(), static_cast<std::uint32_t>(2 * i + 1));
+            if (both_ends) add(paths[i].points.back(), static_cast<std::uint32_t>(2 * i + 1));
         }
         ends_.resize(2 * paths.size());
         for (std::size_t i = 0; i < paths.size(); ++i) {
@@ -114,9 +114,9 @@ class EndGrid {
 
 }  // namespace
 
-glm::dvec2 order_nearest_end(std::vector<Polyline>& paths, glm::dvec2 start) {
+glm::dvec2 order_nearest_end(std::vector<Polyline>& paths, glm::dvec2 start, bool may_reverse) {
     if (paths.empty()) return start;
-    EndGrid grid(paths);
+    EndGrid grid(paths, may_reverse);
     std::vector<Polyline> ordered;
     ordered.reserve(paths.size());
     glm::dvec2 pen = start;

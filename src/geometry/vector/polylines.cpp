@@ -15,7 +15,8 @@ class NodeTable {
     explicit NodeTable(double tolerance)
         : tolerance_(tolerance), cell_(std::max(tolerance, 1e-9)) {}
 
-    std::uint32_t node(glm::dvec2 p, LineKind kind, std::uint32_t instance) {
+    std::uint32_t node(glm::dvec2 p, LineKind kind, std::uint32_t instance, std::uint8_t level) {
+        instance = instance * 4u + level;  // level < 4: the key keeps the two apart
         const std::int64_t cx = cell_of(p.x), cy = cell_of(p.y);
         for (std::int64_t dy = -1; dy <= 1; ++dy) {
             for (std::int64_t dx = -1; dx <= 1; ++dx) {
@@ -68,6 +69,8 @@ std::vector<Polyline> chain_segments(std::span<const VisibleSegment> segments, d
         if (!std::isfinite(s.a.x) || !std::isfinite(s.a.y) || !std::isfinite(s.b.x) ||
             !std::isfinite(s.b.y))
             throw std::invalid_argument("chain_segments: a segment end is not finite");
+        if (s.level > kMaxOcclusionLevel)
+            throw std::invalid_argument("chain_segments: an occlusion level above the cap");
     }
     NodeTable table(tolerance);
     const std::size_t n_seg = segments.size();
@@ -76,8 +79,8 @@ std::vector<Polyline> chain_segments(std::span<const VisibleSegment> segments, d
     std::vector<char> used(n_seg, 0);
     for (std::size_t i = 0; i < n_seg; ++i) {
         const VisibleSegment& s = segments[i];
-        ends[2 * i] = table.node(s.a, s.kind, s.instance);
-        ends[2 * i + 1] = table.node(s.b, s.kind, s.instance);
+        ends[2 * i] = table.node(s.a, s.kind, s.instance, s.level);
+        ends[2 * i + 1] = table.node(s.b, s.kind, s.instance, s.level);
     }
     const std::vector<glm::dvec2>& pos = table.positions();
 
@@ -107,6 +110,7 @@ std::vector<Polyline> chain_segments(std::span<const VisibleSegment> segments, d
         Polyline line;
         line.kind = segments[seg].kind;
         line.instance = segments[seg].instance;
+        line.level = segments[seg].level;
         line.points.push_back(pos[node]);
         for (;;) {
             used[seg] = 1;
@@ -125,7 +129,11 @@ std::vector<Polyline> chain_segments(std::span<const VisibleSegment> segments, d
     for (std::size_t i = 0; i < n_seg; ++i) {
         if (ends[2 * i] != ends[2 * i + 1]) continue;
         used[i] = 1;
-        out.push_back({{segments[i].a, segments[i].b}, segments[i].kind, segments[i].instance});
+        out.push_back({{segments[i].a, segments[i].b},
+                       segments[i].kind,
+                       segments[i].instance,
+                       segments[i].level,
+                       segments[i].edge_offset_px});
     }
     // Open chains start at their ends (nodes where one, or three or more, segments meet) ...
     for (std::uint32_t n = 0; n < pos.size(); ++n) {
@@ -138,6 +146,14 @@ std::vector<Polyline> chain_segments(std::span<const VisibleSegment> segments, d
     for (std::uint32_t i = 0; i < n_seg; ++i) {
         if (!used[i]) walk(ends[2 * i], i);
     }
+    return out;
+}
+
+std::vector<Polyline> single_segments(std::span<const VisibleSegment> segments) {
+    std::vector<Polyline> out;
+    out.reserve(segments.size());
+    for (const VisibleSegment& s : segments)
+        out.push_back({{s.a, s.b}, s.kind, s.instance, s.level, s.edge_offset_px});
     return out;
 }
 

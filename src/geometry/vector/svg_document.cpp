@@ -22,7 +22,8 @@ void append_number(std::string& out, double v) {
     out.append(s);
 }
 
-void append_path(std::string& out, const Polyline& p, int height, const std::string& stroke) {
+void append_path(std::string& out, const Polyline& p, int height, const std::string& stroke,
+                 bool dash_offset) {
     out += "<path d=\"M";
     for (std::size_t i = 0; i < p.points.size(); ++i) {
         if (i == 1) out += " L";
@@ -33,6 +34,11 @@ void append_path(std::string& out, const Polyline& p, int height, const std::str
     }
     out += '"';
     if (!stroke.empty()) out += " stroke=\"" + stroke + "\"";
+    if (dash_offset) {
+        out += " stroke-dashoffset=\"";
+        append_number(out, p.dash_offset);
+        out += '"';
+    }
     out += "/>\n";
 }
 
@@ -78,7 +84,8 @@ std::string svg_document(int width, int height, const std::string& background,
         for (std::size_t i = 0; i < g.paths.size(); ++i) {
             if (g.paths[i].points.empty()) continue;
             append_path(out, g.paths[i], height,
-                        i < g.path_stroke.size() ? g.path_stroke[i] : std::string());
+                        i < g.path_stroke.size() ? g.path_stroke[i] : std::string(),
+                        g.dash_offsets);
         }
         out += "</g>\n";
     }

@@ -10,10 +10,11 @@
 namespace bz::geo {
 
 struct SvgGroup {
-    std::string id;      // an XML name: letters, digits, '-' and '_'
-    std::string stroke;  // "#rrggbb", the group's colour
-    double width = 1.0;  // stroke width in pixels
-    std::string dash;    // stroke-dasharray, "" for solid
+    std::string id;             // an XML name: letters, digits, '-' and '_'
+    std::string stroke;         // "#rrggbb", the group's colour
+    double width = 1.0;         // stroke width in pixels
+    std::string dash;           // stroke-dasharray, "" for solid
+    bool dash_offsets = false;  // each path's stroke-dashoffset is its Polyline::dash_offset
     std::vector<Polyline> paths;
     std::vector<std::string> path_stroke;  // per path, "" (or missing) inherits the group's
 };

@@ -32,6 +32,8 @@ struct Stroke {
     std::string ink;
     double width = 1.5;
     std::string background = "#000000";
+    glm::vec3 ink_rgb{0.0f};
+    glm::vec3 paper_rgb{0.0f};
 };
 
 Stroke stroke_of(const scene::StyleDef& s) {
@@ -53,6 +55,8 @@ Stroke stroke_of(const scene::StyleDef& s) {
     out.per_object_colour = false;
     out.ink = colour(s.outline.ink);
     out.background = colour(s.background);
+    out.ink_rgb = s.outline.ink;
+    out.paper_rgb = s.background;
     return out;
 }
 
@@ -94,16 +98,28 @@ std::string frame_svg(const scene::FrameList& frame, const scene::MeshLibrary& m
                       int height, const FrameSvgOptions& options, FrameSvgStats* stats_out) {
     FrameSvgStats stats;
     auto t0 = Clock::now();
+    const scene::StyleDef& def = scene::style_entry(frame.style).def;
+    ReferenceFrameOptions ref = options.reference;
+    if (def.hidden_lines_removed)
+        ref.sampling.hidden_levels = std::clamp(def.hidden.levels, 0, geo::kMaxOcclusionLevel);
     std::vector<geo::VisibleSegment> segments =
-        reference_frame_segments(frame, meshes, width, height, options.reference, &stats.reference);
+        reference_frame_segments(frame, meshes, width, height, ref, &stats.reference);
     if (frame.view_top < 1.0f) clip_below(segments, (frame.view_top * 0.5 + 0.5) * height);
     stats.reference_ms = ms_since(t0);
     stats.segments = segments.size();
 
     t0 = Clock::now();
-    const Stroke stroke = stroke_of(scene::style_entry(frame.style).def);
-    std::vector<geo::Polyline> chained = geo::chain_segments(segments, options.chain_tolerance_px);
-    stats.paths = chained.size();
+    const Stroke stroke = stroke_of(def);
+    // Visible lines chain into polylines; hidden ones stay single segments in their own
+    // direction, so each dash pattern starts at its edge's first end.
+    const auto hidden_begin =
+        std::stable_partition(segments.begin(), segments.end(),
+                              [](const geo::VisibleSegment& s) { return s.level == 0; });
+    std::vector<geo::Polyline> chained =
+        geo::chain_segments(std::span(segments.begin(), hidden_begin), options.chain_tolerance_px);
+    const std::vector<geo::Polyline> hidden =
+        geo::single_segments(std::span(hidden_begin, segments.end()));
+    stats.paths = chained.size() + hidden.size();
     std::vector<geo::SvgGroup> groups;
     std::vector<geo::Polyline> as_chained;  // every group in chaining order, for the travel
     glm::dvec2 pen(0.0);
@@ -115,6 +131,20 @@ std::string frame_svg(const scene::FrameList& frame, const scene::MeshLibrary& m
             if (p.kind == kind) g.paths.push_back(std::move(p));
         as_chained.insert(as_chained.end(), g.paths.begin(), g.paths.end());
         pen = geo::order_nearest_end(g.paths, pen);
+        groups.push_back(std::move(g));
+    }
+    for (int level = 1; level <= ref.sampling.hidden_levels; ++level) {
+        geo::SvgGroup g;
+        g.id = "hidden-" + std::to_string(level);
+        g.width = stroke.width * def.hidden.width_scale;
+        g.dash = std::to_string(static_cast<int>(std::lround(def.hidden.dash_px))) + " " +
+                 std::to_string(static_cast<int>(std::lround(def.hidden.gap_px)));
+        g.dash_offsets = true;
+        for (const geo::Polyline& p : hidden)
+            if (p.level == level) g.paths.push_back(p);
+        if (g.paths.empty()) continue;
+        as_chained.insert(as_chained.end(), g.paths.begin(), g.paths.end());
+        pen = geo::order_nearest_end(g.paths, pen, false);
         groups.push_back(std::move(g));
     }
     stats.travel_before_px = geo::pen_up_travel(as_chained);
@@ -131,6 +161,13 @@ std::string frame_svg(const scene::FrameList& frame, const scene::MeshLibrary& m
                                               frame.items[0].color.b);
     for (geo::SvgGroup& g : groups) {
         g.stroke = stroke.per_object_colour ? first_colour : stroke.ink;
+        if (!stroke.per_object_colour && g.dash_offsets) {
+            // Deeper hidden lines fade towards the paper: level 1 at the ink, level 3 halfway.
+            const int level = g.paths.front().level;
+            const float t = 0.25f * static_cast<float>(level - 1);
+            const glm::vec3 c = glm::mix(stroke.ink_rgb, stroke.paper_rgb, t);
+            g.stroke = geo::svg_colour(c.r, c.g, c.b);
+        }
         if (!stroke.per_object_colour) continue;
         for (const geo::Polyline& p : g.paths) {
             const glm::vec3 c = frame.items[p.instance].color;

@@ -3,8 +3,8 @@
 
   svg_lines.py check FILE.svg W H          parse with a real XML parser, check the structure,
                                            print "groups NAME=PATHS ... paths N points N"
-  svg_lines.py hairline FILE.svg OUT.svg   the same lines 0.2 px wide (thinner ones fall between the rasteriser's
-                                           coverage samples), no background nor HUD, so a
+  svg_lines.py hairline FILE.svg OUT.svg   the visible lines 0.2 px wide (thinner ones fall between the rasteriser's
+                                           coverage samples), no background, HUD nor hidden lines, so a
                                            rasteriser lights (nearly) only the pixels they cross
   svg_lines.py mask IN.png OUT.png         any pixel with alpha > 0 -> 255, else 0 (8-bit gray)
 """
@@ -15,7 +15,7 @@ import xml.etree.ElementTree as ET
 from PIL import Image
 
 SVG = "{http://www.w3.org/2000/svg}"
-KINDS = {"silhouette", "crease", "boundary", "hud"}
+KINDS = {"silhouette", "crease", "boundary", "hud", "hidden-1", "hidden-2", "hidden-3"}
 NUMBER = r"-?\d+(?:\.\d+)?"
 PATH_D = re.compile(rf"^M {NUMBER} {NUMBER}(?: L(?: {NUMBER} {NUMBER})+)?$")
 COLOUR = re.compile(r"^#[0-9a-f]{6}$")
@@ -58,6 +58,10 @@ def check(path, width, height):
                 fail(f"bad path data {d[:80]!r}")
             if p.get("stroke") is not None and not COLOUR.match(p.get("stroke")):
                 fail(f"bad path stroke {p.get('stroke')}")
+            if gid.startswith("hidden-"):
+                if not re.match(r"^\d+ \d+$", child.get("stroke-dasharray", "")):
+                    fail(f"group {gid} is not dashed")
+                float(p.get("stroke-dashoffset"))  # every hidden path anchors its dashes
             nums = [float(v) for v in re.findall(NUMBER, d)]
             for x, y in zip(nums[0::2], nums[1::2]):
                 if not (-2 <= x <= float(width) + 2 and -2 <= y <= float(height) + 2):
@@ -74,8 +78,9 @@ def hairline(path, out):
     tree = ET.parse(path)
     root = tree.getroot()
     for child in list(root):
-        if child.tag == SVG + "rect" or child.get("id") == "hud":
-            root.remove(child)  # the reference mask has no HUD
+        if child.tag == SVG + "rect" or child.get("id") == "hud" or \
+                child.get("id", "").startswith("hidden-"):
+            root.remove(child)  # the reference mask has neither HUD nor hidden lines
         elif child.tag == SVG + "g":
             child.set("stroke-width", "0.2")
     tree.write(out, xml_declaration=True, encoding="UTF-8")
