@@ -33,6 +33,7 @@ constexpr std::array<std::string_view, kActionCount> kNames = {
     "start",
     "back",
     "cycle_style",
+    "vector_screenshot",
 };
 
 struct ModifierName {
@@ -139,6 +140,7 @@ Bindings default_bindings() {
     set(Action::start, {key("Return"), key("Keypad Enter"), key("1")});
     set(Action::back, {key("Backspace")});
     set(Action::cycle_style, {key("F6")});
+    set(Action::vector_screenshot, {key("F12", kModShift)});
     return b;
 }
 

@@ -31,10 +31,11 @@ enum class Action : std::uint8_t {
     volume_up,
     volume_down,
     quit,
-    show_fps,     // the frame-rate and frame-time readout
-    start,        // begin a game, confirm (menus, initials)
-    back,         // menus and initials: go back, delete
-    cycle_style,  // the next look (scene::next_style), for this run only
+    show_fps,           // the frame-rate and frame-time readout
+    start,              // begin a game, confirm (menus, initials)
+    back,               // menus and initials: go back, delete
+    cycle_style,        // the next look (scene::next_style), for this run only
+    vector_screenshot,  // the frame's exact visible lines as SVG, beside the screenshots
     count
 };
 constexpr std::size_t kActionCount = static_cast<std::size_t>(Action::count);

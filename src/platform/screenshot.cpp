@@ -14,13 +14,12 @@ namespace bz::platform {
 namespace {
 
 constexpr std::string_view kPrefix = "screenshot-";
-constexpr std::string_view kSuffix = ".png";
 // Numbers past this (a file someone named screenshot-99999999999999999999.png) are not
 // continued from: counting on from them would overflow and reuse one name forever.
 constexpr long kMaxNumber = 99'999'999;
 
-// The number in "screenshot-0042.png", or -1 for any other name.
-long number_of(const std::string& name) {
+// The number in "screenshot-0042.png" (kSuffix ".png"), or -1 for any other name.
+long number_of(const std::string& name, std::string_view kSuffix) {
     if (name.size() <= kPrefix.size() + kSuffix.size() || !name.starts_with(kPrefix) ||
         !name.ends_with(kSuffix)) {
         return -1;
@@ -34,17 +33,18 @@ long number_of(const std::string& name) {
 
 }  // namespace
 
-std::filesystem::path next_screenshot_path(const std::filesystem::path& dir) {
+std::filesystem::path next_screenshot_path(const std::filesystem::path& dir,
+                                           std::string_view extension) {
     std::set<long> used;
     std::error_code ec;
     for (std::filesystem::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
-        const long n = number_of(it->path().filename().string());
+        const long n = number_of(it->path().filename().string(), extension);
         if (n >= 1 && n <= kMaxNumber) used.insert(n);
     }
     auto path_for = [&](long n) {
         char name[48];
-        std::snprintf(name, sizeof name, "screenshot-%04ld.png", n);
-        return dir / name;
+        std::snprintf(name, sizeof name, "screenshot-%04ld", n);
+        return dir / (std::string(name) + std::string(extension));
     };
     // One past the highest, as long as that fits; else the lowest free number.
     long next = used.empty() ? 1 : *used.rbegin() + 1;

@@ -405,7 +405,8 @@ std::string format_settings(const Settings& s) {
       << "preset = " << quoted(s.preset)
       << "     # render preset: \"fast\", \"balanced\" or \"high\"\n"
       << "style = " << quoted(s.style)
-      << "      # vector, vector-xray (no hidden-line removal), toon, sketch, pop-art or halo\n"
+      << "      # vector, vector-xray (no hidden-line removal), toon, sketch, pop-art, halo or "
+         "technical\n"
       << "beam = " << quoted(s.beam)
       << "         # vector beam: \"mame\" (MAME's look, phosphor) or \"classic\"\n"
       << "overlay = " << (s.overlay ? "true" : "false")

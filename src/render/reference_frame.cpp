@@ -8,10 +8,20 @@
 
 namespace bz::render {
 
-std::vector<std::uint8_t> reference_frame_mask(const scene::FrameList& frame,
-                                               const scene::MeshLibrary& meshes, int width,
-                                               int height, const ReferenceFrameOptions& o,
-                                               geo::ReferenceStats* stats) {
+namespace {
+
+// The reference's inputs for a frame. Items whose mesh is missing get no instance but keep
+// their index: `item_of` maps each instance back to its frame item.
+struct FrameInstances {
+    std::vector<geo::ReferenceInstance> instances;
+    std::vector<std::uint32_t> item_of;
+    geo::ReferenceView view;
+    geo::ReferenceOptions sampling;
+};
+
+FrameInstances frame_instances(const scene::FrameList& frame, const scene::MeshLibrary& meshes,
+                               int width, int height, const ReferenceFrameOptions& o) {
+    FrameInstances out;
     const scene::Camera& c = frame.camera;
     const glm::dmat4 view = glm::lookAt(c.eye, c.target, c.up);
     RenderSettings lod_settings;
@@ -19,9 +29,10 @@ std::vector<std::uint8_t> reference_frame_mask(const scene::FrameList& frame,
     lod_settings.lod = true;
     const double cot = 1.0 / std::tan(glm::radians(c.fov_y_deg) * 0.5);
 
-    std::vector<geo::ReferenceInstance> instances;
+    std::vector<geo::ReferenceInstance>& instances = out.instances;
     instances.reserve(frame.items.size());
-    for (const scene::DrawItem& item : frame.items) {
+    for (std::size_t i = 0; i < frame.items.size(); ++i) {
+        const scene::DrawItem& item = frame.items[i];
         if (item.mesh >= meshes.size()) continue;  // the renderer skips these too
         geo::ReferenceInstance inst;
         inst.mesh = &meshes.mesh(item.mesh);
@@ -44,16 +55,39 @@ std::vector<std::uint8_t> reference_frame_mask(const scene::FrameList& frame,
             inst.cos_crease = static_cast<double>(lod_cos_crease(lod_settings, radius_px));
         }
         instances.push_back(inst);
+        out.item_of.push_back(static_cast<std::uint32_t>(i));
     }
-    geo::ReferenceView v;
+    geo::ReferenceView& v = out.view;
     v.width = width;
     v.height = height;
     v.fov_y_deg = c.fov_y_deg;
     v.near = c.near;
     v.far = c.far;
-    geo::ReferenceOptions sampling = o.sampling;
-    if (frame.style == scene::LineStyle::arcade) sampling.occlusion = false;
-    return geo::reference_mask(instances, v, sampling, stats);
+    out.sampling = o.sampling;
+    if (frame.style == scene::LineStyle::arcade) out.sampling.occlusion = false;
+    return out;
+}
+
+}  // namespace
+
+std::vector<geo::VisibleSegment> reference_frame_segments(const scene::FrameList& frame,
+                                                          const scene::MeshLibrary& meshes,
+                                                          int width, int height,
+                                                          const ReferenceFrameOptions& o,
+                                                          geo::ReferenceStats* stats) {
+    const FrameInstances in = frame_instances(frame, meshes, width, height, o);
+    std::vector<geo::VisibleSegment> segments =
+        geo::reference_segments(in.instances, in.view, in.sampling, stats);
+    for (geo::VisibleSegment& s : segments) s.instance = in.item_of[s.instance];
+    return segments;
+}
+
+std::vector<std::uint8_t> reference_frame_mask(const scene::FrameList& frame,
+                                               const scene::MeshLibrary& meshes, int width,
+                                               int height, const ReferenceFrameOptions& o,
+                                               geo::ReferenceStats* stats) {
+    const FrameInstances in = frame_instances(frame, meshes, width, height, o);
+    return geo::reference_mask(in.instances, in.view, in.sampling, stats);
 }
 
 }  // namespace bz::render

@@ -19,6 +19,14 @@ struct ReferenceFrameOptions {
     geo::ReferenceOptions sampling;
 };
 
+// The frame's visible line segments (geo::reference_segments); `instance` indexes
+// frame.items.
+std::vector<geo::VisibleSegment> reference_frame_segments(const scene::FrameList& frame,
+                                                          const scene::MeshLibrary& meshes,
+                                                          int width, int height,
+                                                          const ReferenceFrameOptions& options = {},
+                                                          geo::ReferenceStats* stats = nullptr);
+
 std::vector<std::uint8_t> reference_frame_mask(const scene::FrameList& frame,
                                                const scene::MeshLibrary& meshes, int width,
                                                int height,

@@ -16,6 +16,7 @@ enum class Style : std::uint8_t {
     sketch,       // pencil strokes on paper (Olejnik & Litchmore, after Jezek et al. 2018)
     pop_art,      // flat colour, Ben-Day dots and a fine outline (Olejnik & Litchmore)
     halo,         // haloed silhouette strokes, smoothed from coarse meshes (Loviscach)
+    technical,    // ink on white; in vector output, hidden lines dashed by occlusion level
     // The names the first styles had; kept so old levels, settings and scripts still work.
     occluded = vector,
     arcade = vector_xray,
@@ -23,11 +24,12 @@ enum class Style : std::uint8_t {
 
 // Every style, in the order the play key cycles through them.
 const std::vector<Style>& all_styles();
-// The canonical name ("vector", "vector-xray", "toon", "sketch", "pop-art", "halo").
+// The canonical name ("vector", "vector-xray", "toon", "sketch", "pop-art", "halo",
+// "technical").
 std::string_view style_name(Style s);
 // A canonical name, or an old one ("occluded", "arcade"); nullopt for anything else.
 std::optional<Style> style_from_name(std::string_view name);
-// "vector, vector-xray, toon, sketch, pop-art or halo", for messages.
+// "vector, vector-xray, toon, sketch, pop-art, halo or technical", for messages.
 std::string style_name_list();
 // Every accepted name, canonical first, then the old aliases.
 const std::vector<std::string_view>& accepted_style_names();

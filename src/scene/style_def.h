@@ -75,6 +75,17 @@ struct Palette {
     float value = 0.8f;
 };
 
+// Hidden lines in a stroke of their own, as technical drawings draw them: `levels` > 0 keeps
+// them up to that occlusion level (geo::kMaxOcclusionLevel at most), `width_scale` as wide as
+// the visible stroke and dashed. The dash pattern starts at each edge's first end, so it stays
+// on the line as the camera moves. Drawn by the vector output (render --svg) only so far.
+struct HiddenLines {
+    int levels = 0;
+    float width_scale = 0.5f;
+    float dash_px = 6.0f;
+    float gap_px = 4.0f;
+};
+
 struct StyleDef {
     Style id{};
     FillPass fill = FillPass::none;
@@ -89,6 +100,7 @@ struct StyleDef {
     OutlineParams outline;
     SketchParams sketch;
     HaloParams halo;
+    HiddenLines hidden;
     HudTheme hud;
     Palette palette;
 };

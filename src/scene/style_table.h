@@ -22,7 +22,7 @@
 namespace bz::scene {
 
 // The last style of scene::Style (style.h): all_styles() lists 0..kLastStyle.
-inline constexpr Style kLastStyle = Style::halo;
+inline constexpr Style kLastStyle = Style::technical;
 
 struct StyleEntry {
     std::string_view name;                    // canonical, as levels and settings write it
@@ -97,6 +97,14 @@ inline StyleEntry style_entry(Style style) {
             s.paper_tint = 0.3f;  // a wash of the object's colour, so halos show on what is behind
             s.outline.ink = {0.05f, 0.05f, 0.08f};
             return {"halo", {""}, "haloed silhouette strokes over paper", s};
+        }
+        case Style::technical: {
+            StyleDef s = filled(style, FillPass::paper, LinePass::outline, {1.0f, 1.0f, 1.0f});
+            s.outline.width_px = 1.5f;
+            s.outline.overdraw = 0.0f;
+            s.outline.ink = {0.0f, 0.0f, 0.0f};
+            s.hidden.levels = 3;  // SVG: hidden lines dashed and thinner, grouped by level
+            return {"technical", {""}, "black ink on white; SVG adds dashed hidden lines", s};
         }
     }
     return {"", {""}, "", StyleDef{}};  // not reached: every style has its case

@@ -34,7 +34,7 @@ saved '^difficulty = "easy"' "difficulty"
 drive "${options[@]}" $(down 1) Right
 saved '^preset = "high"' "preset"
 drive "${options[@]}" $(down 2) Left
-saved '^style = "halo"' "style"  # wraps from vector to the table's last
+saved '^style = "technical"' "style"  # wraps from vector to the table's last
 drive "${options[@]}" $(down 3) Right
 saved '^beam = "classic"' "beam look"
 drive "${options[@]}" $(down 4) Left

@@ -80,6 +80,7 @@ TEST(Bindings, DefaultsMatchTheManual) {
     EXPECT_TRUE(has(Action::fullscreen, "F11"));
     EXPECT_TRUE(has(Action::fullscreen, "Alt+Return"));
     EXPECT_TRUE(has(Action::screenshot, "F12"));
+    EXPECT_TRUE(has(Action::vector_screenshot, "Shift+F12"));
     EXPECT_TRUE(has(Action::reload_shaders, "F5"));
     EXPECT_TRUE(has(Action::mute, "M"));
     EXPECT_TRUE(has(Action::volume_up, "Keypad +"));

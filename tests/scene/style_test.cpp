@@ -15,8 +15,9 @@ TEST(Style, CanonicalNamesRoundTrip) {
         EXPECT_TRUE(seen.insert(name).second) << name;
         EXPECT_EQ(bz::scene::style_from_name(name), s) << name;
     }
-    EXPECT_EQ(seen.size(), 6u);
-    EXPECT_EQ(bz::scene::style_name_list(), "vector, vector-xray, toon, sketch, pop-art or halo");
+    EXPECT_EQ(seen.size(), 7u);
+    EXPECT_EQ(bz::scene::style_name_list(),
+              "vector, vector-xray, toon, sketch, pop-art, halo or technical");
 }
 
 TEST(Style, OldNamesMeanTheVectorStyles) {
@@ -25,7 +26,7 @@ TEST(Style, OldNamesMeanTheVectorStyles) {
     EXPECT_EQ(bz::scene::style_name(Style::arcade), "vector-xray");
     EXPECT_FALSE(bz::scene::style_from_name("Toon").has_value());
     EXPECT_FALSE(bz::scene::style_from_name("").has_value());
-    EXPECT_EQ(bz::scene::accepted_style_names().size(), 8u);
+    EXPECT_EQ(bz::scene::accepted_style_names().size(), 9u);
 }
 
 TEST(Style, NextStyleVisitsEveryStyleThenWraps) {

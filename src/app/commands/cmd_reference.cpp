@@ -11,6 +11,7 @@
 #include "app/commands/commands.h"
 #include "app/commands/parse_command.h"
 #include "app/model_source.h"
+#include "app/vector_export.h"
 #include "core/error.h"
 #include "core/image_io.h"
 #include "core/io/output_path.h"
@@ -27,15 +28,17 @@ namespace {
 constexpr const char* kUsage =
     "usage: beamzone reference INPUT [--eye x,y,z] [--target x,y,z] [--up x,y,z] [--fov DEG]\n"
     "                          [--near N] [--far F] [--size WxH] [--style NAME]\n"
-    "                          [--crease DEG] [--mask ref.png] [--overwrite]\n"
+    "                          [--crease DEG] [--mask ref.png] [--svg lines.svg] [--overwrite]\n"
     "       beamzone reference --level LEVEL.toml --time SECONDS [--size WxH] [--mask ref.png]\n"
+    "                          [--svg lines.svg]\n"
     "Computes the exact line mask on the CPU in double precision: the geometry shader's\n"
     "feature edges, visibility by ray casting against every occluder triangle at sub-pixel\n"
     "samples. Same camera options and mask format as 'render --mask' (255 = line, row 0 at\n"
     "the top). INPUT is a model file or builtin:cube, builtin:sphere, builtin:grid.\n"
     "--level puts the camera on the level's benchmark path at --time (the frame 'bench'\n"
     "renders at that simulated time, at the game's 45 degree field of view).\n"
-    "--crease sets the crease angle (default 60, the renderer's).\n";
+    "--crease sets the crease angle (default 60, the renderer's).\n"
+    "--svg also writes the same visible lines as SVG (see 'render --svg').\n";
 
 struct Options {
     std::string input;
@@ -45,6 +48,7 @@ struct Options {
     scene::Style style = scene::Style::vector;
     double crease = 60.0;
     std::string mask = "reference.png";
+    std::string svg;
     bool overwrite = false;  // --mask may replace an existing file that is not a PNG
 };
 
@@ -62,6 +66,8 @@ Options parse(Args args) {
             o.crease = parse_number(a, cur.value(a));
         } else if (a == "--mask" || a == "--out") {
             o.mask = cur.value(a);
+        } else if (a == "--svg") {
+            o.svg = cur.value(a);
         } else if (a == "--overwrite") {
             o.overwrite = true;
         } else if (a == "--style") {
@@ -86,6 +92,7 @@ Options parse(Args args) {
             throw UsageError("--level takes its camera from the level's path: only --size applies");
     }
     if (!(o.crease > 0.0 && o.crease <= 180.0)) throw UsageError("--crease must be in (0, 180]");
+    if (!o.svg.empty() && o.svg == o.mask) throw UsageError("--svg and --mask name the same file");
     return o;
 }
 
@@ -107,6 +114,12 @@ int run(const Options& o) {
     ro.crease_angle_deg = o.crease;
     geo::ReferenceStats stats;
     std::vector<std::uint8_t> mask;
+    std::string svg_log;
+    const auto svg = [&](const scene::FrameList& frame, const scene::MeshLibrary& meshes) {
+        render::FrameSvgOptions so;
+        so.reference = ro;
+        return export_frame_svg(o.svg, frame, meshes, size.x, size.y, so);
+    };
     const auto t0 = std::chrono::steady_clock::now();
     if (!o.level.empty()) {
         level::LoadResult loaded = level::load_level_file(o.level);
@@ -118,6 +131,7 @@ int run(const Options& o) {
         BenchScene scene(std::move(*loaded.level), std::nullopt);
         const scene::FrameList frame = level_frame(scene, *o.time, aspect);
         mask = render::reference_frame_mask(frame, scene.meshes(), size.x, size.y, ro, &stats);
+        if (!o.svg.empty()) svg_log = svg(frame, scene.meshes());
     } else {
         geo::AdjacencyMesh mesh = geo::build_line_mesh(load_model_source(o.input));
         if (mesh.triangle_count() == 0)
@@ -130,6 +144,7 @@ int run(const Options& o) {
         frame.camera = camera_for(o.camera, bounds);
         frame.style = o.style;
         mask = render::reference_frame_mask(frame, meshes, size.x, size.y, ro, &stats);
+        if (!o.svg.empty()) svg_log = svg(frame, meshes);
     }
     const double ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
@@ -139,6 +154,7 @@ int run(const Options& o) {
         "%.0f ms\n",
         o.mask.c_str(), stats.lit_pixels, stats.feature_edges, stats.drawn_edges,
         stats.occluder_triangles, stats.rays, ms);
+    if (!svg_log.empty()) std::printf("%s\n", svg_log.c_str());
     return 0;
 }
 
@@ -152,6 +168,7 @@ int cmd_reference(Args args) {
     const Options& o = *parsed;
     const std::filesystem::path inputs[] = {o.input, o.level};
     check_output_file("--mask", o.mask, kPngOutput, inputs, o.overwrite);
+    if (!o.svg.empty()) check_output_file("--svg", o.svg, kSvgOutput, inputs, o.overwrite);
     return run(o);
 }
 

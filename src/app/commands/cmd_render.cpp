@@ -10,6 +10,7 @@
 #include "app/headless_gl.h"
 #include "app/line_method_profile.h"
 #include "app/model_source.h"
+#include "app/vector_export.h"
 #include "core/budgets.h"
 #include "core/error.h"
 #include "core/image_io.h"
@@ -38,7 +39,8 @@ const std::string& usage() {
             "                       [--color r,g,b] [--out frame.png]\n"
             "                       [--mask mask.png] [--repeat N] [--copies N] [--beam "
             "classic|mame]\n"
-            "                       [--lit-share] [--no-cluster-culling] [--overwrite]\n"
+            "                       [--lit-share] [--no-cluster-culling] [--svg lines.svg]\n"
+            "                       [--overwrite]\n"
             "Renders a model file (or builtin:cube, builtin:sphere, builtin:grid) headless to PNG. "
             "Without "
             "--eye the camera frames the model's bounding\n"
@@ -59,7 +61,10 @@ const std::string& usage() {
             "--lit-share prints the share of the picture's pixels whose brightest channel is "
             "above\n"
             "1/255 (the haze figure; tools/haze measures Bernardoni 2018's hallway with it).\n"
-            "An existing file at --out or --mask must be a PNG unless --overwrite is given; an "
+            "--svg writes the frame's exact visible lines (the CPU reference's) as SVG: polylines\n"
+            "ordered for a pen plotter, one group per line kind, in the style's colours.\n"
+            "An existing file at --out, --mask or --svg must be a PNG unless --overwrite is given; "
+            "an "
             "input,\n"
             "a device, a FIFO or a folder there is never replaced.\n");
     return text;
@@ -77,6 +82,7 @@ struct RenderOptions {
     glm::dvec3 color{0.25, 1.0, 0.35};
     std::string out = "frame.png";
     std::string mask;
+    std::string svg;
     int repeat = 0;
     int copies = 1;
     std::string beam{render::kDefaultBeamLook};
@@ -101,6 +107,8 @@ RenderOptions parse(Args args) {
             o.out = cur.value(a);
         else if (a == "--mask")
             o.mask = cur.value(a);
+        else if (a == "--svg")
+            o.svg = cur.value(a);
         else if (a == "--repeat")
             o.repeat = parse_int(a, cur.value(a), 1, 100000);
         else if (a == "--copies")
@@ -134,6 +142,8 @@ RenderOptions parse(Args args) {
     }
     if (o.input.empty()) throw UsageError("no INPUT model given");
     if (o.out == o.mask) throw UsageError("--out and --mask name the same file");
+    if (!o.svg.empty() && (o.svg == o.out || o.svg == o.mask))
+        throw UsageError("--svg names the same file as --out or --mask");
     validate_camera(o.camera);
     return o;
 }
@@ -212,6 +222,7 @@ int cmd_render(Args args) {
     const std::filesystem::path inputs[] = {o.input};
     check_output_file("--out", o.out, kPngOutput, inputs, o.overwrite);
     if (!o.mask.empty()) check_output_file("--mask", o.mask, kPngOutput, inputs, o.overwrite);
+    if (!o.svg.empty()) check_output_file("--svg", o.svg, kSvgOutput, inputs, o.overwrite);
     geo::MeshReport report;
     geo::AdjacencyMesh mesh = geo::build_line_mesh(load_model_source(o.input), &report);
     if (mesh.triangle_count() == 0) throw UserError(printable(o.input) + ": no usable triangles");
@@ -261,6 +272,11 @@ int cmd_render(Args args) {
     if (!o.mask.empty())
         write_png(o.mask,
                   Image{o.camera.size.x, o.camera.size.y, 1, renderer.render_mask(frame, meshes)});
+    if (!o.svg.empty()) {
+        std::fprintf(
+            stdout, "%s\n",
+            export_frame_svg(o.svg, frame, meshes, o.camera.size.x, o.camera.size.y).c_str());
+    }
     print_timings(renderer, timings);
     if (context->debug().error_count() > 0) {
         std::fprintf(stderr, "beamzone render: %d OpenGL error(s) reported\n",

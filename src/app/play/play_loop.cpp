@@ -11,6 +11,8 @@
 #include "app/play/frame_pacer.h"
 #include "app/play/frame_stats.h"
 #include "app/play/play_sessions.h"
+#include "app/vector_export.h"
+#include "core/error.h"
 #include "game/fixed_step.h"
 #include "platform/screenshot.h"
 #include "scene/presentation_clock.h"
@@ -377,6 +379,9 @@ class Loop {
             case Action::screenshot:
                 screenshot_requested_ = true;
                 break;
+            case Action::vector_screenshot:
+                vector_screenshot_requested_ = true;
+                break;
             case Action::reload_shaders:
                 reload_shaders();
                 break;
@@ -551,6 +556,10 @@ class Loop {
             renderer_->render(frame, session_.meshes(), render::Renderer::kOffscreen);
             take_screenshot();
         }
+        if (vector_screenshot_requested_) {
+            vector_screenshot_requested_ = false;
+            take_vector_screenshot(frame);
+        }
         renderer_->render(frame, session_.meshes(), 0);
         collect_gl_messages();
         p_.context.swap();
@@ -566,6 +575,24 @@ class Loop {
         } catch (const std::exception& e) {
             p_.log.warn(std::string("screenshot failed: ") + e.what());
             p_.overlay.notify("screenshot failed (see the log)");
+        }
+    }
+
+    // The frame's exact visible lines (and HUD) as SVG, numbered like the screenshots. The CPU
+    // reference takes a moment on big scenes: the game pauses for it, once, on request.
+    void take_vector_screenshot(const scene::FrameList& frame) {
+        try {
+            std::error_code ec;
+            std::filesystem::create_directories(config_.screenshots, ec);
+            if (ec) throw UserError("cannot create " + config_.screenshots.string());
+            const auto path = platform::next_screenshot_path(config_.screenshots, ".svg");
+            const std::string line = export_frame_svg(path, frame, session_.meshes(),
+                                                      renderer_->width(), renderer_->height());
+            p_.log.info("vector screenshot saved: " + line);
+            p_.overlay.notify("screenshot " + path.filename().string());
+        } catch (const std::exception& e) {
+            p_.log.warn(std::string("vector screenshot failed: ") + e.what());
+            p_.overlay.notify("vector screenshot failed (see the log)");
         }
     }
 
@@ -596,6 +623,7 @@ class Loop {
     bool running_ = true;
     bool minimized_ = false;
     bool screenshot_requested_ = false;
+    bool vector_screenshot_requested_ = false;
     double alpha_ = 1.0;
     double since_poll_ = 0.0;
     std::uint64_t last_generation_ = 0;

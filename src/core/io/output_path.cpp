@@ -81,6 +81,7 @@ const OutputKind* output_kind_of(const fs::path& name) {
     if (ext == ".replay") return &kReplayOutput;
     if (ext == ".json") return &kJsonOutput;
     if (ext == ".csv") return &kCsvOutput;
+    if (ext == ".svg") return &kSvgOutput;
     return nullptr;
 }
 

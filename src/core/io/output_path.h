@@ -24,8 +24,9 @@ inline constexpr OutputKind kPngOutput{"PNG image", "\x89PNG\r\n\x1a\n"};
 inline constexpr OutputKind kReplayOutput{"beamzone replay", "beamzone-replay "};
 inline constexpr OutputKind kJsonOutput{"JSON document", "{"};
 inline constexpr OutputKind kCsvOutput{"CSV table", "Config,"};
+inline constexpr OutputKind kSvgOutput{"SVG document", "<?xml"};
 
-// The kind a file name promises by its extension (.png, .replay, .json, .csv), or nullptr.
+// The kind a file name promises by its extension (.png, .replay, .json, .csv, .svg), or nullptr.
 const OutputKind* output_kind_of(const std::filesystem::path& name);
 
 void check_output_file(std::string_view option, const std::filesystem::path& out,

@@ -24,7 +24,8 @@ void check_inputs(std::span<const ReferenceInstance> instances, const ReferenceV
     if (!(v.near > 0.0 && v.far > v.near && std::isfinite(v.far))) {
         throw std::invalid_argument("reference: need 0 < near < far < inf");
     }
-    if (!(o.samples_per_pixel > 0.0) || o.refine_steps < 0 || !(o.relative_epsilon >= 0.0)) {
+    if (!(o.samples_per_pixel > 0.0) || o.refine_steps < 0 || !(o.relative_epsilon >= 0.0) ||
+        o.hidden_levels < 0 || o.hidden_levels > kMaxOcclusionLevel) {
         throw std::invalid_argument("reference: bad sampling options");
     }
     for (const ReferenceInstance& i : instances) {
@@ -55,17 +56,23 @@ class Visibility {
                const ReferenceOptions& o, ReferenceStats& stats)
         : bvh_(bvh), proj_(p), options_(o), stats_(stats) {}
 
-    // Is the point of `e` at window parameter u visible from the eye?
-    bool operator()(const ClippedEdge& e, const FeatureEdge& f, double u) const {
-        if (!options_.occlusion) return true;
+    // The occlusion level of the point of `e` at window parameter u (0: visible from the
+    // eye), capped at options.hidden_levels (so 0 or 1 when only visibility is asked for).
+    int operator()(const ClippedEdge& e, const FeatureEdge& f, double u) const {
+        if (!options_.occlusion) return 0;
         ++stats_.rays;
         const glm::dvec3 point = e.at(u);
         const double depth = -point.z;
-        if (!(depth > 0.0)) return true;
+        if (!(depth > 0.0)) return 0;
         // Only what lies at or beyond the near plane is in the depth buffer the GPU tests.
         const double t_min = proj_.near / depth;
         const double t_max = 1.0 - options_.relative_epsilon;
-        return !bvh_.any_hit(glm::dvec3(0.0), point, t_min, t_max, {f.instance, f.va, f.vb});
+        const detail::ExcludedEdge own{f.instance, f.va, f.vb};
+        if (!bvh_.any_hit(glm::dvec3(0.0), point, t_min, t_max, own)) return 0;
+        if (options_.hidden_levels <= 1) return 1;
+        const int front = bvh_.count_front_hits(glm::dvec3(0.0), point, t_min, t_max, own,
+                                                options_.hidden_levels);
+        return std::clamp(front, 1, options_.hidden_levels);
     }
 
   private:
@@ -75,60 +82,67 @@ class Visibility {
     ReferenceStats& stats_;
 };
 
-// Samples visibility along the on-screen part of the edge and marks the pixels crossed by each
-// visible stretch; where visibility changes between two samples, bisection finds the switch.
-void draw_edge(const ClippedEdge& e, const FeatureEdge& f, const Visibility& visible,
-               const detail::Projection& p, const ReferenceOptions& o,
-               std::vector<std::uint8_t>& mask, ReferenceStats& stats) {
+// Samples the occlusion level along the on-screen part of the edge and appends each stretch of
+// one level that is kept (level 0, and up to hidden_levels); where the level changes between
+// two samples, bisection finds each switch.
+void split_edge(const ClippedEdge& e, const FeatureEdge& f, const Visibility& level_at,
+                const detail::Projection& p, const ReferenceOptions& o,
+                std::vector<VisibleSegment>& out, ReferenceStats& stats) {
     const auto range =
         detail::clip_to_rect(e.sa, e.sb, {-1.0, -1.0}, {p.width + 1.0, p.height + 1.0});
     if (!range) return;
     ++stats.drawn_edges;
     const double u0 = (*range)[0], u1 = (*range)[1];
-    const double len_px = glm::length(e.sb - e.sa) * (u1 - u0);
+    const double edge_px = glm::length(e.sb - e.sa);
+    const double len_px = edge_px * (u1 - u0);
     const int n = std::max(1, static_cast<int>(std::ceil(len_px * o.samples_per_pixel)));
     auto window = [&](double u) { return e.sa + (e.sb - e.sa) * u; };
     auto param = [&](int i) { return u0 + (u1 - u0) * (static_cast<double>(i) / n); };
+    const int keep = o.occlusion ? o.hidden_levels : 0;
+    const bool two_levels = o.hidden_levels <= 1;
+    auto emit = [&](double from, double to, int level) {
+        if (level > keep) return;
+        out.push_back({window(from), window(to), f.kind, f.instance,
+                       static_cast<std::uint8_t>(level), edge_px * from});
+    };
 
-    double run_start = 0.0;
-    bool in_run = false;
-    bool prev = false;
+    int level = level_at(e, f, u0);
+    double run_start = u0;
     double prev_u = u0;
-    for (int i = 0; i <= n; ++i) {
+    for (int i = 1; i <= n; ++i) {
         const double u = param(i);
-        const bool vis = visible(e, f, u);
-        if (i > 0 && vis != prev) {
-            // Bisect for the switch between prev_u (prev) and u (vis).
-            double lo = prev_u, hi = u;
+        const int next = level_at(e, f, u);
+        // Several switches may lie between two samples (a level-2 stretch between a hidden
+        // and a visible one): find them one by one, a few at most.
+        double from = prev_u;
+        for (int found = 0; next != level && found < kMaxOcclusionLevel + 1; ++found) {
+            double lo = from, hi = u;
             for (int s = 0; s < o.refine_steps; ++s) {
                 const double mid = 0.5 * (lo + hi);
-                (visible(e, f, mid) == prev ? lo : hi) = mid;
+                (level_at(e, f, mid) == level ? lo : hi) = mid;
             }
-            if (prev) {
-                stats.lit_pixels +=
-                    detail::mark_segment(mask, p.width, p.height, window(run_start), window(lo));
-                in_run = false;
-            } else {
-                run_start = hi;
-                in_run = true;
-            }
-        } else if (i == 0 && vis) {
-            run_start = u;
-            in_run = true;
+            emit(run_start, lo, level);
+            // With two levels only, the other one is `next`: no ray needed.
+            level = hi == u || two_levels ? next : level_at(e, f, hi);
+            run_start = hi;
+            from = hi;
         }
-        prev = vis;
+        if (level != next) {  // switches closer than the bisection resolves
+            emit(run_start, from, level);
+            level = next;
+            run_start = from;
+        }
         prev_u = u;
     }
-    if (in_run)
-        stats.lit_pixels +=
-            detail::mark_segment(mask, p.width, p.height, window(run_start), window(u1));
+    emit(run_start, u1, level);
 }
 
 }  // namespace
 
-std::vector<std::uint8_t> reference_mask(std::span<const ReferenceInstance> instances,
-                                         const ReferenceView& view, const ReferenceOptions& options,
-                                         ReferenceStats* stats_out) {
+std::vector<VisibleSegment> reference_segments(std::span<const ReferenceInstance> instances,
+                                               const ReferenceView& view,
+                                               const ReferenceOptions& options,
+                                               ReferenceStats* stats_out) {
     check_inputs(instances, view, options);
     ReferenceStats stats;
     std::vector<FeatureEdge> edges;
@@ -146,12 +160,32 @@ std::vector<std::uint8_t> reference_mask(std::span<const ReferenceInstance> inst
     const detail::Projection proj = detail::Projection::of(view);
     const Visibility visible(bvh, proj, options, stats);
 
-    std::vector<std::uint8_t> mask(
-        static_cast<std::size_t>(view.width) * static_cast<std::size_t>(view.height), 0);
+    std::vector<VisibleSegment> segments;
     for (const FeatureEdge& f : edges) {
         const auto clipped = detail::clip_edge(f.a, f.b, proj);
-        if (clipped) draw_edge(*clipped, f, visible, proj, options, mask, stats);
+        if (clipped) split_edge(*clipped, f, visible, proj, options, segments, stats);
     }
+    if (stats_out) *stats_out = stats;
+    return segments;
+}
+
+std::size_t mark_segments(std::span<const VisibleSegment> segments, int width, int height,
+                          std::vector<std::uint8_t>& mask) {
+    std::size_t lit = 0;
+    for (const VisibleSegment& s : segments)
+        if (s.level == 0) lit += detail::mark_segment(mask, width, height, s.a, s.b);
+    return lit;
+}
+
+std::vector<std::uint8_t> reference_mask(std::span<const ReferenceInstance> instances,
+                                         const ReferenceView& view, const ReferenceOptions& options,
+                                         ReferenceStats* stats_out) {
+    ReferenceStats stats;
+    const std::vector<VisibleSegment> segments =
+        reference_segments(instances, view, options, &stats);
+    std::vector<std::uint8_t> mask(
+        static_cast<std::size_t>(view.width) * static_cast<std::size_t>(view.height), 0);
+    stats.lit_pixels = mark_segments(segments, view.width, view.height, mask);
     if (stats_out) *stats_out = stats;
     return mask;
 }

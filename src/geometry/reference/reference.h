@@ -44,6 +44,30 @@ struct ReferenceOptions {
     double samples_per_pixel = 4.0;  // visibility samples along each edge, per pixel of length
     int refine_steps = 8;            // bisection steps where visibility changes between samples
     double relative_epsilon = 1e-7;  // a hit at t >= 1 - eps (t = 1 at the point) does not hide
+    // Hidden lines too, by occlusion level, up to this level (0: visible lines only; at most
+    // kMaxOcclusionLevel, which then stands for "that many or more").
+    int hidden_levels = 0;
+};
+
+// A point's occlusion level: 0 when visible, else the number of surfaces facing the eye that
+// lie in front of it (at least 1: a hidden point is behind something), capped here.
+inline constexpr int kMaxOcclusionLevel = 3;
+
+// The kinds of feature line, as the geometry shader classifies them.
+enum class LineKind : std::uint8_t { crease, silhouette, boundary };
+
+// One visible stretch of a feature edge, split at its exact visibility changes: window
+// coordinates in pixels (OpenGL's: origin at the bottom-left, y up), on or just beyond the
+// viewport (the on-screen part, clipped to the viewport grown by 1 px).
+struct VisibleSegment {
+    glm::dvec2 a{0.0};
+    glm::dvec2 b{0.0};
+    LineKind kind = LineKind::crease;
+    std::uint32_t instance = 0;  // index into the instances given
+    std::uint8_t level = 0;      // occlusion level (0: visible); see hidden_levels
+    // Window pixels along the edge's on-screen projection from its first end to `a`: a dash
+    // pattern that starts there stays fixed to the edge as the camera moves.
+    double edge_offset_px = 0.0;
 };
 
 struct ReferenceStats {
@@ -53,6 +77,20 @@ struct ReferenceStats {
     std::size_t rays = 0;  // visibility queries
     std::size_t lit_pixels = 0;
 };
+
+// The visible stretches of every feature edge, in the order the edges are found, and with
+// options.hidden_levels > 0 the hidden ones too, split wherever the level changes. The mask
+// below is exactly the pixels the visible (level 0) segments cross.
+// Throws std::invalid_argument for a null mesh, a size below 1 or a bad view.
+std::vector<VisibleSegment> reference_segments(std::span<const ReferenceInstance> instances,
+                                               const ReferenceView& view,
+                                               const ReferenceOptions& options = {},
+                                               ReferenceStats* stats = nullptr);
+
+// Marks the pixels the visible (level 0) `segments` cross (the mask format below); returns
+// how many it lit.
+std::size_t mark_segments(std::span<const VisibleSegment> segments, int width, int height,
+                          std::vector<std::uint8_t>& mask);
 
 // The 8-bit mask (255 = lit), row 0 at the top, width * height bytes. Pixel (x, y) in OpenGL
 // window coordinates has its centre at (x + 0.5, y + 0.5) from the bottom-left.

@@ -130,4 +130,44 @@ bool TriangleBvh::any_hit(const glm::dvec3& origin, const glm::dvec3& dir, doubl
     return false;
 }
 
+int TriangleBvh::count_front_hits(const glm::dvec3& origin, const glm::dvec3& dir, double t_min,
+                                  double t_max, const ExcludedEdge& excluded, int cap) const {
+    if (nodes_.empty() || !(t_min <= t_max) || cap <= 0) return 0;
+    const glm::dvec3 inv_dir = 1.0 / dir;
+    std::array<std::uint32_t, 2 * kMaxDepth + 8> stack{};
+    std::size_t top = 0;
+    stack[top++] = 0;
+    std::vector<double> hits;  // t of each front-facing hit
+    // Enough distinct hits to reach the cap even if each surface is hit at a shared edge
+    // (twice) or a corner (a few times): stop collecting there.
+    const std::size_t enough = static_cast<std::size_t>(cap) * 8;
+    while (top > 0 && hits.size() < enough) {
+        const Node& n = nodes_[stack[--top]];
+        if (!hits_box(n.lo, n.hi, origin, inv_dir, t_min, t_max)) continue;
+        if (n.count == 0) {
+            const auto self = static_cast<std::uint32_t>(&n - nodes_.data());
+            stack[top++] = n.first;
+            stack[top++] = self + 1;
+            continue;
+        }
+        for (std::uint32_t i = n.first; i < n.first + n.count; ++i) {
+            const BvhTriangle& t = triangles_[i];
+            if (excluded_by(t, excluded)) continue;
+            const double hit = intersect(t, origin, dir);
+            if (!(hit >= t_min && hit <= t_max)) continue;
+            const glm::dvec3 normal = glm::cross(t.p1 - t.p0, t.p2 - t.p0);
+            if (glm::dot(normal, origin - t.p0) > 0.0) hits.push_back(hit);
+        }
+    }
+    std::sort(hits.begin(), hits.end());
+    int count = 0;
+    double last = -1.0;
+    for (const double h : hits) {
+        if (count > 0 && h - last <= 1e-9 * std::max(1.0, std::abs(h))) continue;
+        last = h;
+        if (++count >= cap) break;
+    }
+    return count;
+}
+
 }  // namespace bz::geo::detail

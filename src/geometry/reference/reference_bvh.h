@@ -29,6 +29,12 @@ class TriangleBvh {
     bool any_hit(const glm::dvec3& origin, const glm::dvec3& dir, double t_min, double t_max,
                  const ExcludedEdge& excluded) const;
 
+    // How many surfaces facing the origin the segment crosses for t in [t_min, t_max]: hits on
+    // non-excluded triangles that face the origin, those at the same t (a ray through a shared
+    // edge or corner) counted once. Stops counting at `cap`.
+    int count_front_hits(const glm::dvec3& origin, const glm::dvec3& dir, double t_min,
+                         double t_max, const ExcludedEdge& excluded, int cap) const;
+
     std::size_t size() const { return triangles_.size(); }
 
   private:

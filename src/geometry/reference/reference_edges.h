@@ -8,7 +8,7 @@
 
 namespace bz::geo::detail {
 
-enum class FeatureKind : std::uint8_t { crease, silhouette, boundary };
+using FeatureKind = LineKind;
 
 struct FeatureEdge {
     glm::dvec3 a{0.0};  // view space

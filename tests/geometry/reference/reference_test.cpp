@@ -291,3 +291,105 @@ TEST(ReferenceBvh, AnswersLikeBruteForce) {
 
 }  // namespace
 }  // namespace bz::geo
+
+namespace bz::geo {
+namespace {
+
+TEST(ReferenceSegments, CrossExactlyTheMasksPixelsAndSplitWhereHidden) {
+    // The bar behind the wall: its long edges split in two at the wall's sides.
+    const AdjacencyMesh bar = build_line_mesh(box({3.0, 0.1, 0.1}));
+    const AdjacencyMesh wall = build_line_mesh(box({1.0, 1.0, 0.05}));
+    const glm::dmat4 v = look({0.0, 0.0, 10.0});
+    const ReferenceInstance insts[] = {
+        {&bar, v * glm::translate(glm::dmat4(1.0), {0.0, 0.0, -1.0}), 0.5, true},
+        {&wall, v, 0.5, true}};
+    ReferenceStats stats;
+    const std::vector<VisibleSegment> segs = reference_segments(insts, view(), {}, &stats);
+    std::vector<std::uint8_t> m(static_cast<std::size_t>(kW * kH), 0);
+    const std::size_t marked = mark_segments(segs, kW, kH, m);
+    EXPECT_EQ(marked, lit(m));
+    EXPECT_EQ(m, reference_mask(insts, view()));
+    std::size_t bar_pieces = 0, wall_pieces = 0;
+    for (const VisibleSegment& s : segs) {
+        // The wall's edges along the view axis project to points: dots, not pieces.
+        if (glm::length(s.b - s.a) < 1e-9) continue;
+        (s.instance == 0 ? bar_pieces : wall_pieces) += 1;
+        EXPECT_TRUE(s.kind == LineKind::silhouette || s.kind == LineKind::crease);
+    }
+    EXPECT_EQ(wall_pieces, 4u);  // the wall's front square, whole
+    // Seen head on, the bar's outline is its front face: the two long edges show in two pieces
+    // each, one either side of the wall, and the two short end edges whole.
+    EXPECT_EQ(bar_pieces, 6u);
+    // No visible piece of the bar lies between the wall's sides on the wall's rows.
+    const auto p = detail::Projection::of(view());
+    const double left = p.window(p.clip(glm::dvec3(v * glm::dvec4(-1.0, 0.0, 0.05, 1.0)))).x;
+    const double right = p.window(p.clip(glm::dvec3(v * glm::dvec4(1.0, 0.0, 0.05, 1.0)))).x;
+    for (const VisibleSegment& s : segs) {
+        if (s.instance != 0) continue;
+        const double mid = 0.5 * (s.a.x + s.b.x);
+        EXPECT_FALSE(mid > left + 1.0 && mid < right - 1.0) << s.a.x << " .. " << s.b.x;
+    }
+}
+
+}  // namespace
+}  // namespace bz::geo
+
+namespace bz::geo {
+namespace {
+
+// A bar behind a cube behind a smaller cube, seen head on: the bar's front long edges are
+// visible beyond the big cube, at level 1 behind it alone and level 2 behind both.
+TEST(ReferenceSegments, OcclusionLevelsOfACubeBehindACubeBehindACube) {
+    const AdjacencyMesh bar = build_line_mesh(box({3.0, 0.5, 1.0}));
+    const AdjacencyMesh big = build_line_mesh(box({1.0, 1.0, 1.0}));
+    const AdjacencyMesh small = build_line_mesh(box({0.3, 0.3, 0.3}));
+    const glm::dmat4 v = look({0.0, 0.0, 10.0});
+    auto at = [&](double z) { return v * glm::translate(glm::dmat4(1.0), {0.0, 0.0, z}); };
+    const ReferenceInstance insts[] = {
+        {&bar, at(-4.0), 0.5, true}, {&big, at(0.0), 0.5, true}, {&small, at(4.0), 0.5, true}};
+    ReferenceOptions levels;
+    levels.hidden_levels = 3;
+    const std::vector<VisibleSegment> segs = reference_segments(insts, view(), levels);
+    // With hidden levels the visible segments, and so the mask, are unchanged.
+    std::vector<std::uint8_t> m(static_cast<std::size_t>(kW * kH), 0);
+    mark_segments(segs, kW, kH, m);
+    EXPECT_EQ(m, reference_mask(insts, view()));
+
+    const auto p = detail::Projection::of(view());
+    auto win = [&](glm::dvec3 w) { return p.window(p.clip(glm::dvec3(v * glm::dvec4(w, 1.0)))); };
+    const double cx = kW * 0.5;
+    const double big_half = win({1.0, 0.0, 1.0}).x - cx;    // the big cube's front face
+    const double small_half = win({0.3, 0.0, 4.3}).x - cx;  // the small cube's front face
+    const double top = win({0.0, 0.5, -3.0}).y;             // the bar's front face's top edge
+    int pieces[3] = {0, 0, 0};
+    for (const VisibleSegment& s : segs) {
+        if (s.instance != 0 || std::abs(s.a.y - top) > 0.3 || std::abs(s.b.y - top) > 0.3) continue;
+        if (std::abs(s.b.x - s.a.x) < 1.0) continue;
+        const double mid = std::abs(0.5 * (s.a.x + s.b.x) - cx);
+        const int want = mid < small_half ? 2 : (mid < big_half ? 1 : 0);
+        EXPECT_EQ(s.level, want) << "segment " << s.a.x << " .. " << s.b.x;
+        ASSERT_LE(s.level, 2);
+        ++pieces[s.level];
+        // Each piece ends at a cube's outline (or the bar's end), to within the bisection.
+        for (const double x : {s.a.x, s.b.x}) {
+            const double d = std::abs(x - cx);
+            const double off = std::min({std::abs(d - small_half), std::abs(d - big_half),
+                                         std::abs(d - (win({3.0, 0.5, -3.0}).x - cx))});
+            EXPECT_LT(off, 0.05) << "end " << x;
+        }
+    }
+    EXPECT_EQ(pieces[0], 2);  // left and right of the big cube
+    EXPECT_EQ(pieces[1], 2);  // behind the big cube only, either side of the small one
+    EXPECT_EQ(pieces[2], 1);  // behind both
+
+    // Without hidden levels, no hidden segment is returned; with levels capped at 1, the
+    // pieces behind both cubes are level 1.
+    for (const VisibleSegment& s : reference_segments(insts, view())) EXPECT_EQ(s.level, 0);
+    levels.hidden_levels = 1;
+    for (const VisibleSegment& s : reference_segments(insts, view(), levels)) EXPECT_LE(s.level, 1);
+    levels.hidden_levels = kMaxOcclusionLevel + 1;
+    EXPECT_THROW(reference_segments(insts, view(), levels), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace bz::geo

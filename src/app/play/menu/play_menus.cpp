@@ -148,6 +148,8 @@ std::string action_label(Action a) {
             return "START / SELECT";
         case Action::back:
             return "BACK / ERASE";
+        case Action::vector_screenshot:
+            return "SVG SCREENSHOT";
         default:
             break;
     }

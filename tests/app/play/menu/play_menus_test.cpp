@@ -118,7 +118,7 @@ TEST(PlayMenus, OptionsChangeTheSettingsAndAskToApplyThem) {
     EXPECT_EQ(f.settings.preset, "fast");  // wraps
     f.keys({MenuKey::down});
     f.keys({MenuKey::left});
-    EXPECT_EQ(f.settings.style, "halo");  // every style of the table, wrapping from the first
+    EXPECT_EQ(f.settings.style, "technical");  // every style of the table, wrapping from the first
     f.keys({MenuKey::down, MenuKey::right});
     EXPECT_EQ(f.settings.beam, "classic");
     f.keys({MenuKey::down, MenuKey::left});
