@@ -27,10 +27,13 @@ void mark_pixels(ivec2 lo, ivec2 hi) {
 // The screen pixels that can read texel `texel` of an image `factor` times smaller than the
 // screen through a bilinear fetch at their centres: pixel x samples at (x + 0.5) / factor -
 // 0.5 and reads the texels at floor of that and the next, so texel i is read by
-// (i - 0.5) factor - 0.5 <= x < (i + 1.5) factor - 0.5; one texel more on each side against
-// rounding gives [(i - 2) factor, (i + 3) factor - 1].
+// (i - 0.5) factor - 0.5 <= x < (i + 1.5) factor - 0.5, plus one pixel on each side against
+// the rounding of the fetch's coordinate: 10 pixels at a quarter-resolution bloom.
 void mark_bloom_texel(ivec2 texel, int factor) {
-    mark_pixels((texel - 2) * factor, (texel + 3) * factor - 1);
+    vec2 i = vec2(texel);
+    ivec2 lo = ivec2(ceil((i - 0.5) * float(factor) - 0.5)) - 1;
+    ivec2 hi = ivec2(ceil((i + 1.5) * float(factor) - 0.5));
+    mark_pixels(lo, hi);
 }
 
 // Whether an encoded bloom texel is stored as light in 8 bits (rounded to the nearest step;

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <set>
 #include <utility>
 #include <vector>
@@ -66,8 +67,10 @@ Tiles tiles_of_lit_pixels(const std::vector<float>& hdr) {
     return out;
 }
 
-// Every tile holding a pixel in [(i - 2) f, (i + 3) f - 1] of a non-zero texel i of the
-// finished bloom, `f` screen pixels per texel (lit_tiles.glsl's mark_bloom_texel).
+// Every tile holding a pixel that a bilinear fetch reading a non-zero texel i of the finished
+// bloom can be centred on, one pixel of margin included, `f` screen pixels per texel
+// (lit_tiles.glsl's mark_bloom_texel): x in [ceil((i - 0.5) f - 0.5) - 1, ceil((i + 1.5) f -
+// 0.5)], that is [4i - 3, 4i + 6] at a quarter-resolution bloom.
 Tiles tiles_reached_by_bloom(bz::render::Renderer& r) {
     glm::ivec2 size;
     const std::vector<std::uint8_t> bloom = r.read_bloom(&size);
@@ -79,10 +82,14 @@ Tiles tiles_reached_by_bloom(bz::render::Renderer& r) {
         for (int i = 0; i < size.x; ++i) {
             const std::size_t k = (static_cast<std::size_t>(j) * size.x + i) * 4;
             if (std::max({bloom[k], bloom[k + 1], bloom[k + 2]}) == 0) continue;
-            const int x0 = std::clamp((i - 2) * f, 0, kW - 1) / kT;
-            const int x1 = std::clamp((i + 3) * f - 1, 0, kW - 1) / kT;
-            const int y0 = std::clamp((j - 2) * f, 0, kH - 1) / kT;
-            const int y1 = std::clamp((j + 3) * f - 1, 0, kH - 1) / kT;
+            const auto lo = [f](int t) {
+                return static_cast<int>(std::ceil((t - 0.5) * f - 0.5)) - 1;
+            };
+            const auto hi = [f](int t) { return static_cast<int>(std::ceil((t + 1.5) * f - 0.5)); };
+            const int x0 = std::clamp(lo(i), 0, kW - 1) / kT;
+            const int x1 = std::clamp(hi(i), 0, kW - 1) / kT;
+            const int y0 = std::clamp(lo(j), 0, kH - 1) / kT;
+            const int y1 = std::clamp(hi(j), 0, kH - 1) / kT;
             for (int y = y0; y <= y1; ++y)
                 for (int x = x0; x <= x1; ++x) out.insert({x, y});
         }
