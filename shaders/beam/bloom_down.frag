@@ -7,15 +7,17 @@
 // lit (composite_tiles.vert over beam_tiles.glsl's marks; pass_bloom.cpp): a block reads only
 // its own texels, so every other block is exactly black, which a clear writes for free.
 // Positions come from gl_FragCoord, so both give the same texels.
+// The first level also marks the screen tile under each block of the beam image that holds
+// any light (lit_tiles.glsl; a filtered sum of non-negative texels is zero only if all are),
+// so that the sparse composite shades it even where the light stays under the threshold.
+#include "lit_tiles.glsl"
+
 uniform sampler2D u_source;
 uniform int u_factor;
 uniform vec2 u_inv_target;  // 1 / this target's size in texels
 uniform float u_threshold;  // peak-channel brightness where glow starts (0: everything glows)
 uniform float u_knee;       // half-width of the soft knee around the threshold
 layout(location = 0) out vec4 o_color;
-// The first level also marks where the beam image holds any light at all (the sparse
-// composite's tiles.comp): a sum of filtered non-negative texels is zero only if all are.
-layout(location = 1) out vec4 o_lit;
 
 vec3 box(vec2 uv) {
     if (u_factor == 1) return texture(u_source, uv).rgb;
@@ -40,6 +42,11 @@ vec3 above_threshold(vec3 c) {
 
 void main() {
     vec3 c = box(gl_FragCoord.xy * u_inv_target);
-    o_lit = vec4(max(c.r, max(c.g, c.b)) > 0.0 ? 1.0 : 0.0);
+#ifdef LIT_TILES
+    if (max(c.r, max(c.g, c.b)) > 0.0) {
+        ivec2 block = ivec2(gl_FragCoord.xy) * u_factor;
+        mark_pixels(block, block);
+    }
+#endif
     o_color = vec4(u_threshold > 0.0 ? above_threshold(c) : c, 1.0);
 }

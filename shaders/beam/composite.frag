@@ -5,18 +5,18 @@
 // polynomial per channel: the tone map uses one exp2 per pixel, and the gamma curve is a fit
 // made of two square roots (native instructions) instead of pow().
 // It draws either one full-screen triangle or, sparse, one quad per lit screen tile
-// (composite_tiles.vert); positions come from gl_FragCoord so both give the same pixels.
+// (lit_tiles.vert, from tile_list.comp's list); positions come from gl_FragCoord so both give the same pixels.
 // With PHOSPHOR it also advances the phosphor: u_lines is this frame's beam image, the
 // picture is max(beam, decayed history) (phosphor.glsl), updated in place for the next frame.
 #include "bloom_encoding.glsl"
 #ifdef PHOSPHOR
+#include "lit_tiles.glsl"
 #include "phosphor.glsl"
-#include "screen_tiles.glsl"
 // The picture, last frame's on entry. Each invocation reads and writes only its own pixel's
 // texel (one fragment per pixel), so in place is free of hazards.
 layout(rgba16f, binding = 0) uniform image2D u_picture;
-// Per screen tile: the new picture holds light there (cleared before; the sparse composite's
-// tiles.comp reads it next frame).
+// Per lit tile (lit_tiles.glsl): the new picture holds light there (cleared before; the next
+// frame's tile_list.comp reads it).
 layout(r8ui, binding = 1) uniform writeonly uimage2D u_picture_lit;
 #endif
 
@@ -53,7 +53,7 @@ void main() {
     vec4 picture = phosphor_picture(hdr, history);
     // A still dark pixel, or a still line, stores nothing.
     if (picture != history) imageStore(u_picture, px, picture);
-    if (phosphor_peak(picture.rgb) > 0.0) imageStore(u_picture_lit, px / kTileSize, uvec4(1u));
+    if (phosphor_peak(picture.rgb) > 0.0) imageStore(u_picture_lit, px / kLitTile, uvec4(1u));
     hdr = picture.rgb;
 #endif
     if (u_bloom_strength > 0.0) hdr += decode_bloom(texture(u_bloom, uv).rgb) * u_bloom_strength;

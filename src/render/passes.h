@@ -119,13 +119,21 @@ void pass_bloom(const PassContext& ctx, const gl::Texture2D& source,
                 const PhosphorStep* phosphor = nullptr);
 // The weight of one level of the bloom chain (never zero: the chain divides by it).
 float mip_weight(const std::vector<float>& weights, std::size_t level);
-// The screen tiles the sparse composite shades (after bloom; needs Targets::tiles).
+// The list of lit tiles the sparse composite shades (pass_tiles.cpp, after bloom; needs
+// Targets::lit_tiles): built from the marks the bloom made and, with the phosphor, the tiles
+// where last frame's picture held light.
 void pass_tiles(const PassContext& ctx);
 // Draws shaders/beam/composite_tiles.vert's quads over the tiles that `tiles` marks (R8UI, one
 // texel per kScreenTileSize square of a `screen`-pixel screen), read on texture unit `unit`,
-// with `program` in use: the sparse composite and the sparse first downsample.
+// with `program` in use: the sparse first downsample over the beam's tiles.
 void draw_tile_quads(const gl::Program& program, const gl::Texture2D& tiles, glm::ivec2 screen,
                      int unit);
+// With `program` in use (one built with LIT_TILES): binds Targets::lit_tiles for its marks,
+// or, with `mark` false, tells it to mark nothing (shaders/beam/lit_tiles.glsl).
+void bind_lit_tile_marks(const gl::Program& program, const Targets& targets, bool mark);
+// Draws shaders/beam/lit_tiles.vert's quads over the tiles pass_tiles listed (one indirect
+// draw), with `program` in use: the sparse composite.
+void draw_listed_tiles(const gl::Program& program, const Targets& targets, glm::ivec2 screen);
 // `bloom`: false draws the picture without glow (bloom_out is not read). With bloom and the
 // tiles of pass_tiles it shades only the lit tiles (RenderSettings::sparse_composite).
 // With `phosphor`, `picture` is this frame's beam image and the composite also updates the

@@ -28,6 +28,9 @@ gl::Program load_bloom_blur(const RenderSettings& settings, bool glow_persistenc
                                         "BLOOM_OFFSETS " + glsl_array(k.offsets),
                                         "BLOOM_WEIGHTS " + glsl_array(k.weights)};
     if (glow_persistence) defines.push_back("GLOW_PHOSPHOR 1");
+    // Its last direction marks the lit tiles (shaders/beam/lit_tiles.glsl).
+    defines.push_back("LIT_TILES 1");
+    defines.push_back("LIT_TILE_SIZE " + std::to_string(kLitTileSize));
     return gl::Program({{GL_VERTEX_SHADER, dir / "fullscreen.vert"},
                         {GL_FRAGMENT_SHADER, dir / "beam/bloom_blur.frag"}},
                        std::move(defines));
@@ -61,8 +64,11 @@ Programs load_programs(const RenderSettings& settings) {
         {stage(GL_VERTEX_SHADER, "hud/hud.vert"), stage(GL_GEOMETRY_SHADER, "hud/hud.geom"),
          stage(GL_FRAGMENT_SHADER, "hud/hud.frag")},
         beam_tiles);
+    // The passes that know where light is mark the composite's lit tiles (lit_tiles.glsl).
+    const std::string lit_tile_size = "LIT_TILE_SIZE " + std::to_string(kLitTileSize);
     p.bloom_down = gl::Program({stage(GL_VERTEX_SHADER, "fullscreen.vert"),
-                                stage(GL_FRAGMENT_SHADER, "beam/bloom_down.frag")});
+                                stage(GL_FRAGMENT_SHADER, "beam/bloom_down.frag")},
+                               {"LIT_TILES 1", lit_tile_size});
     p.bloom_blur = load_bloom_blur(settings, false);
     p.bloom_blur_glow = load_bloom_blur(settings, true);
     p.composite = gl::Program({stage(GL_VERTEX_SHADER, "fullscreen.vert"),
@@ -73,23 +79,24 @@ Programs load_programs(const RenderSettings& settings) {
             {stage(GL_VERTEX_SHADER, vertex), stage(GL_FRAGMENT_SHADER, "beam/composite.frag")},
             std::move(defines));
     };
-    p.composite_tiles = composite("beam/composite_tiles.vert", {tile_size});
+    p.composite_tiles = composite("beam/lit_tiles.vert", {lit_tile_size});
     p.bloom_down_tiles = gl::Program({stage(GL_VERTEX_SHADER, "beam/composite_tiles.vert"),
                                       stage(GL_FRAGMENT_SHADER, "beam/bloom_down.frag")},
-                                     {tile_size});
+                                     {tile_size, "LIT_TILES 1", lit_tile_size});
     for (std::size_t power_law = 0; power_law < 2; ++power_law) {
         const std::string decay = "POWER_LAW " + std::to_string(power_law);
         p.composite_phosphor[power_law] =
-            composite("fullscreen.vert", {tile_size, "PHOSPHOR 1", decay});
+            composite("fullscreen.vert", {lit_tile_size, "PHOSPHOR 1", decay});
         p.composite_tiles_phosphor[power_law] =
-            composite("beam/composite_tiles.vert", {tile_size, "PHOSPHOR 1", decay});
+            composite("beam/lit_tiles.vert", {lit_tile_size, "PHOSPHOR 1", decay});
     }
-    p.tiles = gl::Program({stage(GL_COMPUTE_SHADER, "beam/tiles.comp")}, {tile_size});
+    p.tile_list = gl::Program({stage(GL_COMPUTE_SHADER, "beam/tile_list.comp")}, {lit_tile_size});
     p.bloom_up = gl::Program({stage(GL_VERTEX_SHADER, "fullscreen.vert"),
-                              stage(GL_FRAGMENT_SHADER, "beam/bloom_up.frag")});
+                              stage(GL_FRAGMENT_SHADER, "beam/bloom_up.frag")},
+                             {"LIT_TILES 1", lit_tile_size});
     p.bloom_up_glow = gl::Program({stage(GL_VERTEX_SHADER, "fullscreen.vert"),
                                    stage(GL_FRAGMENT_SHADER, "beam/bloom_up.frag")},
-                                  {"GLOW_PHOSPHOR 1"});
+                                  {"GLOW_PHOSPHOR 1", "LIT_TILES 1", lit_tile_size});
     p.outline_prepass = gl::Program({stage(GL_VERTEX_SHADER, "styles/outline_prepass.vert"),
                                      stage(GL_FRAGMENT_SHADER, "styles/outline_prepass.frag")});
     p.image_outline = gl::Program({stage(GL_VERTEX_SHADER, "fullscreen.vert"),

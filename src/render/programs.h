@@ -22,13 +22,13 @@ struct Programs {
     gl::Program bloom_blur;
     gl::Program bloom_blur_glow;  // ... whose last direction keeps the glow's persistence
     gl::Program composite;
-    gl::Program composite_tiles;  // the same fragment stage over the lit screen tiles only
+    gl::Program composite_tiles;  // the same fragment stage over the listed lit tiles only
     // ... both advancing the phosphor (PHOSPHOR); [0] exponential, [1] power law (POWER_LAW):
     // the decay is compiled in, because llvmpipe runs a uniform branch's both sides per pixel
     // (about 0.5 ms at 1280x720).
     std::array<gl::Program, 2> composite_phosphor;
     std::array<gl::Program, 2> composite_tiles_phosphor;
-    gl::Program tiles;               // tiles.comp: which screen tiles are lit
+    gl::Program tile_list;           // tile_list.comp: the lit tiles the composite shades
     gl::Program bloom_up;            // one step up the bloom chain (BloomKind::mip_chain)
     gl::Program bloom_up_glow;       // ... whose last step keeps the glow's persistence
     gl::Program outline_prepass;     // image-space baseline: depth + face normals

@@ -324,6 +324,36 @@ std::vector<float> Renderer::read_picture_hdr() {
     return read_hdr(impl_->last_picture ? *impl_->last_picture : impl_->targets.lines);
 }
 
+std::vector<glm::ivec2> Renderer::read_lit_tiles() {
+    const Targets& t = impl_->targets;
+    if (!t.tiles_valid || !t.lit_tiles) return {};
+    const std::size_t capacity =
+        static_cast<std::size_t>(t.lit_tiles.width()) * t.lit_tiles.height();
+    std::vector<GLuint> words(4 + capacity);
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    glGetNamedBufferSubData(t.tile_list.id(), 0,
+                            static_cast<GLsizeiptr>(words.size() * sizeof(GLuint)), words.data());
+    const std::size_t count = std::min<std::size_t>(words[1], capacity);  // the instance count
+    std::vector<glm::ivec2> tiles;
+    for (std::size_t i = 0; i < count; ++i) {
+        const GLuint code = words[4 + i];
+        tiles.emplace_back(static_cast<int>(code & 0xffffu), static_cast<int>(code >> 16));
+    }
+    std::sort(tiles.begin(), tiles.end(),
+              [](glm::ivec2 a, glm::ivec2 b) { return a.y != b.y ? a.y < b.y : a.x < b.x; });
+    return tiles;
+}
+
+std::vector<std::uint8_t> Renderer::read_bloom(glm::ivec2* size) {
+    const gl::Texture2D& bloom = impl_->targets.bloom_out;
+    *size = glm::ivec2(bloom.width(), bloom.height());
+    std::vector<std::uint8_t> out(static_cast<std::size_t>(size->x) * size->y * 4);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glGetTextureImage(bloom.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, static_cast<GLsizei>(out.size()),
+                      out.data());
+    return out;
+}
+
 std::vector<float> Renderer::read_hdr(const gl::Texture2D& texture) {
     Impl& m = *impl_;
     const std::size_t row = static_cast<std::size_t>(m.width) * 4;

@@ -69,6 +69,14 @@ class Renderer {
     // The picture of the last render() as bloom and composite saw it: the lines target, or,
     // with phosphor persistence on, this frame's lines over the decayed earlier pictures.
     std::vector<float> read_picture_hdr();
+    // The screen tiles (kLitTileSize squares, in GL's order: tile (0, 0) holds pixel row 0 at
+    // the bottom) the last render()'s sparse composite shaded, sorted by row, then column;
+    // empty when it composited every pixel (RenderSettings::sparse_composite off, no bloom, or
+    // a size the bloom does not divide).
+    std::vector<glm::ivec2> read_lit_tiles();
+    // The last render()'s finished bloom, RGBA8 sqrt-encoded (shaders/beam/bloom_encoding.glsl)
+    // at the bloom resolution, in GL's order (row 0 at the bottom), with its size.
+    std::vector<std::uint8_t> read_bloom(glm::ivec2* size);
 
     // Recompiles every shader from shaders/. On error keeps the old programs and returns false
     // with the message (file:line:col) in *error.

@@ -19,9 +19,14 @@ Targets make_targets(int width, int height, const RenderSettings& s) {
     t.bloom_out = gl::Texture2D(bw, bh, GL_RGBA8, gl::Filter::linear);
     const int tiles_x = (width + kScreenTileSize - 1) / kScreenTileSize;
     const int tiles_y = (height + kScreenTileSize - 1) / kScreenTileSize;
-    t.lit = gl::Texture2D(bw, bh, GL_R8, gl::Filter::nearest);
-    if (width % f == 0 && height % f == 0)
-        t.tiles = gl::Texture2D(tiles_x, tiles_y, GL_R8UI, gl::Filter::nearest);
+    const int lit_x = (width + kLitTileSize - 1) / kLitTileSize;
+    const int lit_y = (height + kLitTileSize - 1) / kLitTileSize;
+    if (width % f == 0 && height % f == 0) {
+        t.lit_tiles = gl::Texture2D(lit_x, lit_y, GL_R8UI, gl::Filter::nearest);
+        // The draw command (4 words), then one word per tile at most.
+        const std::size_t words = 4 + static_cast<std::size_t>(lit_x) * lit_y;
+        t.tile_list.set_data(nullptr, words * sizeof(GLuint), GL_DYNAMIC_DRAW);
+    }
     t.beam_tiles = gl::Texture2D(tiles_x, tiles_y, GL_R8UI, gl::Filter::nearest);
     t.mask = gl::Texture2D(width, height, GL_R8, gl::Filter::nearest);
     t.output = gl::Texture2D(width, height, GL_RGBA8, gl::Filter::nearest);
@@ -54,12 +59,12 @@ Targets make_targets(int width, int height, const RenderSettings& s) {
     }
     // The bloom's first level: bloom_a, or the chain's first.
     const gl::Texture2D& first_level = t.bloom_mips.empty() ? t.bloom_a : t.bloom_mips[0];
-    t.first_down_fbo = gl::Framebuffer({&first_level, &t.lit}, nullptr);
+    t.first_down_fbo = gl::Framebuffer({&first_level}, nullptr);
     if (s.beam.phosphor != PhosphorDecay::off) {
         // Everything starts black, with no tile lit.
         t.phosphor = gl::Texture2D(width, height, GL_RGBA16F, gl::Filter::linear);
         glClearTexImage(t.phosphor.id(), 0, GL_RGBA, GL_FLOAT, nullptr);
-        t.picture_lit = gl::Texture2D(tiles_x, tiles_y, GL_R8UI, gl::Filter::nearest);
+        t.picture_lit = gl::Texture2D(lit_x, lit_y, GL_R8UI, gl::Filter::nearest);
         glClearTexImage(t.picture_lit.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_BYTE, nullptr);
         glClearTexImage(t.bloom_out.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
         t.bloom_last = gl::Texture2D(bw, bh, GL_RGBA8, gl::Filter::linear);

@@ -3,13 +3,20 @@
 #include <array>
 #include <vector>
 
+#include "gl/buffer.h"
 #include "gl/framebuffer.h"
 #include "render/settings.h"
 
 namespace bz::render {
 
-// The sparse composite's screen tiles, in pixels (shaders/beam/screen_tiles.glsl gets it too).
+// The beam's screen tiles, in pixels (shaders/beam/screen_tiles.glsl gets it too): where the
+// line and HUD quads may light, for the bloom's sparse first downsample.
 inline constexpr int kScreenTileSize = 32;
+// The sparse composite's lit tiles, in pixels (shaders/beam/lit_tiles.glsl gets it too). A
+// multiple of every bloom divisor (a downsample block lies in one tile). Smaller tiles follow
+// a thin line's glow more closely; the list keeps the vertex work to the lit ones.
+inline constexpr int kLitTileSize = 16;
+static_assert(kLitTileSize % static_cast<int>(BloomResolution::quarter) == 0);
 
 struct Targets {
     int width = 0;
@@ -43,28 +50,29 @@ struct Targets {
     // place by the composite, which loads each pixel's own texel and stores the new value only
     // where it changed. Only when BeamSettings::phosphor is on.
     gl::Texture2D phosphor;
-    // Which screen tiles of the picture hold light (R8UI): read by tiles.comp (those must be
-    // decayed this frame), then cleared and marked again by the composite as it stores.
+    // Which lit tiles of the picture hold light (R8UI, like lit_tiles): read by tile_list.comp
+    // (those must be decayed this frame), then cleared and marked again by the composite.
     gl::Texture2D picture_lit;
     // Last frame's finished bloom (like bloom_out, which it swaps with each frame): the glow
     // persists with the phosphor (shaders/beam/glow_persistence.glsl).
     gl::Texture2D bloom_last;
     gl::Framebuffer bloom_last_fbo;
     bool glow_history_valid = true;  // false after a phosphor frame drawn without bloom
-    // Sparse composite (pass_tiles.cpp): where the beam image holds light, one R8 texel per
-    // bloom texel (written by the bloom's first downsample), and the screen tiles to shade
-    // (R8UI, one texel per kScreenTileSize square). Tiles only where the bloom resolution
-    // divides the size, so that the downsample's blocks cover every pixel exactly.
-    gl::Texture2D lit;
-    gl::Texture2D tiles;
+    // Sparse composite (pass_tiles.cpp, shaders/beam/lit_tiles.glsl): the lit-tile marks (R8UI,
+    // one texel per kLitTileSize square), cleared by the bloom, marked by its first downsample
+    // (beam light) and its last step (glow); and the list of tiles to shade that tile_list.comp
+    // builds from them, behind the indirect draw command it heads. Only where the bloom
+    // resolution divides the size, so that the downsample's blocks cover every pixel exactly.
+    gl::Texture2D lit_tiles;
+    gl::Buffer tile_list;
     // The screen tiles the beam lights (R8UI, like `tiles`): cleared by the line pass, marked by
     // the line and HUD fragments (shaders/beam/beam_tiles.glsl), and valid until the bloom's
     // first downsample has read them (a frame whose lines come from elsewhere, the image-space
     // outline, leaves them invalid: the downsample then reads every pixel).
     gl::Texture2D beam_tiles;
     bool beam_tiles_valid = false;
-    bool tiles_valid = false;  // they describe the current bloom (pass_tiles ran on it)
-    // The bloom's first level and `lit`.
+    bool tiles_valid = false;  // the list describes the current bloom (pass_tiles ran on it)
+    // The bloom's first level.
     gl::Framebuffer first_down_fbo;
 };
 

@@ -7,17 +7,27 @@ namespace bz::render {
 
 namespace {
 
+// Whether this frame's bloom marks the lit tiles (Targets::lit_tiles) for the sparse composite.
+bool marks_tiles(const PassContext& ctx) {
+    return ctx.targets.lit_tiles && ctx.settings.sparse_composite;
+}
+
 // The first downsample, from this frame's beam image into the first level, also marking the
-// lit blocks (Targets::lit). With the beam's tile marks (Targets::beam_tiles), only under the
-// marked tiles: a block reads only its own pixels, so every other block is black, which the
-// clear writes; on llvmpipe this pass reading every pixel cost about 2 ms at 1280x720.
+// lit-tile under each lit block (shaders/beam/lit_tiles.glsl; the marks are cleared first).
+// With the beam's tile marks (Targets::beam_tiles), only under the marked tiles: a block reads
+// only its own pixels, so every other block is black, which the clear writes; on llvmpipe
+// this pass reading every pixel cost about 2 ms at 1280x720.
 void first_downsample(const PassContext& ctx, const gl::Texture2D& source, float threshold) {
     Targets& t = ctx.targets;
-    const bool sparse = t.beam_tiles_valid && t.tiles && ctx.settings.sparse_composite;
+    const bool mark = marks_tiles(ctx);
+    const bool sparse = t.beam_tiles_valid && mark;
     t.beam_tiles_valid = false;  // read once: the next frame's line pass marks afresh
+    t.tiles_valid = false;       // the list is built again from this bloom's marks
+    if (mark) glClearTexImage(t.lit_tiles.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_BYTE, nullptr);
     t.first_down_fbo.bind();
     const gl::Program& down = sparse ? ctx.programs.bloom_down_tiles : ctx.programs.bloom_down;
     down.use();
+    bind_lit_tile_marks(down, t, mark);
     down.set("u_inv_target", 1.0f / glm::vec2(t.first_down_fbo.width(), t.first_down_fbo.height()));
     down.set("u_source", 0);
     down.set("u_factor", static_cast<int>(ctx.settings.bloom_resolution));
@@ -50,6 +60,12 @@ const gl::Program& last_step(const PassContext& ctx, const gl::Program& plain,
     return glow;
 }
 
+// The last step writes the finished bloom and marks the lit tiles its light reaches.
+void set_last_step_marks(const PassContext& ctx, const gl::Program& last) {
+    last.set("u_factor", static_cast<int>(ctx.settings.bloom_resolution));
+    bind_lit_tile_marks(last, ctx.targets, marks_tiles(ctx));
+}
+
 // Downsample to the bloom resolution, then a separable linear-sampled Gaussian: horizontal
 // into bloom_b, vertical into bloom_out, encoded in 8 bits for the composite's cheap fetch.
 void gaussian_bloom(const PassContext& ctx, const gl::Texture2D& source,
@@ -73,6 +89,7 @@ void gaussian_bloom(const PassContext& ctx, const gl::Texture2D& source,
     last.set("u_encode", 1);
     last.set("u_floor", ctx.settings.beam.bloom_floor);
     last.set("u_direction", glm::vec2(0.0f, 1.0f));
+    set_last_step_marks(ctx, last);
     t.bloom_b.bind(0);
     glDrawArrays(GL_TRIANGLES, 0, 3);
 }
@@ -89,6 +106,7 @@ void mip_chain_bloom(const PassContext& ctx, const gl::Texture2D& source,
     first_downsample(ctx, source, ctx.settings.beam.bloom_threshold);
     const gl::Program& down = ctx.programs.bloom_down;
     down.use();
+    bind_lit_tile_marks(down, t, false);  // only the first level's blocks are screen pixels
     down.set("u_source", 0);
     down.set("u_factor", 2);
     down.set("u_threshold", 0.0f);
@@ -126,6 +144,7 @@ void mip_chain_bloom(const PassContext& ctx, const gl::Texture2D& source,
     last.set("u_floor", ctx.settings.beam.bloom_floor);
     last.set("u_ratio", n > 1 ? mip_weight(w, 1) / mip_weight(w, 0) : 0.0f);
     last.set("u_weight", mip_weight(w, 0) / total);
+    set_last_step_marks(ctx, last);
     t.bloom_mips[n > 1 ? 1 : 0].bind(0);
     t.bloom_mips[0].bind(1);
     glDrawArrays(GL_TRIANGLES, 0, 3);

@@ -4,9 +4,12 @@ namespace bz::render {
 
 // The picture (lines + HUD, after phosphor) plus bloom, tone-mapped and gamma-encoded into the
 // target (the window or output image), optionally through Battlezone's colour overlay.
-// With the bloom's lit tiles (pass_tiles) it is sparse: the target is cleared to black, which
-// is what an unlit pixel composites to exactly, and only the lit tiles are shaded; on
-// llvmpipe a full-screen pass costs per pixel even where it writes black.
+// With the list of lit tiles (pass_tiles) it is sparse: the target is cleared to black, which
+// is what an unlit pixel composites to exactly, and only the listed tiles are shaded (one
+// indirect draw); on llvmpipe a full-screen pass costs per pixel even where it writes black.
+// Reads: the picture, Targets::bloom_out, sparse Targets::tile_list; with the phosphor
+// Targets::phosphor. Writes: the target; with the phosphor Targets::phosphor (in place) and
+// Targets::picture_lit (cleared, then marked).
 // With the phosphor it also updates the picture (phosphor.glsl) in place: each invocation loads
 // its own pixel's texel and stores it only where the value changed, so there is no hazard
 // between invocations and a dark or unchanged pixel costs no store.
@@ -36,7 +39,7 @@ void pass_composite(const PassContext& ctx, const gl::Texture2D& picture, bool b
     if (phosphor) {
         set_phosphor_uniforms(p, *phosphor);
         glBindImageTexture(0, t.phosphor.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA16F);
-        // tiles.comp has read last frame's marks; this frame's composite marks them afresh.
+        // tile_list.comp has read last frame's marks; this frame's composite marks them afresh.
         glClearTexImage(t.picture_lit.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_BYTE, nullptr);
         glBindImageTexture(1, t.picture_lit.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R8UI);
     }
@@ -46,10 +49,10 @@ void pass_composite(const PassContext& ctx, const gl::Texture2D& picture, bool b
     } else {
         glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
         glClear(GL_COLOR_BUFFER_BIT);
-        draw_tile_quads(p, t.tiles, glm::ivec2(width, height), 2);
+        draw_listed_tiles(p, t, glm::ivec2(width, height));
     }
     // The picture is loaded as an image next frame, shown as a texture by held frames and read
-    // back by tests; its lit tiles are read as a texture by next frame's tiles.comp.
+    // back by tests; its lit tiles are read as a texture by next frame's tile_list.comp.
     if (phosphor) {
         glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT |
                         GL_TEXTURE_UPDATE_BARRIER_BIT);

@@ -2,11 +2,6 @@
 
 namespace bz::render {
 
-// Which screen tiles the sparse composite shades (shaders/beam/tiles.comp): those under lit
-// picture blocks (marked by the bloom's first downsample) or under non-zero finished bloom.
-// With the phosphor, also those where the picture held light last frame (Targets::picture_lit):
-// the composite must decay them, and every other tile of the picture is exactly black.
-// One invocation per tile; the composite reads the result in its vertex stage.
 void draw_tile_quads(const gl::Program& program, const gl::Texture2D& tiles, glm::ivec2 screen,
                      int unit) {
     program.set("u_tiles", unit);
@@ -15,27 +10,49 @@ void draw_tile_quads(const gl::Program& program, const gl::Texture2D& tiles, glm
     glDrawArraysInstanced(GL_TRIANGLES, 0, 6, tiles.width() * tiles.height());
 }
 
+void bind_lit_tile_marks(const gl::Program& program, const Targets& targets, bool mark) {
+    program.set("u_mark_tiles", mark ? 1 : 0);
+    if (mark) {
+        glBindImageTexture(2, targets.lit_tiles.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R8UI);
+    }
+}
+
+// The list of tiles the sparse composite shades (shaders/beam/tile_list.comp).
+// Reads: Targets::lit_tiles (marked this frame by the bloom's first downsample and last step),
+// with the phosphor Targets::picture_lit (marked by last frame's composite).
+// Writes: Targets::tile_list, the indirect draw command and the tiles after it.
+// One invocation per tile reading one mark or two: it reads no image's texels, so it costs the
+// same on any frame, a few thousand invocations at 1280x720.
 void pass_tiles(const PassContext& ctx) {
     Targets& t = ctx.targets;
-    if (!t.tiles) return;
+    if (!t.lit_tiles) return;
     const PhosphorStep* phosphor =
         ctx.picture && ctx.picture->phosphor ? &*ctx.picture->phosphor : nullptr;
-    const gl::Texture2D& tiles = t.tiles;
-    const gl::Program& p = ctx.programs.tiles;
-    p.use();
-    p.set("u_occupancy", 0);
-    p.set("u_bloom", 1);
-    p.set("u_screen", glm::ivec2(t.width, t.height));
-    p.set("u_phosphor", phosphor ? 1 : 0);
-    p.set("u_picture_lit", 2);
-    t.lit.bind(0);
-    t.bloom_out.bind(1);
-    if (phosphor) t.picture_lit.bind(2);
-    glBindImageTexture(0, tiles.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R8UI);
-    glDispatchCompute(static_cast<GLuint>((tiles.width() + 7) / 8),
-                      static_cast<GLuint>((tiles.height() + 7) / 8), 1);
+    // The lit-tile marks were written by fragment stages as images.
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+    const GLuint command[4] = {6, 0, 0, 0};  // 6 vertices per tile, no tile yet
+    glNamedBufferSubData(t.tile_list.id(), 0, sizeof(command), command);
+    const gl::Program& p = ctx.programs.tile_list;
+    p.use();
+    p.set("u_marks", 0);
+    p.set("u_picture_lit", 1);
+    p.set("u_phosphor", phosphor ? 1 : 0);
+    t.lit_tiles.bind(0);
+    if (phosphor) t.picture_lit.bind(1);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, t.tile_list.id());
+    const GLuint tiles = static_cast<GLuint>(t.lit_tiles.width() * t.lit_tiles.height());
+    glDispatchCompute((tiles + 63) / 64, 1, 1);
+    // The composite reads the list as its draw command and in its vertex stage.
+    glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
     t.tiles_valid = true;
+}
+
+void draw_listed_tiles(const gl::Program& program, const Targets& targets, glm::ivec2 screen) {
+    program.set("u_screen", screen);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, targets.tile_list.id());
+    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, targets.tile_list.id());
+    glDrawArraysIndirect(GL_TRIANGLES, nullptr);
+    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
 }
 
 }  // namespace bz::render
