@@ -8,14 +8,15 @@
 #include <memory>
 #include <string>
 
-#include "app/commands/cli_args.h"
 #include "app/commands/commands.h"
 #include "app/play/menu/level_list.h"
 #include "app/play/play_look.h"
 #include "app/play/play_loop.h"
-#include "app/play/play_options.h"
 #include "app/play/play_sessions.h"
+#include "app/play/play_usage.h"
 #include "app/replay_level.h"
+#include "cli/cli_args.h"
+#include "cli/play_args.h"
 #include "core/error.h"
 #include "core/interrupt.h"
 #include "core/io/output_path.h"
