@@ -153,7 +153,7 @@ struct Play {
         platform::Audio audio(log, settings.volume, settings.mute);
         platform::Gamepads gamepads(log, data_dir() / "gamecontrollerdb" / "gamecontrollerdb.txt",
                                     paths.gamepad_db);
-        platform::Input input(settings.keys, settings.gamepad);
+        platform::Input input(settings.keys, settings.gamepad, settings.buttons);
         const scene::VectorFont font = scene::VectorFont::load_default();
         PlayOverlay overlay(font);
 

@@ -213,7 +213,11 @@ class Loop {
         const bool open = menus_.open();
         std::vector<menu::Request> requests;
         if (menus_.capturing()) {
-            if (const auto key = p_.input.take_captured()) requests = menus_.captured(*key);
+            if (const auto key = p_.input.take_captured()) {
+                requests = menus_.captured(*key);
+            } else if (const auto button = p_.input.take_captured_button()) {
+                requests = menus_.captured_button(*button);
+            }
         } else if (p_.input.capturing()) {
             p_.input.cancel_capture();  // the menu closed under it
         }
@@ -328,6 +332,7 @@ class Loop {
                                    arcade_rules(s.arcade));
         }
         p_.input.set_bindings(s.keys);
+        p_.input.set_pad_bindings(s.buttons);
         p_.input.set_gamepad_mode(s.gamepad);
         session_.set_text_scale(s.ui_scale);
         if (s.keys != applied_.keys) session_.keys_changed(s.keys);

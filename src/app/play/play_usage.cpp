@@ -69,7 +69,9 @@ std::string play_usage(const std::string& settings_path, const std::string& high
            "Menus: arrows choose, Enter selects, Backspace or Esc back; the mouse works too\n"
            "(hover selects, click chooses, the wheel scrolls, the right button goes back).\n"
            "Game controllers: sticks drive the treads (or the left stick alone: gamepad =\n"
-           "\"drive\" in the settings), triggers, A or R1 fire, Start pauses or starts, B back.\n"
+           "\"drive\" in the settings), triggers, A or R1 fire, Start pauses or starts, B back;\n"
+           "buttons are rebound under Options > Keys too (press a pad button), and the menus\n"
+           "always take the d-pad, A, B and Start.\n"
            "\n"
            "settings:    " +
            settings_path +
