@@ -44,6 +44,7 @@ class Loop {
         }
         applied_ = p_.settings;
         session_.set_text_scale(p_.settings.ui_scale);
+        p_.overlay.set_text_scale(p_.settings.ui_scale);
         look_ = look_now();
         p_.log.info("look: " + look_.summary);
         int w = 0, h = 0;
@@ -335,6 +336,7 @@ class Loop {
         p_.input.set_pad_bindings(s.buttons);
         p_.input.set_gamepad_mode(s.gamepad);
         session_.set_text_scale(s.ui_scale);
+        p_.overlay.set_text_scale(s.ui_scale);
         if (s.keys != applied_.keys) session_.keys_changed(s.keys);
         // A choice made in the menu is the player's say for this run, like the command line.
         if (p_.look_sources &&
