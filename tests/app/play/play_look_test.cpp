@@ -44,10 +44,11 @@ TEST(PlayLook, LevelStyleBeatsTheSettingsFileButNotTheCommandLine) {
     PlayLook look = choose_look(s, &lv);
     EXPECT_EQ(look.style, scene::LineStyle::arcade);
     EXPECT_EQ(look.render.preset, "fast") << "the player's machine decides the speed";
-    EXPECT_EQ(look.summary,
-              "style vector-xray (level), preset fast (settings file), beam mame (default), line width "
-              "3 px (level), "
-              "crease angle 45 deg (level), bloom strength 0.5 (level)");
+    EXPECT_EQ(
+        look.summary,
+        "style vector-xray (level), preset fast (settings file), beam mame (default), line width "
+        "3 px (level), "
+        "crease angle 45 deg (level), bloom strength 0.5 (level)");
 
     s.cli_style = "occluded";
     s.cli_preset = "balanced";
