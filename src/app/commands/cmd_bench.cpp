@@ -73,9 +73,9 @@ BenchFrames simulate(BenchScene& scene, const BenchOptions& o, double aspect) {
                      bf.frames.size() - static_cast<std::size_t>(o.warmup), o.frames);
     }
     if (static_cast<int>(bf.frames.size()) <= o.warmup) {
-        throw UserError(o.replay + ": the replay has " + std::to_string(bf.frames.size()) +
-                        " ticks, not more than the " + std::to_string(o.warmup) +
-                        " warm-up frames");
+        throw UserError(printable(o.replay) + ": the replay has " +
+                        std::to_string(bf.frames.size()) + " ticks, not more than the " +
+                        std::to_string(o.warmup) + " warm-up frames");
     }
     return bf;
 }
@@ -87,7 +87,8 @@ void write_text(const fs::path& p, const std::string& s) {
 int run_accuracy_mode(const BenchOptions& o) {
     std::error_code ec;
     fs::create_directory(o.out, ec);  // the folder itself, never missing parents
-    if (ec) throw UserError(o.out + ": cannot create the output directory: " + ec.message());
+    if (ec)
+        throw UserError(printable(o.out) + ": cannot create the output directory: " + ec.message());
     auto context = make_headless_context();
     check_image_size(*context, "--size", o.size.x, o.size.y);
     const gl::TimingMethod timing = pick_timing(o.timing, *context);
@@ -189,7 +190,8 @@ int run(const BenchOptions& o) {
 
     std::error_code ec;
     fs::create_directory(o.out, ec);  // the folder itself, never missing parents
-    if (ec) throw UserError(o.out + ": cannot create the output directory: " + ec.message());
+    if (ec)
+        throw UserError(printable(o.out) + ": cannot create the output directory: " + ec.message());
 
     auto context = make_headless_context();
     check_image_size(*context, "--size", o.size.x, o.size.y);

@@ -33,8 +33,8 @@ int cmd_compare(Args args) {
     const Image test = read_png(o.test, 1);
     const Image ref = read_png(o.ref, 1);
     if (test.width != ref.width || test.height != ref.height) {
-        throw UserError(o.test + " is " + std::to_string(test.width) + "x" +
-                        std::to_string(test.height) + " but " + o.ref + " is " +
+        throw UserError(printable(o.test) + " is " + std::to_string(test.width) + "x" +
+                        std::to_string(test.height) + " but " + printable(o.ref) + " is " +
                         std::to_string(ref.width) + "x" + std::to_string(ref.height) +
                         ": masks must have the same size");
     }
