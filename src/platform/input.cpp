@@ -55,7 +55,8 @@ InputState pad_to_treads(const PadAxes& in, GamepadMode mode) {
     return s;
 }
 
-Input::Input(Bindings bindings, GamepadMode mode) : bindings_(std::move(bindings)), mode_(mode) {}
+Input::Input(Bindings bindings, GamepadMode mode, PadBindings buttons)
+    : bindings_(std::move(bindings)), mode_(mode), buttons_(std::move(buttons)) {}
 
 bool Input::key_held(int scancode) const {
     return scancode >= 0 && scancode < static_cast<int>(keys_.size()) &&
@@ -65,6 +66,13 @@ bool Input::key_held(int scancode) const {
 bool Input::action_held(Action a) const {
     for (const auto& k : bindings_[static_cast<std::size_t>(a)]) {
         if (key_held(k.scancode) && (k.mods & ~mods_) == 0) return true;
+    }
+    for (const int b : buttons_[static_cast<std::size_t>(a)]) {
+        for (const auto& [id, pad] : pads_) {
+            if (b >= 0 && b < static_cast<int>(pad.buttons.size()) &&
+                pad.buttons[static_cast<std::size_t>(b)])
+                return true;
+        }
     }
     return false;
 }
@@ -181,31 +189,35 @@ void Input::begin_capture() {
     capturing_ = true;
     capture_modifier_ = -1;
     captured_.reset();
+    captured_button_.reset();
 }
 
 std::optional<KeyBinding> Input::take_captured() {
     return std::exchange(captured_, std::nullopt);
 }
 
+std::optional<int> Input::take_captured_button() {
+    return std::exchange(captured_button_, std::nullopt);
+}
+
 void Input::pad_button(const SDL_Event& e) {
     const bool down = e.type == SDL_CONTROLLERBUTTONDOWN;
-    if (e.cbutton.button < 32) pads_[e.cbutton.which].buttons[e.cbutton.button] = down;
+    const int button = e.cbutton.button;
+    if (button < 32) pads_[e.cbutton.which].buttons[static_cast<std::size_t>(button)] = down;
     if (!down) return;
-    switch (e.cbutton.button) {
+    if (capturing_) {  // the keys page binds this button; it does nothing else now
+        captured_button_ = button;
+        capturing_ = false;
+        return;
+    }
+    // The menus answer to the same buttons whatever is bound, so no binding locks them.
+    switch (button) {
         case SDL_CONTROLLER_BUTTON_START:
-            // Start pauses in play and starts from the title; the game knows which.
-            pressed_.push_back(Action::pause);
-            pressed_.push_back(Action::start);
-            menu(MenuKey::confirm);
-            break;
         case SDL_CONTROLLER_BUTTON_A:
-        case SDL_CONTROLLER_BUTTON_RIGHTSHOULDER:
-            latches_[latch_fire].pending = true;
-            if (e.cbutton.button == SDL_CONTROLLER_BUTTON_A) menu(MenuKey::confirm);
+            menu(MenuKey::confirm);
             break;
         case SDL_CONTROLLER_BUTTON_B:
         case SDL_CONTROLLER_BUTTON_BACK:
-            pressed_.push_back(Action::back);
             menu(MenuKey::back);
             break;
         case SDL_CONTROLLER_BUTTON_DPAD_UP:
@@ -226,6 +238,17 @@ void Input::pad_button(const SDL_Event& e) {
             break;
         default:
             break;
+    }
+    // The game's actions follow the bindings: a held action is latched so a tap within one
+    // tick still counts; a pressed one is queued once.
+    for (std::size_t i = 0; i < kActionCount; ++i) {
+        const auto& bound = buttons_[i];
+        if (std::find(bound.begin(), bound.end(), button) == bound.end()) continue;
+        const auto a = static_cast<Action>(i);
+        if (is_held_action(a))
+            latch_action(a);
+        else
+            pressed_.push_back(a);
     }
 }
 
@@ -322,8 +345,7 @@ InputState Input::state() const {
         const InputState p = pad_to_treads(pad.axes, mode_);
         left += p.left_tread;
         right += p.right_tread;
-        fire = fire || p.fire || pad.buttons[SDL_CONTROLLER_BUTTON_A] ||
-               pad.buttons[SDL_CONTROLLER_BUTTON_RIGHTSHOULDER];
+        fire = fire || p.fire;  // the triggers; fire's buttons count in action_held
     }
     out.left_tread = std::clamp(left, -1.0f, 1.0f);
     out.right_tread = std::clamp(right, -1.0f, 1.0f);

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "platform/bindings.h"
+#include "platform/pad_bindings.h"
 
 union SDL_Event;
 
@@ -44,7 +45,8 @@ InputState pad_to_treads(const PadAxes& axes, GamepadMode mode);
 
 class Input {
   public:
-    explicit Input(Bindings bindings = default_bindings(), GamepadMode mode = GamepadMode::tank);
+    explicit Input(Bindings bindings = default_bindings(), GamepadMode mode = GamepadMode::tank,
+                   PadBindings buttons = default_pad_bindings());
 
     // Feeds one event; one-shot actions it triggers are queued for take_pressed().
     void handle_event(const SDL_Event& event);
@@ -66,10 +68,14 @@ class Input {
     void cancel_capture() { capturing_ = false; }
     bool capturing() const { return capturing_; }
     std::optional<KeyBinding> take_captured();
+    // A gamepad button pressed while capturing is kept here instead (take_captured() then gives
+    // nothing): the keys page binds it to the action as a button.
+    std::optional<int> take_captured_button();
     static constexpr KeyBinding kCaptureCancelled{-1, kModNone};
 
     bool key_held(int scancode) const;  // raw keys, for the --edit free-fly camera
     void set_bindings(Bindings b) { bindings_ = std::move(b); }
+    void set_pad_bindings(PadBindings b) { buttons_ = std::move(b); }
     void set_gamepad_mode(GamepadMode m) { mode_ = m; }
     // Forgets held keys and buttons, e.g. when the window loses focus (no stuck keys).
     void release_all();
@@ -103,6 +109,7 @@ class Input {
 
     Bindings bindings_;
     GamepadMode mode_;
+    PadBindings buttons_;
     std::array<bool, 512> keys_{};  // SDL_NUM_SCANCODES
     std::uint8_t mods_ = kModNone;
     std::map<int, Pad> pads_;  // by SDL joystick instance id
@@ -112,6 +119,7 @@ class Input {
     bool capturing_ = false;
     int capture_modifier_ = -1;  // a modifier key down while capturing, or -1
     std::optional<KeyBinding> captured_;
+    std::optional<int> captured_button_;
 };
 
 }  // namespace bz::platform

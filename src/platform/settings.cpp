@@ -239,12 +239,72 @@ class Reader {
         }
     }
 
+    // [buttons] fire = ["a", "rightshoulder"]: like [keys], one error per bad entry at its
+    // position, and the action keeps its default buttons.
+    void buttons(const toml::table& t, PadBindings& dst) {
+        const toml::node* n = t.get("buttons");
+        if (!n) return;
+        const toml::table* table = n->as_table();
+        if (!table) {
+            error(n,
+                  "buttons must be a table such as [buttons] fire = [\"a\"]; keeping the "
+                  "defaults");
+            return;
+        }
+        for (const auto& [name, value] : *table) {
+            const auto action = action_from_name(name.str());
+            if (!action) {
+                error_at(name.source().begin,
+                         "unknown action '" + printable(name.str()) + "' in [buttons]");
+                continue;
+            }
+            std::vector<const toml::node*> items;
+            if (const toml::array* arr = value.as_array()) {
+                for (const auto& item : *arr) items.push_back(&item);
+            } else {
+                items.push_back(&value);
+            }
+            std::vector<int> parsed;
+            bool ok = true;
+            for (const toml::node* item : items) {
+                const auto text = item->value_exact<std::string>();
+                std::string why;
+                const auto button = text ? parse_button(*text, &why) : std::nullopt;
+                if (!text) why = "a button must be a string such as \"a\"";
+                if (!button) {
+                    error(item,
+                          printable(name.str()) + ": " + why + "; keeping the default buttons");
+                    ok = false;
+                    break;
+                }
+                parsed.push_back(*button);
+            }
+            if (ok) dst[static_cast<std::size_t>(*action)] = std::move(parsed);
+        }
+    }
+
     void unknown_keys(const toml::table& t) {
-        static constexpr std::string_view kKnown[] = {
-            "keys",    "volume",    "mute",        "vsync",    "fullscreen",  "pause_on_focus_loss",
-            "preset",  "style",     "gamepad",     "show_fps", "difficulty",  "beam",
-            "overlay", "hold_41hz", "line_method", "flashes",  "colour_safe", "ui_scale",
-            "max_fps", "arcade"};
+        static constexpr std::string_view kKnown[] = {"keys",
+                                                      "buttons",
+                                                      "volume",
+                                                      "mute",
+                                                      "vsync",
+                                                      "fullscreen",
+                                                      "pause_on_focus_loss",
+                                                      "preset",
+                                                      "style",
+                                                      "gamepad",
+                                                      "show_fps",
+                                                      "difficulty",
+                                                      "beam",
+                                                      "overlay",
+                                                      "hold_41hz",
+                                                      "line_method",
+                                                      "flashes",
+                                                      "colour_safe",
+                                                      "ui_scale",
+                                                      "max_fps",
+                                                      "arcade"};
         for (const auto& [name, value] : t) {
             if (std::find(std::begin(kKnown), std::end(kKnown), name.str()) == std::end(kKnown)) {
                 error_at(name.source().begin, "unknown setting '" + printable(name.str()) + "'");
@@ -371,6 +431,7 @@ SettingsLoad parse_settings(std::string_view text, const std::string& source,
     r.max_fps(t, s.max_fps);
     r.arcade(t, s.arcade);
     r.keys(t, s.keys);
+    r.buttons(t, s.buttons);
     r.unknown_keys(t);
     r.flush();
     return out;
@@ -443,6 +504,17 @@ std::string format_settings(const Settings& s) {
         o << action_name(static_cast<Action>(i)) << " = [";
         for (std::size_t k = 0; k < s.keys[i].size(); ++k) {
             o << (k ? ", " : "") << quoted(key_name(s.keys[i][k]));
+        }
+        o << "]\n";
+    }
+    o << "\n# Gamepad buttons per action, as SDL names them (\"a\", \"b\", \"x\", \"y\", "
+         "\"start\",\n# \"leftshoulder\", \"rightshoulder\", \"dpup\"). The menus always "
+         "take the d-pad, A, B and Start.\n"
+      << "[buttons]\n";
+    for (std::size_t i = 0; i < kActionCount; ++i) {
+        o << action_name(static_cast<Action>(i)) << " = [";
+        for (std::size_t k = 0; k < s.buttons[i].size(); ++k) {
+            o << (k ? ", " : "") << quoted(button_name(s.buttons[i][k]));
         }
         o << "]\n";
     }

@@ -12,6 +12,7 @@
 #include "platform/bindings.h"
 #include "platform/gl_context.h"
 #include "platform/input.h"
+#include "platform/pad_bindings.h"
 
 namespace bz::platform {
 
@@ -41,7 +42,8 @@ inline constexpr float kMaxUiScale = 2.0f;
 
 struct Settings {
     Bindings keys = default_bindings();
-    float volume = 0.8f;  // 0..1
+    PadBindings buttons = default_pad_bindings();  // [buttons]: gamepad buttons per action
+    float volume = 0.8f;                           // 0..1
     bool mute = false;
     Vsync vsync = Vsync::on;
     bool fullscreen = false;

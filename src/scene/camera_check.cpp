@@ -51,6 +51,30 @@ std::string view_problem(const glm::dvec3& eye, const glm::dvec3& target, const 
     return {};
 }
 
+std::string path_view_problem(const glm::dvec3& eye_a, const glm::dvec3& target_a,
+                              const glm::dvec3& eye_b, const glm::dvec3& target_b,
+                              const glm::dvec3& up, double* at) {
+    // The view direction d(f) = da + f (db - da) is linear in f. The view is worst where d is
+    // shortest (the eye meets the target) or where its part across `up` is shortest (it looks
+    // along `up`); both are minima of a quadratic in f, checked with the ends.
+    const glm::dvec3 da = target_a - eye_a, dd = (target_b - eye_b) - da;
+    const glm::dvec3 u = glm::length(up) > 0.0 ? glm::normalize(up) : glm::dvec3(0.0, 1.0, 0.0);
+    const auto across = [&u](const glm::dvec3& v) { return v - u * glm::dot(v, u); };
+    const auto closest = [](const glm::dvec3& a, const glm::dvec3& d) {
+        const double dd2 = glm::dot(d, d);
+        return dd2 > 0.0 ? std::clamp(-glm::dot(a, d) / dd2, 0.0, 1.0) : 0.0;
+    };
+    for (const double f : {0.0, 1.0, closest(da, dd), closest(across(da), across(dd))}) {
+        const glm::dvec3 eye = eye_a + (eye_b - eye_a) * f;
+        const glm::dvec3 target = target_a + (target_b - target_a) * f;
+        if (std::string why = view_problem(eye, target, up); !why.empty()) {
+            if (at) *at = f;
+            return why;
+        }
+    }
+    return {};
+}
+
 std::string camera_problem(const Camera& c) {
     if (std::string why = view_problem(c.eye, c.target, c.up); !why.empty()) return why;
     if (!(c.fov_y_deg > 0.0 && c.fov_y_deg < 180.0))

@@ -51,6 +51,7 @@ sites=(
   "check --@S"
   "play --headless-test --frames 2 --style @S"
   "play --headless-test --frames 2 --difficulty @S"
+  "play --headless-test --frames 2 --line-method @S"
   "play @S.toml --headless-test --frames 2"
   "play --headless-test --@S"
   "@S"

@@ -43,7 +43,7 @@ cp "$level" "$work/good.toml"  # what the recording will be verified against
 pid=$!
 wait_for "level: $level" "the first load"
 # The game (and the level hash its recording names) exists once the look is chosen.
-wait_for "look: style arcade (level)" "the level's style"
+wait_for "look: style vector-xray (level)" "the level's style"
 echo "ok the level's style is used: $(grep -o 'look: .*' "$log" | head -1)"
 
 write_level 'version = 1
@@ -105,7 +105,7 @@ mountains = [[0, 3], [120, 8], [240, 4]]
 style = "arcade"
 '
 wait_for "level reloaded: $level" "the viewer's reload"
-grep -q "look: style arcade (level)" "$log" || { echo "FAIL: the viewer's style did not follow"; cat "$log"; exit 1; }
+grep -q "look: style vector-xray (level)" "$log" || { echo "FAIL: the viewer's style did not follow"; cat "$log"; exit 1; }
 kill -TERM "$pid"
 set +e
 wait "$pid"

@@ -41,13 +41,13 @@ expect() {  # what, wanted, got
 # First start: the settings file is written with the defaults and counts as the player's.
 got=$(look "$work/fresh" "$work/styled.toml")
 expect "level style over the settings file, settings preset over the level's" \
-  "style arcade (level), preset balanced (settings file), beam mame (settings file), line width 3 px (level)" "$got"
+  "style vector-xray (level), preset balanced (settings file), beam mame (settings file), line width 3 px (level)" "$got"
 grep -q '^beam = "mame"' "$work/fresh/settings.toml" || fail "settings file without the beam"
 grep -q '^preset = "balanced"' "$work/fresh/settings.toml" || fail "settings file not written"
 
 got=$(look "$work/fresh" "$work/styled.toml" --style occluded --preset fast --beam classic)
 expect "command line over both" \
-  "style occluded (command line), preset fast (command line), beam classic (command line), line width 3 px (level)" "$got"
+  "style vector (command line), preset fast (command line), beam classic (command line), line width 3 px (level)" "$got"
 grep -q '^preset = "balanced"' "$work/fresh/settings.toml" || fail "--preset was written into the settings file"
 
 # A settings file that names a style but no preset: the level's preset fills in.
@@ -55,8 +55,8 @@ mkdir -p "$work/partial"
 printf 'style = "arcade"\n' >"$work/partial/settings.toml"
 got=$(look "$work/partial" "$work/preset_only.toml")
 expect "settings style where the level names none, level preset where the settings name none" \
-  "style arcade (settings file), preset fast (level), beam mame (default)" "$got"
+  "style vector-xray (settings file), preset fast (level), beam mame (default)" "$got"
 got=$(look "$work/partial" "$work/plain.toml")
-expect "neither names a preset" "style arcade (settings file), preset balanced (default), beam mame (default)" "$got"
+expect "neither names a preset" "style vector-xray (settings file), preset balanced (default), beam mame (default)" "$got"
 
 echo "$pass passed, 0 failed"

@@ -1,12 +1,11 @@
 // libFuzzer target for the command line: random argument vectors for every command, parsed
-// with the parsers the commands share (ArgCursor, the number, vector, size and style parsers,
-// the camera options and their checks) against a table of each command's options, and every
-// path they name pushed through the one output writer and the one input reader in a scratch
-// folder full of hostile entries (a FIFO, a folder, a foreign file, links to an input, a
-// read-only folder). Never a crash, a sanitizer report or a hang (a FIFO opened for reading
-// blocks; libFuzzer's -timeout catches it); every message is printable (no raw control byte:
-// untrusted text is escaped where it is inserted) and bounded; the inputs, the FIFO and the
-// folder are never replaced.
+// by the commands' own parsers (src/cli: the same code `beamzone` runs, built here without a
+// window or GL), then every path they name pushed through the one output writer and the one
+// input reader in a scratch folder full of hostile entries (a FIFO, a folder, a foreign file,
+// links to an input, a read-only folder). Never a crash, a sanitizer report or a hang (a FIFO
+// opened for reading blocks; libFuzzer's -timeout catches it); every message is printable (no
+// raw control byte: untrusted text is escaped where it is inserted) and bounded; the inputs,
+// the FIFO and the folder are never replaced.
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -21,7 +20,15 @@
 #include <vector>
 
 #include "app/commands/camera_args.h"
-#include "app/commands/cli_args.h"
+#include "cli/bench_args.h"
+#include "cli/check_args.h"
+#include "cli/cli_args.h"
+#include "cli/compare_args.h"
+#include "cli/difficulty_args.h"
+#include "cli/play_args.h"
+#include "cli/reference_args.h"
+#include "cli/render_args.h"
+#include "cli/replay_args.h"
 #include "core/error.h"
 #include "core/io/file_io.h"
 #include "core/io/output_path.h"
@@ -31,114 +38,6 @@
 namespace fs = std::filesystem;
 
 namespace {
-
-enum class Value {
-    none,
-    integer,
-    number,
-    vec3,
-    size,
-    style,
-    text,
-    out_png,
-    out_json,
-    out_replay,
-    out_dir,
-    in_file
-};
-
-struct Option {
-    std::string_view name;
-    Value value;
-    int lo = 0, hi = 0;  // integer range
-};
-
-struct Command {
-    std::string_view name;
-    bool camera;  // takes the shared camera options
-    std::vector<Option> options;
-};
-
-// Each command's options as its parser knows them (kUsage of src/app/commands/cmd_*.cpp).
-const std::vector<Command>& commands() {
-    static const std::vector<Command> table = {
-        {"render",
-         true,
-         {{"--preset", Value::text},
-          {"--line-method", Value::text},
-          {"--color", Value::vec3},
-          {"--out", Value::out_png},
-          {"--mask", Value::out_png},
-          {"--repeat", Value::integer, 1, 100000},
-          {"--copies", Value::integer, 1, 10000},
-          {"--beam", Value::text},
-          {"--lit-share", Value::none},
-          {"--overwrite", Value::none},
-          {"--style", Value::style},
-          {"--no-smoothing", Value::none},
-          {"--one-sided", Value::none},
-          {"--shading", Value::text}}},
-        {"reference",
-         true,
-         {{"--level", Value::in_file},
-          {"--time", Value::number},
-          {"--crease", Value::number},
-          {"--mask", Value::out_png},
-          {"--out", Value::out_png},
-          {"--overwrite", Value::none},
-          {"--style", Value::style}}},
-        {"bench",
-         false,
-         {{"--frames", Value::integer, 1, 1000000},
-          {"--warmup", Value::integer, 0, 100000},
-          {"--size", Value::size},
-          {"--preset", Value::text},
-          {"--style", Value::style},
-          {"--line-method", Value::text},
-          {"--sweep", Value::none},
-          {"--scaling", Value::none},
-          {"--accuracy", Value::none},
-          {"--beam", Value::text},
-          {"--no-phosphor", Value::none},
-          {"--models-dir", Value::text},
-          {"--model", Value::in_file},
-          {"--out", Value::out_dir},
-          {"--replay", Value::in_file},
-          {"--samples", Value::integer, 1, 1000},
-          {"--rounds", Value::integer, 1, 1000},
-          {"--timing", Value::text},
-          {"--overwrite", Value::none}}},
-        {"difficulty",
-         false,
-         {{"--seeds", Value::integer, 1, 10000},
-          {"--seconds", Value::number},
-          {"--difficulty", Value::text},
-          {"--json", Value::out_json},
-          {"--overwrite", Value::none}}},
-        {"replay",
-         false,
-         {{"--verify", Value::none},
-          {"--inputs-only", Value::none},
-          {"--level", Value::in_file},
-          {"--record-demo", Value::integer, 1, 36000},
-          {"--seed", Value::integer, 0, 2147483647},
-          {"--difficulty", Value::text},
-          {"--overwrite", Value::none}}},
-        {"play",
-         false,
-         {{"--record", Value::out_replay},
-          {"--replay", Value::in_file},
-          {"--size", Value::size},
-          {"--frames", Value::integer, 1, 100000000},
-          {"--seed", Value::integer, 0, 2147483647},
-          {"--style", Value::style},
-          {"--difficulty", Value::text},
-          {"--headless-test", Value::none}}},
-        {"compare", false, {{"--tol", Value::integer, 0, 64}}},
-        {"check", false, {{"--quiet", Value::none}, {"-q", Value::none}}},
-    };
-    return table;
-}
 
 fs::path g_scratch;                // the fuzzer's own folder, made once
 std::set<std::string> g_baseline;  // what it holds between runs
@@ -205,86 +104,98 @@ void restore_scratch() {
         bz::write_file_atomic(g_scratch / "foreign.png", "not a picture\n");
 }
 
-void use_output(std::string_view option, std::string_view word, Value kind, bool overwrite) {
+enum class Out { png, json, replay };
+
+void use_output(std::string_view option, const std::string& word, Out kind, bool overwrite) {
+    if (word.empty()) return;
     const fs::path out = confine(word);
     const fs::path inputs[] = {g_scratch / "in.toml"};
-    if (kind == Value::out_dir) {
-        constexpr std::string_view subs[] = {"masks"};
-        bz::check_output_dir(option, out, inputs, subs, overwrite);
-        return;
-    }
-    const bz::OutputKind& k = kind == Value::out_png    ? bz::kPngOutput
-                              : kind == Value::out_json ? bz::kJsonOutput
-                                                        : bz::kReplayOutput;
+    const bz::OutputKind& k = kind == Out::png    ? bz::kPngOutput
+                              : kind == Out::json ? bz::kJsonOutput
+                                                  : bz::kReplayOutput;
     bz::check_output_file(option, out, k, inputs, overwrite);
     bz::write_file_atomic(out, std::string(k.magic) + "written by the fuzzer\n");
 }
 
-void run(const Command& cmd, std::vector<char*>& argv) {
-    bz::app::ArgCursor cur(static_cast<int>(argv.size()), argv.data());
-    bz::app::CameraArgs camera;
-    std::vector<std::pair<std::string_view, std::pair<std::string_view, Value>>> outputs;
-    bool overwrite = false;
-    while (!cur.done()) {
-        const std::string_view a = cur.next();
-        if (cmd.camera && bz::app::parse_camera_option(a, cur, camera)) continue;
-        const Option* opt = nullptr;
-        for (const Option& o : cmd.options)
-            if (o.name == a) opt = &o;
-        if (!opt) {
-            if (!a.empty() && a[0] == '-')
-                throw bz::app::UsageError("unknown option " + bz::printable(a));
-            (void)bz::read_file(confine(a), 1u << 16);  // a positional input
-            continue;
-        }
-        switch (opt->value) {
-            case Value::none:
-                if (a == "--overwrite") overwrite = true;
-                break;
-            case Value::integer:
-                bz::app::parse_int(a, cur.value(a), opt->lo, opt->hi);
-                break;
-            case Value::number:
-                bz::app::parse_number(a, cur.value(a));
-                break;
-            case Value::vec3:
-                bz::app::parse_vec3(a, cur.value(a));
-                break;
-            case Value::size:
-                bz::app::parse_size(a, cur.value(a));
-                break;
-            case Value::style:
-                bz::app::parse_style(a, cur.value(a));
-                break;
-            case Value::text:
-                check_message(bz::printable(cur.value(a)));
-                break;
-            case Value::in_file:
-                (void)bz::read_file(confine(cur.value(a)), 1u << 16);
-                break;
-            default:
-                outputs.push_back({a, {cur.value(a), opt->value}});
-        }
-    }
-    if (cmd.camera) {
-        bz::app::validate_camera(camera);
-        bz::geo::Bounds b;
-        b.min = glm::vec3(-1.0f);
-        b.max = glm::vec3(1.0f);
-        const bz::scene::Camera c = bz::app::camera_for(camera, b);
-        if (!bz::scene::camera_problem(c).empty()) __builtin_trap();  // camera_for let it pass
-    }
-    for (const auto& [option, target] : outputs)
-        use_output(option, target.first, target.second, overwrite);
+void use_output_dir(std::string_view option, const std::string& word, bool overwrite) {
+    const fs::path inputs[] = {g_scratch / "in.toml"};
+    constexpr std::string_view subs[] = {"masks"};
+    bz::check_output_dir(option, confine(word), inputs, subs, overwrite);
 }
+
+void use_input(std::string_view word) {
+    if (!word.empty()) (void)bz::read_file(confine(word), 1u << 16);
+}
+
+// The parsed camera must give a picture or be refused: camera_for never passes a camera the
+// check would refuse.
+void use_camera(const bz::app::CameraArgs& camera) {
+    bz::geo::Bounds b;
+    b.min = glm::vec3(-1.0f);
+    b.max = glm::vec3(1.0f);
+    const bz::scene::Camera c = bz::app::camera_for(camera, b);
+    if (!bz::scene::camera_problem(c).empty()) __builtin_trap();
+}
+
+// One command: its real parser, then what the command would read and write.
+using Runner = void (*)(bz::app::Args);
+
+const Runner kCommands[] = {
+    [](bz::app::Args a) {
+        const auto o = bz::app::parse_render_args(a);
+        use_input(o.input);
+        use_camera(o.camera);
+        use_output("--out", o.out, Out::png, o.overwrite);
+        use_output("--mask", o.mask, Out::png, o.overwrite);
+    },
+    [](bz::app::Args a) {
+        const auto o = bz::app::parse_reference_args(a);
+        use_input(o.input);
+        use_input(o.level);
+        if (o.level.empty()) use_camera(o.camera);
+        use_output("--mask", o.mask, Out::png, o.overwrite);
+    },
+    [](bz::app::Args a) {
+        const auto o = bz::app::parse_bench_args(a);
+        use_input(o.level);
+        use_input(o.replay);
+        use_output_dir("--out", o.out, o.overwrite);
+    },
+    [](bz::app::Args a) {
+        const auto o = bz::app::parse_difficulty_args(a);
+        for (const std::string& l : o.levels) use_input(l);
+        use_output("--json", o.json, Out::json, o.overwrite);
+    },
+    [](bz::app::Args a) {
+        const auto o = bz::app::parse_replay_args(a);
+        use_input(o.level);
+        if (o.record_seconds > 0)
+            use_output("--record-demo", o.file, Out::replay, o.overwrite);
+        else
+            use_input(o.file);
+    },
+    [](bz::app::Args a) {
+        const auto o = bz::app::parse_play_options(static_cast<int>(a.size()), a.data());
+        use_input(o.level);
+        use_input(o.replay);
+        use_output("--record", o.record, Out::replay, false);
+    },
+    [](bz::app::Args a) {
+        const auto o = bz::app::parse_compare_args(a);
+        use_input(o.test);
+        use_input(o.ref);
+    },
+    [](bz::app::Args a) {
+        for (const std::string_view f : bz::app::parse_check_args(a).files) use_input(f);
+    },
+};
 
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     if (g_scratch.empty()) make_scratch();
     if (size < 1) return 0;
-    const auto& table = commands();
-    const Command& cmd = table[data[0] % table.size()];
+    const Runner run = kCommands[data[0] % std::size(kCommands)];
     // The rest: words separated by NUL bytes, at most 32 of them.
     std::vector<std::string> words;
     std::string word;
@@ -300,7 +211,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     std::vector<char*> argv;
     for (std::string& w : words) argv.push_back(w.data());
     try {
-        run(cmd, argv);
+        run(bz::app::Args(argv.data(), argv.size()));
     } catch (const bz::app::UsageError& e) {
         check_message(e.what());
     } catch (const bz::UserError& e) {

@@ -382,6 +382,25 @@ TEST(LoaderSchema, CameraKeys) {
                               "camera key 1 needs the key 'target'"));
 }
 
+// Two good keys whose path passes straight down (looking ahead, then behind, from above):
+// the error names the second key's time and the moment the view is lost.
+TEST(LoaderSchema, CameraPathBetweenKeysMustMakeAPicture) {
+    const std::string ahead = "[[camera_key]]\ntime = 0\neye = [0, 50, 0]\ntarget = [0, 0, 10]\n";
+    const std::string behind = "[[camera_key]]\ntime = 4\neye = [0, 50, 0]\ntarget = [0, 0, -10]\n";
+    ASSERT_TRUE(load(level_text(ahead)).ok());
+    ASSERT_TRUE(load(level_text(behind)).ok());
+    EXPECT_TRUE(has_one_error(load(level_text(ahead + behind)), 8, 8,
+                              "on the way to this key from the one before (at time 2) the camera "
+                              "cannot make a picture"));
+    // The eye driving through the target between two level keys.
+    const std::string before = "[[camera_key]]\ntime = 0\neye = [0, 5, -10]\ntarget = [0, 5, 0]\n";
+    const std::string after = "[[camera_key]]\ntime = 2\neye = [0, 5, 10]\ntarget = [0, 5, 0]\n";
+    EXPECT_TRUE(has_one_error(load(level_text(before + after)), 8, 8, "the eye is at the target"));
+    // Turning the other way round keeps the view level: no error.
+    const std::string side = "[[camera_key]]\ntime = 4\neye = [0, 50, 0]\ntarget = [10, 0, 0]\n";
+    EXPECT_TRUE(load(level_text(ahead + side)).ok());
+}
+
 TEST(LoaderSchema, StringLimits) {
     EXPECT_TRUE(
         has_one_error(load("version = 1\nname = \"\"\n"), 2, 8, "'name' must not be empty"));

@@ -1,29 +1,14 @@
 #pragma once
-// The camera options shared by `render` and `reference` (--eye --target --up --fov --near
-// --far --size), so both put the camera in exactly the same place for the same arguments.
+// The camera `render` and `reference` make from their camera options (cli/camera_options.h),
+// so both put the camera in exactly the same place for the same arguments.
 #include <glm/glm.hpp>
-#include <optional>
-#include <string_view>
 
-#include "app/commands/cli_args.h"
+#include "cli/camera_options.h"
 #include "geometry/mesh.h"
 #include "scene/frame_list.h"
 
 namespace bz::app {
 
-struct CameraArgs {
-    std::optional<glm::dvec3> eye, target;
-    glm::dvec3 up{0.0, 1.0, 0.0};
-    double fov = 50.0;
-    std::optional<double> near, far;
-    glm::ivec2 size{800, 600};
-    bool any_view_option = false;  // one of --eye --target --up --fov --near --far was given
-};
-
-// If `option` is a camera option, reads its value from `cur` and returns true.
-bool parse_camera_option(std::string_view option, ArgCursor& cur, CameraArgs& args);
-// Throws UsageError for inconsistent values (fov range, near/far order, eye == target).
-void validate_camera(const CameraArgs& args);
 // Without --eye: render::frame_bounds' 3/4 view of the bounds. With --eye: near and far fit
 // the bounds around the target. Explicit --near/--far win.
 scene::Camera camera_for(const CameraArgs& args, const geo::Bounds& bounds);

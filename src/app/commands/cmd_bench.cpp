@@ -12,11 +12,11 @@
 #include "app/bench/bench_scaling.h"
 #include "app/bench/bench_scene.h"
 #include "app/bench/bench_sweep.h"
-#include "app/commands/cli_args.h"
 #include "app/commands/commands.h"
 #include "app/commands/parse_command.h"
 #include "app/headless_gl.h"
 #include "app/line_method_profile.h"
+#include "cli/bench_args.h"
 #include "core/error.h"
 #include "core/io/file_io.h"
 #include "core/io/output_path.h"
@@ -31,176 +31,13 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr const char* kUsage =
-    "usage: beamzone bench LEVEL [--frames N] [--warmup N] [--size WxH]\n"
-    "                      [--preset fast|balanced|high] [--style NAME] [--sweep | --scaling]\n"
-    "                      [--line-method compute|geometry_shader|auto|image_outline]\n"
-    "                      [--out DIR] [--replay FILE] [--samples N] [--rounds N]\n"
-    "                      [--timing auto|cpu|gpu] [--beam classic|mame] [--no-phosphor]\n"
-    "                      [--series-max TRIANGLES] [--overwrite]\n"
-    "       beamzone bench --accuracy [--models-dir DIR] [--model FILE]... [--size WxH]\n"
-    "                      [--frames N] [--out DIR] [--timing auto|cpu|gpu]\n"
-    "Renders the level offscreen along its benchmark camera path ([[camera_key]]; without one\n"
-    "the autopilot's own view), one simulation tick (1/60 s) per frame, so every machine draws\n"
-    "the same frames. --replay FILE plays a recorded game instead, seen by the player.\n"
-    "Warm-up frames (default 30) are drawn but not counted; --frames (default 300) are timed.\n"
-    "Every pass is timed by name: GL timer queries on a hardware GPU, glFinish + CPU clock on a\n"
-    "software rasteriser (--timing overrides). Writes to --out (default bench-out):\n"
-    "  summary.json  frame-time mean/p50/p95/p99/max, 1% low FPS, per-pass means, scene stats\n"
-    "  frames.csv    one row per frame (MsBetweenPresents, MsCPUBusy, MsPass_<pass>, stats)\n"
-    "  frametime.png frame time per frame, stacked by pass\n"
-    "--sweep runs every preset, the image-space outline baseline and balanced with culling,\n"
-    "LOD and instancing off on the same frames, scores --samples frames (default 6) against\n"
-    "the exact CPU reference (F1 at 1 px) and adds sweep.json, tradeoff.png and masks/\n"
-    "(default 240 frames per configuration); it then times every style (balanced preset) and\n"
-    "scores the sketch style's strokes at 1, 2 and 4 px as well.\n"
-    "--style draws every frame in that style (see `render --help` for the styles)\n"
-    "instead of the level's.\n"
-    "Its timed frames run in --rounds stretches (default 4), round-robin over the\n"
-    "configurations, so a machine whose load drifts treats them alike.\n"
-    "--scaling draws the frames from meshes subdivided to 1x, 4x, 16x and 64x the triangles\n"
-    "and writes scaling.json and scaling.png (default 40 frames), then draws one model (a\n"
-    "sphere) at about 20k, 80k, 320k and 1.3M triangles and prints the edges pass against the\n"
-    "silhouette it finds (--series-max leaves out the larger sizes; 0 none).\n"
-    "--beam picks the vector beam's look (default: the level's, else mame, as play and render);\n"
-    "the sweep's rows keep each preset's classic beam and add balanced with the mame beam,\n"
-    "which times its passes (phosphor, mip-chain bloom).\n"
-    "--no-phosphor switches the beam's phosphor persistence off for the run (not with --sweep):\n"
-    "two runs with and without it time what the phosphor costs.\n"
-    "--accuracy needs no LEVEL: it scores every preset and the baseline on real models\n"
-    "(default: 16 files under /usr/share/assimp/models; --model FILE, repeatable, relative to\n"
-    "--models-dir, replaces the list) from 4 views each (framed, behind, close, above) at\n"
-    "640x480 against the exact CPU reference (F1 at 1 px Chebyshev), times each view\n"
-    "(--frames, default 6) and writes accuracy.json, accuracy_tradeoff.png, masks/, diffs/\n"
-    "(red: drawn but hidden in the reference, cyan: missing) and reference-cache/ (exact\n"
-    "masks reused by later runs into the same --out).\n"
-    "Before the first frame every .json, .csv and .png file already in --out (and its masks/,\n"
-    "diffs/, reference-cache/) must be of that kind, and none may be an input of the run;\n"
-    "--overwrite lets files of another kind be replaced (never inputs, devices or folders).\n";
-
-enum class Mode { single, sweep, scaling, accuracy };
-
-struct Options {
-    std::string level;
-    int frames = 300;
-    bool frames_given = false;
-    int warmup = 30;
-    glm::ivec2 size{1280, 720};
-    std::string preset;
-    std::optional<scene::Style> style;  // none: each frame's own (the level's)
-    std::string line_method;            // empty: the level's, else the preset's
-    Mode mode = Mode::single;
-    std::string out = "bench-out";
-    std::string replay;
-    int samples = 6;
-    int rounds = 4;
-    int series_max = 1'400'000;  // --scaling's model series: sizes up to this many triangles
-    std::string timing = "auto";
-    std::string beam;
-    bool no_phosphor = false;
-    bool size_given = false;
-    std::string models_dir = "/usr/share/assimp/models";
-    std::vector<std::string> models;
-    bool overwrite = false;  // may replace files of another kind named like an output
-};
-
 // Every file this run reads, which no output may replace.
-std::vector<fs::path> bench_inputs(const Options& o) {
+std::vector<fs::path> bench_inputs(const BenchOptions& o) {
     std::vector<fs::path> in;
     if (!o.level.empty()) in.emplace_back(o.level);
     if (!o.replay.empty()) in.emplace_back(o.replay);
     for (const std::string& m : o.models) in.push_back(fs::path(o.models_dir) / m);
     return in;
-}
-
-Options parse(Args args) {
-    Options o;
-    ArgCursor cur(static_cast<int>(args.size()), args.data());
-    bool preset_given = false;
-    while (!cur.done()) {
-        const std::string_view a = cur.next();
-        if (a == "--frames") {
-            o.frames = parse_int(a, cur.value(a), 1, 1000000);
-            o.frames_given = true;
-        } else if (a == "--warmup") {
-            o.warmup = parse_int(a, cur.value(a), 0, 100000);
-        } else if (a == "--size") {
-            o.size = parse_size(a, cur.value(a));
-            o.size_given = true;
-        } else if (a == "--preset") {
-            o.preset = cur.value(a);
-            preset_given = true;
-        } else if (a == "--style") {
-            o.style = parse_style(a, cur.value(a));
-        } else if (a == "--line-method") {
-            o.line_method = cur.value(a);
-        } else if (a == "--sweep" || a == "--scaling" || a == "--accuracy") {
-            const Mode m = a == "--sweep"     ? Mode::sweep
-                           : a == "--scaling" ? Mode::scaling
-                                              : Mode::accuracy;
-            if (o.mode != Mode::single && o.mode != m)
-                throw UsageError("--sweep, --scaling and --accuracy exclude each other");
-            o.mode = m;
-        } else if (a == "--beam") {
-            o.beam = cur.value(a);
-        } else if (a == "--no-phosphor") {
-            o.no_phosphor = true;
-        } else if (a == "--models-dir") {
-            o.models_dir = cur.value(a);
-        } else if (a == "--model") {
-            o.models.emplace_back(cur.value(a));
-        } else if (a == "--out") {
-            o.out = cur.value(a);
-        } else if (a == "--overwrite") {
-            o.overwrite = true;
-        } else if (a == "--replay") {
-            o.replay = cur.value(a);
-        } else if (a == "--samples") {
-            o.samples = parse_int(a, cur.value(a), 1, 1000);
-        } else if (a == "--series-max") {
-            o.series_max = parse_int(a, cur.value(a), 0, 100'000'000);
-        } else if (a == "--rounds") {
-            o.rounds = parse_int(a, cur.value(a), 1, 1000);
-        } else if (a == "--timing") {
-            o.timing = cur.value(a);
-            if (o.timing != "auto" && o.timing != "cpu" && o.timing != "gpu") {
-                throw UsageError("--timing: expected auto, cpu or gpu");
-            }
-        } else if (!a.empty() && a[0] == '-') {
-            throw UsageError("unknown option " + printable(a));
-        } else if (o.level.empty()) {
-            o.level = a;
-        } else {
-            throw UsageError("more than one LEVEL given");
-        }
-    }
-    if (o.mode == Mode::accuracy) {
-        if (!o.level.empty()) throw UsageError("--accuracy takes no LEVEL (it draws models)");
-        if (preset_given) throw UsageError("--preset and --accuracy exclude each other");
-        if (!o.replay.empty()) throw UsageError("--replay and --accuracy exclude each other");
-        if (o.no_phosphor) throw UsageError("--no-phosphor and --accuracy exclude each other");
-        if (!o.frames_given) o.frames = 6;
-        if (!o.size_given) o.size = {640, 480};
-        if (o.out.empty()) throw UsageError("--out needs a directory");
-        return o;
-    }
-    if (!o.models.empty()) throw UsageError("--model needs --accuracy");
-    if (o.level.empty()) throw UsageError("no LEVEL given");
-    if (preset_given && o.mode == Mode::sweep)
-        throw UsageError("--preset and --sweep exclude each other (the sweep runs every preset)");
-    if (!o.line_method.empty() && o.mode == Mode::sweep)
-        throw UsageError(
-            "--line-method and --sweep exclude each other (the sweep runs every method)");
-    if (o.style && o.mode == Mode::sweep)
-        throw UsageError("--style and --sweep exclude each other (the sweep runs every style)");
-    if (o.no_phosphor && o.mode == Mode::sweep)
-        throw UsageError(
-            "--no-phosphor and --sweep exclude each other (the sweep sets every look)");
-    if (o.mode == Mode::scaling && !o.frames_given) o.frames = 40;
-    // Seven configurations: fewer frames each keep a sweep on llvmpipe within minutes.
-    if (o.mode == Mode::sweep && !o.frames_given) o.frames = 240;
-    if (o.out.empty()) throw UsageError("--out needs a directory");
-    return o;
 }
 
 gl::TimingMethod pick_timing(const std::string& wanted, const platform::GlContext& ctx) {
@@ -210,7 +47,7 @@ gl::TimingMethod pick_timing(const std::string& wanted, const platform::GlContex
     return ctx.is_software() ? gl::TimingMethod::cpu_finish : gl::TimingMethod::gpu_queries;
 }
 
-BenchFrames simulate(BenchScene& scene, const Options& o, double aspect) {
+BenchFrames simulate(BenchScene& scene, const BenchOptions& o, double aspect) {
     BenchFrames bf;
     bf.warmup = o.warmup;
     const int total = o.warmup + o.frames;
@@ -237,9 +74,9 @@ BenchFrames simulate(BenchScene& scene, const Options& o, double aspect) {
                      bf.frames.size() - static_cast<std::size_t>(o.warmup), o.frames);
     }
     if (static_cast<int>(bf.frames.size()) <= o.warmup) {
-        throw UserError(o.replay + ": the replay has " + std::to_string(bf.frames.size()) +
-                        " ticks, not more than the " + std::to_string(o.warmup) +
-                        " warm-up frames");
+        throw UserError(printable(o.replay) + ": the replay has " +
+                        std::to_string(bf.frames.size()) + " ticks, not more than the " +
+                        std::to_string(o.warmup) + " warm-up frames");
     }
     return bf;
 }
@@ -248,10 +85,11 @@ void write_text(const fs::path& p, const std::string& s) {
     write_file_atomic(p, s);
 }
 
-int run_accuracy_mode(const Options& o) {
+int run_accuracy_mode(const BenchOptions& o) {
     std::error_code ec;
     fs::create_directory(o.out, ec);  // the folder itself, never missing parents
-    if (ec) throw UserError(o.out + ": cannot create the output directory: " + ec.message());
+    if (ec)
+        throw UserError(printable(o.out) + ": cannot create the output directory: " + ec.message());
     auto context = make_headless_context();
     check_image_size(*context, "--size", o.size.x, o.size.y);
     const gl::TimingMethod timing = pick_timing(o.timing, *context);
@@ -307,12 +145,12 @@ int run_accuracy_mode(const Options& o) {
     return 0;
 }
 
-int run(const Options& o) {
+int run(const BenchOptions& o) {
     // Every file the run may write sits in --out or these subfolders of it: all are checked
     // before the first frame, so a long run never ends in a refused write.
     constexpr std::string_view kSubfolders[] = {"masks", "diffs", "reference-cache"};
     check_output_dir("--out", o.out, bench_inputs(o), kSubfolders, o.overwrite);
-    if (o.mode == Mode::accuracy) return run_accuracy_mode(o);
+    if (o.mode == BenchMode::accuracy) return run_accuracy_mode(o);
     level::LoadResult loaded = level::load_level_file(o.level);
     if (!loaded.ok()) {
         for (const level::Diagnostic& d : loaded.errors)
@@ -356,7 +194,8 @@ int run(const Options& o) {
 
     std::error_code ec;
     fs::create_directory(o.out, ec);  // the folder itself, never missing parents
-    if (ec) throw UserError(o.out + ": cannot create the output directory: " + ec.message());
+    if (ec)
+        throw UserError(printable(o.out) + ": cannot create the output directory: " + ec.message());
 
     auto context = make_headless_context();
     check_image_size(*context, "--size", o.size.x, o.size.y);
@@ -387,7 +226,7 @@ int run(const Options& o) {
     const fs::path out(o.out);
 
     std::vector<RunResult> runs;
-    if (o.mode == Mode::sweep) {
+    if (o.mode == BenchMode::sweep) {
         SweepOptions so;
         so.samples = o.samples;
         so.masks_dir = out / "masks";
@@ -416,7 +255,7 @@ int run(const Options& o) {
         }
         print_summary_table(stdout, meta, runs);
         print_sweep_table(stdout, result, goals);
-    } else if (o.mode == Mode::scaling) {
+    } else if (o.mode == BenchMode::scaling) {
         ScalingResult result = run_scaling(frames, scene.meshes(), settings, o.size.x, o.size.y,
                                            timing, 60'000'000, true);
         result.series = run_model_series(settings, o.size.x, o.size.y, timing,
@@ -465,19 +304,8 @@ int run(const Options& o) {
 
 int cmd_bench(Args args) {
     int exit_code = 0;
-    const auto parse_checked = [](Args a) {
-        Options o = parse(a);
-        try {
-            if (!o.preset.empty()) render::preset(o.preset);  // an unknown name is a usage error
-            if (!o.line_method.empty()) render::parse_line_method(o.line_method);
-            if (!o.beam.empty()) render::beam_look(o.beam);
-        } catch (const UserError& e) {
-            throw UsageError(e.what());
-        }
-        return o;
-    };
-    const std::optional<Options> o =
-        parse_command("bench", args, kUsage, parse_checked, &exit_code);
+    const std::optional<BenchOptions> o =
+        parse_command("bench", args, kBenchUsage, parse_bench_args, &exit_code);
     return o ? run(*o) : exit_code;
 }
 

@@ -1,11 +1,14 @@
 #include <cstdio>
 #include <map>
+#include <optional>
 #include <set>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "app/commands/commands.h"
+#include "app/commands/parse_command.h"
+#include "cli/check_args.h"
 #include "core/error.h"
 #include "core/text/printable.h"
 #include "game/assets/level_models.h"
@@ -16,15 +19,7 @@ namespace bz::app {
 
 namespace {
 
-constexpr const char* kUsage =
-    "usage: beamzone check [--quiet] FILE...\n"
-    "Validates level files without opening a window, and imports every model a level names\n"
-    "with the same importer and limits as play. Every problem is printed to stderr as\n"
-    "'file:line:col: error: message'; a clean file prints one 'ok' line to stdout unless\n"
-    "--quiet. Exit status: 0 all clean, 1 some file has errors, 2 usage error.\n";
-
 // Imports each model the level names once, as play would; prints what fails. Returns the
-// number of models that failed.
 // number of models that failed, or 1 when the scene is over its budget (core/budgets.h).
 int check_models(const level::Level& level) {
     int failed = 0;
@@ -53,30 +48,11 @@ int check_models(const level::Level& level) {
 }  // namespace
 
 int cmd_check(Args args) {
-    std::vector<std::string_view> files;
-    bool quiet = false;
-    bool options_done = false;
-    for (const char* arg : args) {
-        const std::string_view a = arg;
-        if (!options_done && a == "--") {
-            options_done = true;
-        } else if (!options_done && (a == "--help" || a == "-h")) {
-            std::fputs(kUsage, stdout);
-            return 0;
-        } else if (!options_done && (a == "--quiet" || a == "-q")) {
-            quiet = true;
-        } else if (!options_done && a.size() > 1 && a[0] == '-') {
-            std::fprintf(stderr, "beamzone check: unknown option '%s'\n%s", printable(a).c_str(),
-                         kUsage);
-            return 2;
-        } else {
-            files.push_back(a);
-        }
-    }
-    if (files.empty()) {
-        std::fprintf(stderr, "beamzone check: no level files given\n%s", kUsage);
-        return 2;
-    }
+    int exit_code = 0;
+    const std::optional<CheckOptions> parsed =
+        parse_command("check", args, kCheckUsage, parse_check_args, &exit_code);
+    if (!parsed) return exit_code;
+    const auto& [files, quiet] = *parsed;
     int failed = 0;
     for (const std::string_view file : files) {
         const level::LoadResult result = level::load_level_file(std::string(file));

@@ -3,9 +3,9 @@
 #include <cstdio>
 #include <string>
 
-#include "app/commands/cli_args.h"
 #include "app/commands/commands.h"
 #include "app/commands/parse_command.h"
+#include "cli/compare_args.h"
 #include "core/error.h"
 #include "core/image_io.h"
 #include "core/text/printable.h"
@@ -14,46 +14,6 @@
 namespace bz::app {
 
 namespace {
-
-constexpr const char* kUsage =
-    "usage: beamzone compare TEST.png REF.png [--tol PX] [--ink]\n"
-    "Scores a line mask (e.g. 'render --mask') against a reference mask (e.g. 'reference'):\n"
-    "  precision  lit TEST pixels with a lit REF pixel within PX pixels (Chebyshev distance)\n"
-    "  recall     lit REF pixels with a lit TEST pixel within PX pixels\n"
-    "  f1         2 * precision * recall / (precision + recall)\n"
-    "A pixel is lit when its gray value is at least 128. --tol defaults to 1. Both images\n"
-    "must have the same size.\n"
-    "--ink: TEST is a frame of a paper style, whose lines are dark ink: its pixels darker\n"
-    "than gray 110 count as lit (the halo style's recall of the exact visible lines).\n";
-
-struct Options {
-    std::string test, ref;
-    int tol = 1;
-    bool ink = false;
-};
-
-Options parse(Args args) {
-    Options o;
-    ArgCursor cur(static_cast<int>(args.size()), args.data());
-    while (!cur.done()) {
-        const std::string_view a = cur.next();
-        if (a == "--tol") {
-            o.tol = parse_int(a, cur.value(a), 0, 64);
-        } else if (a == "--ink") {
-            o.ink = true;
-        } else if (!a.empty() && a[0] == '-') {
-            throw UsageError("unknown option " + printable(a));
-        } else if (o.test.empty()) {
-            o.test = a;
-        } else if (o.ref.empty()) {
-            o.ref = a;
-        } else {
-            throw UsageError("expected two images, got a third: " + printable(a));
-        }
-    }
-    if (o.ref.empty()) throw UsageError("need TEST.png and REF.png");
-    return o;
-}
 
 std::vector<std::uint8_t> lit_pixels(const Image& img, bool ink = false) {
     std::vector<std::uint8_t> out(img.pixels.size());
@@ -66,14 +26,15 @@ std::vector<std::uint8_t> lit_pixels(const Image& img, bool ink = false) {
 
 int cmd_compare(Args args) {
     int exit_code = 0;
-    const std::optional<Options> parsed = parse_command("compare", args, kUsage, parse, &exit_code);
+    const std::optional<CompareOptions> parsed =
+        parse_command("compare", args, kCompareUsage, parse_compare_args, &exit_code);
     if (!parsed) return exit_code;
-    const Options& o = *parsed;
+    const CompareOptions& o = *parsed;
     const Image test = read_png(o.test, 1);
     const Image ref = read_png(o.ref, 1);
     if (test.width != ref.width || test.height != ref.height) {
-        throw UserError(o.test + " is " + std::to_string(test.width) + "x" +
-                        std::to_string(test.height) + " but " + o.ref + " is " +
+        throw UserError(printable(o.test) + " is " + std::to_string(test.width) + "x" +
+                        std::to_string(test.height) + " but " + printable(o.ref) + " is " +
                         std::to_string(ref.width) + "x" + std::to_string(ref.height) +
                         ": masks must have the same size");
     }

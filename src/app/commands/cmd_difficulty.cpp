@@ -6,10 +6,10 @@
 #include <string>
 #include <vector>
 
-#include "app/commands/cli_args.h"
 #include "app/commands/commands.h"
 #include "app/commands/parse_command.h"
 #include "app/json_text.h"
+#include "cli/difficulty_args.h"
 #include "core/io/file_io.h"
 #include "core/io/output_path.h"
 #include "core/paths.h"
@@ -23,66 +23,6 @@ namespace bz::app {
 namespace {
 
 namespace fs = std::filesystem;
-
-constexpr const char* kUsage =
-    "usage: beamzone difficulty [LEVEL...] [--seeds N] [--seconds S]\n"
-    "                           [--difficulty easy|normal|arcade] [--json FILE] [--overwrite]\n"
-    "Plays N games (default 20, seeds 1..N) per level and difficulty headless and prints, as a\n"
-    "Markdown table, the mean time to the first death of an idle player and of the autopilot\n"
-    "(games still alive after S seconds, default 120, count as S; 'alive' says how many), and\n"
-    "the share of enemies that appeared in the 90 degrees behind the player. Without LEVEL,\n"
-    "every shipped level that has enemies. --json writes the same numbers as JSON (an existing\n"
-    "file there must be JSON unless --overwrite is given).\n";
-
-struct Options {
-    std::vector<std::string> levels;
-    int seeds = 20;
-    double seconds = 120.0;
-    std::vector<game::Difficulty> difficulties{game::Difficulty::easy, game::Difficulty::normal,
-                                               game::Difficulty::arcade};
-    std::string json;
-    bool overwrite = false;  // --json may replace an existing file that is not JSON
-};
-
-Options parse(Args args) {
-    Options o;
-    ArgCursor cur(static_cast<int>(args.size()), args.data());
-    bool difficulty_given = false;
-    while (!cur.done()) {
-        const std::string_view a = cur.next();
-        if (a == "--seeds") {
-            o.seeds = parse_int(a, cur.value(a), 1, 10000);
-        } else if (a == "--seconds") {
-            o.seconds = parse_number(a, cur.value(a));
-            if (!(o.seconds > 0.0 && o.seconds <= 3600.0))
-                throw UsageError("--seconds must be more than 0 and at most 3600");
-        } else if (a == "--difficulty") {
-            const std::string_view v = cur.value(a);
-            const auto d = game::parse_difficulty(v);
-            if (!d) {
-                throw UsageError("--difficulty must be one of " +
-                                 std::string(game::kDifficultyNames) + ", not '" + printable(v) +
-                                 "'");
-            }
-            if (!difficulty_given) o.difficulties.clear();
-            difficulty_given = true;
-            o.difficulties.push_back(*d);
-        } else if (a == "--json") {
-            o.json = cur.value(a);
-        } else if (a == "--overwrite") {
-            o.overwrite = true;
-        } else if (!a.empty() && a[0] == '-') {
-            throw UsageError("unknown option " + printable(a));
-        } else {
-            o.levels.emplace_back(a);
-        }
-    }
-    if (o.levels.empty()) {
-        for (const char* name : {"tutorial", "classic", "maze", "volcano_night", "plains"})
-            o.levels.push_back((levels_dir() / (std::string(name) + ".toml")).string());
-    }
-    return o;
-}
 
 std::string seconds_cell(const game::ProbeSummary& s) {
     char buf[64];
@@ -100,7 +40,7 @@ Json summary_json(const game::ProbeSummary& s) {
             {"rear_spawns", s.rear_spawns}};
 }
 
-int run(const Options& o) {
+int run(const DifficultyOptions& o) {
     if (!o.json.empty()) {
         // Before the first game: never the input level, a device, a folder or a foreign file.
         const std::vector<fs::path> inputs(o.levels.begin(), o.levels.end());
@@ -152,8 +92,8 @@ int run(const Options& o) {
 
 int cmd_difficulty(Args args) {
     int exit_code = 0;
-    const std::optional<Options> parsed =
-        parse_command("difficulty", args, kUsage, parse, &exit_code);
+    const std::optional<DifficultyOptions> parsed =
+        parse_command("difficulty", args, kDifficultyUsage, parse_difficulty_args, &exit_code);
     if (!parsed) return exit_code;
     return run(*parsed);
 }

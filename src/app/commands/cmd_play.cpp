@@ -8,15 +8,16 @@
 #include <memory>
 #include <string>
 
-#include "app/commands/cli_args.h"
 #include "app/commands/commands.h"
 #include "app/line_method_profile.h"
 #include "app/play/menu/level_list.h"
 #include "app/play/play_look.h"
 #include "app/play/play_loop.h"
-#include "app/play/play_options.h"
 #include "app/play/play_sessions.h"
+#include "app/play/play_usage.h"
 #include "app/replay_level.h"
+#include "cli/cli_args.h"
+#include "cli/play_args.h"
 #include "core/error.h"
 #include "core/interrupt.h"
 #include "core/io/output_path.h"
@@ -160,7 +161,7 @@ struct Play {
         platform::Audio audio(log, settings.volume, settings.mute);
         platform::Gamepads gamepads(log, data_dir() / "gamecontrollerdb" / "gamecontrollerdb.txt",
                                     paths.gamepad_db);
-        platform::Input input(settings.keys, settings.gamepad);
+        platform::Input input(settings.keys, settings.gamepad, settings.buttons);
         const scene::VectorFont font = scene::VectorFont::load_default();
         PlayOverlay overlay(font);
 

@@ -7,10 +7,10 @@
 #include <optional>
 #include <string>
 
-#include "app/commands/cli_args.h"
 #include "app/commands/commands.h"
 #include "app/commands/parse_command.h"
 #include "app/replay_level.h"
+#include "cli/replay_args.h"
 #include "core/error.h"
 #include "core/io/output_path.h"
 #include "core/paths.h"
@@ -27,70 +27,6 @@ namespace bz::app {
 namespace {
 
 namespace fs = std::filesystem;
-
-constexpr const char* kUsage =
-    "usage: beamzone replay FILE [--verify [--inputs-only]] [--level LEVEL.toml]\n"
-    "       beamzone replay FILE --record-demo SECONDS [--seed N] [--level LEVEL.toml]\n"
-    "                                             [--difficulty easy|normal|arcade] [--overwrite]\n"
-    "Prints what a replay file holds. --verify re-simulates it headless (no window) from its\n"
-    "seed and commands and checks every recorded state hash: exit 0 when all match, 1 with\n"
-    "the first mismatching tick. A replay without a state hash at every hash interval and at\n"
-    "its last tick is refused (nothing would prove it); --inputs-only re-simulates it anyway,\n"
-    "checking only the hashes it has. --level overrides the level file the replay names.\n"
-    "--record-demo writes FILE: the attract-mode autopilot playing for SECONDS, headless\n"
-    "(the built-in level unless --level is given), at the level's difficulty unless\n"
-    "--difficulty is given.\n";
-
-struct Options {
-    std::string file;
-    std::string level;
-    bool verify = false;
-    bool inputs_only = false;  // --verify without requiring state hashes
-    int record_seconds = 0;
-    std::uint64_t seed = 1;
-    std::optional<level::Difficulty> difficulty;
-    bool overwrite = false;  // --record-demo may replace a file that is not a replay
-};
-
-Options parse(Args args) {
-    Options o;
-    ArgCursor cur(static_cast<int>(args.size()), args.data());
-    while (!cur.done()) {
-        const std::string_view a = cur.next();
-        if (a == "--verify") {
-            o.verify = true;
-        } else if (a == "--inputs-only") {
-            o.inputs_only = true;
-        } else if (a == "--level") {
-            o.level = cur.value(a);
-        } else if (a == "--overwrite") {
-            o.overwrite = true;
-        } else if (a == "--record-demo") {
-            o.record_seconds = parse_int(a, cur.value(a), 1, 10 * 3600);
-        } else if (a == "--seed") {
-            o.seed = static_cast<std::uint64_t>(parse_int(a, cur.value(a), 0, 2147483647));
-        } else if (a == "--difficulty") {
-            const std::string_view v = cur.value(a);
-            o.difficulty = game::parse_difficulty(v);
-            if (!o.difficulty) {
-                throw UsageError("--difficulty must be one of " +
-                                 std::string(game::kDifficultyNames) + ", not '" + printable(v) +
-                                 "'");
-            }
-        } else if (!a.empty() && a[0] == '-') {
-            throw UsageError("unknown option " + printable(a));
-        } else if (o.file.empty()) {
-            o.file = a;
-        } else {
-            throw UsageError("more than one replay FILE given");
-        }
-    }
-    if (o.file.empty()) throw UsageError("no replay FILE given");
-    if (o.inputs_only && !o.verify) throw UsageError("--inputs-only needs --verify");
-    if (o.verify && o.record_seconds > 0)
-        throw UsageError("--verify and --record-demo exclude each other");
-    return o;
-}
 
 std::string hex(std::uint64_t v) {
     char buf[20];
@@ -109,7 +45,7 @@ level::Level load_level_or_report(const fs::path& path, bool& ok) {
     return std::move(*loaded.level);
 }
 
-int record_demo(const Options& o) {
+int record_demo(const ReplayOptions& o) {
     const fs::path inputs[] = {o.level};
     check_output_file("replay --record-demo", o.file, kReplayOutput, inputs, o.overwrite);
     level::Level lv = game::default_level();
@@ -145,7 +81,7 @@ int record_demo(const Options& o) {
     return 0;
 }
 
-int run(const Options& o) {
+int run(const ReplayOptions& o) {
     if (o.record_seconds > 0) return record_demo(o);
     const game::replay::Replay r = game::replay::load(o.file);
     const game::replay::Header& h = r.header;
@@ -230,9 +166,10 @@ int run(const Options& o) {
 
 int cmd_replay(Args args) {
     int exit_code = 0;
-    const std::optional<Options> parsed = parse_command("replay", args, kUsage, parse, &exit_code);
+    const std::optional<ReplayOptions> parsed =
+        parse_command("replay", args, kReplayUsage, parse_replay_args, &exit_code);
     if (!parsed) return exit_code;
-    const Options& o = *parsed;
+    const ReplayOptions& o = *parsed;
     try {
         return run(o);
     } catch (const UserError& e) {

@@ -4,9 +4,9 @@
 #include <span>
 #include <string_view>
 
-namespace bz::app {
+#include "cli/cli_args.h"
 
-using Args = std::span<char* const>;  // arguments after the subcommand name
+namespace bz::app {
 
 struct Command {
     std::string_view name;

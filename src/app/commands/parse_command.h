@@ -5,8 +5,8 @@
 #include <optional>
 #include <string_view>
 
-#include "app/commands/cli_args.h"
 #include "app/commands/commands.h"
+#include "cli/cli_args.h"
 #include "core/text/printable.h"
 
 namespace bz::app {

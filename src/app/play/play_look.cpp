@@ -61,8 +61,10 @@ PlayLook choose_look(const LookSources& s, const level::Level* level) {
     // Battlezone's vector generator redrew at about 41 Hz.
     look.render.beam.refresh_hz =
         s.settings_hold_41hz || (lv && lv->hold_41hz.value_or(false)) ? 41.0f : 0.0f;
-    look.summary = "style " + style + " (" + style_from + "), preset " + preset + " (" +
-                   preset_from + "), beam " + beam + " (" + beam_from + ")";
+    // The canonical name, whatever alias the level or the settings file used ("occluded").
+    look.summary = "style " + std::string(scene::style_name(look.style)) + " (" + style_from +
+                   "), preset " + preset + " (" + preset_from + "), beam " + beam + " (" +
+                   beam_from + ")";
     if (s.flashes == "soft") {
         look.render.beam.flicker *= 0.5f;
         look.render.beam.persistence_ms *= 0.5f;

@@ -46,6 +46,7 @@ class Loop {
         }
         applied_ = p_.settings;
         session_.set_text_scale(p_.settings.ui_scale);
+        p_.overlay.set_text_scale(p_.settings.ui_scale);
         look_ = look_now();
         p_.log.info("look: " + look_.summary);
         int w = 0, h = 0;
@@ -215,7 +216,11 @@ class Loop {
         const bool open = menus_.open();
         std::vector<menu::Request> requests;
         if (menus_.capturing()) {
-            if (const auto key = p_.input.take_captured()) requests = menus_.captured(*key);
+            if (const auto key = p_.input.take_captured()) {
+                requests = menus_.captured(*key);
+            } else if (const auto button = p_.input.take_captured_button()) {
+                requests = menus_.captured_button(*button);
+            }
         } else if (p_.input.capturing()) {
             p_.input.cancel_capture();  // the menu closed under it
         }
@@ -330,8 +335,10 @@ class Loop {
                                    arcade_rules(s.arcade));
         }
         p_.input.set_bindings(s.keys);
+        p_.input.set_pad_bindings(s.buttons);
         p_.input.set_gamepad_mode(s.gamepad);
         session_.set_text_scale(s.ui_scale);
+        p_.overlay.set_text_scale(s.ui_scale);
         if (s.keys != applied_.keys) session_.keys_changed(s.keys);
         // A choice made in the menu is the player's say for this run, like the command line.
         if (p_.look_sources &&

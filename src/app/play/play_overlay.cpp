@@ -104,13 +104,14 @@ std::vector<PlayOverlay::BoxLine> PlayOverlay::error_box_lines(double aspect) co
         if (errors_[k].lines.empty()) continue;
         all.push_back({std::string(error_title(static_cast<ErrorKind>(k))), true});
         for (const auto& e : errors_[k].lines) {
-            for (auto& l : wrap(e, kErrorHeight, box.width())) all.push_back({std::move(l)});
+            for (auto& l : wrap(e, kErrorHeight * scale_, box.width()))
+                all.push_back({std::move(l)});
         }
     }
     // As many lines as the box holds: the first ones (the first error is the one to fix
     // first), then a count of the rest, which the log has in full.
-    const float title_step = kErrorTitleHeight * kLineGap;
-    const float step = kErrorHeight * kLineGap;
+    const float title_step = kErrorTitleHeight * scale_ * kLineGap;
+    const float step = kErrorHeight * scale_ * kLineGap;
     float used = 0.0f;
     std::size_t fits = 0;
     for (const BoxLine& l : all) {
@@ -133,30 +134,36 @@ void PlayOverlay::draw(std::vector<scene::HudLine>& out, double aspect) const {
     const hud::Box ebox = hud::error_box(a);
     float y = ebox.max.y;
     for (const BoxLine& l : error_box_lines(aspect)) {
-        const float h = l.title ? kErrorTitleHeight : kErrorHeight;
+        float h = (l.title ? kErrorTitleHeight : kErrorHeight) * scale_;
         y -= h * kLineGap;
+        // A title is one line: at a large text size a long one gets smaller to fit the box.
+        if (const float w = font_.width(l.text, h); l.title && w > ebox.width())
+            h *= ebox.width() / w;
         font_.draw(out, l.text, {ebox.min.x, y + h * kBaselineLift}, h, kErrorColor,
                    scene::TextAlign::left, l.title ? 1.2f : 1.0f);
     }
 
-    const hud::Box nbox = hud::notice_box(a);
-    y = nbox.min.y + kNoticeHeight * kBaselineLift;
+    const hud::Box nbox = hud::notice_box(a, scale_);
+    const float nh = kNoticeHeight * scale_;
+    y = nbox.min.y + nh * kBaselineLift;
     for (auto it = notices_.rbegin(); it != notices_.rend(); ++it) {
         const float fade = static_cast<float>(std::clamp(it->seconds_left / 0.5, 0.0, 1.0));
-        const auto lines = wrap(it->text, kNoticeHeight, nbox.width());
+        const auto lines = wrap(it->text, nh, nbox.width());
         for (auto l = lines.rbegin(); l != lines.rend(); ++l) {  // drawn bottom-up
             // Full: the oldest go unshown.
-            if (y + kNoticeHeight * (1.0f + kOvershoot) > nbox.max.y) break;
-            font_.draw(out, *l, {nbox.min.x, y}, kNoticeHeight, kNoticeColor,
-                       scene::TextAlign::left, fade);
-            y += kNoticeHeight * kLineGap;
+            if (y + nh * (1.0f + kOvershoot) > nbox.max.y) break;
+            font_.draw(out, *l, {nbox.min.x, y}, nh, kNoticeColor, scene::TextAlign::left, fade);
+            y += nh * kLineGap;
         }
     }
 
     if (!footer_.empty()) {
-        const hud::Box rbox = hud::readout_box(a);
-        font_.draw(out, footer_, {rbox.max.x, rbox.min.y + kFooterHeight * kBaselineLift},
-                   kFooterHeight, kFooterColor, scene::TextAlign::right, 0.8f);
+        const hud::Box rbox = hud::readout_box(a, scale_);
+        // The strip is one line high at any text size (hud::readout_box grows with it).
+        const float fh =
+            std::min(kFooterHeight * scale_, rbox.height() / (kBaselineLift + 1.0f + kOvershoot));
+        font_.draw(out, footer_, {rbox.max.x, rbox.min.y + fh * kBaselineLift}, fh, kFooterColor,
+                   scene::TextAlign::right, 0.8f);
     }
 }
 

@@ -3,6 +3,7 @@
 // (game/hud/hud_layout.h) reserves for it: errors (level, model, shader, settings) in the error
 // box under the radar band, short notices (screenshot saved, volume) along the bottom, and the
 // footer's frame-rate readout. Drawn with the vector font so it glows like everything else.
+#include <algorithm>
 #include <array>
 #include <optional>
 #include <string>
@@ -33,6 +34,10 @@ class PlayOverlay {
     // The footer's right end (the frame-rate readout); empty hides it.
     void set_footer(std::string text) { footer_ = std::move(text); }
 
+    // The player's text size (the Comfort page's ui_scale, 1 to 2): every line is this much
+    // taller, wrapped and clipped to the same regions, so larger text never leaves them.
+    void set_text_scale(float scale) { scale_ = std::clamp(scale, 1.0f, 2.0f); }
+
     // Appends the overlay's lines (HUD units: y up, x in -aspect..aspect).
     void draw(std::vector<scene::HudLine>& out, double aspect) const;
     std::size_t notice_count() const { return notices_.size(); }
@@ -62,6 +67,7 @@ class PlayOverlay {
     std::array<Errors, static_cast<std::size_t>(ErrorKind::count)> errors_;
     std::vector<Notice> notices_;
     std::string footer_;
+    float scale_ = 1.0f;
 };
 
 }  // namespace bz::app

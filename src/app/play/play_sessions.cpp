@@ -329,6 +329,7 @@ class EditSession final : public PlaySession {
     void tick(const platform::InputState&) override { ++ticks_; }
     void update(const platform::FlyControls& fly, double dt) override { camera_.update(fly, dt); }
     // An editor shows the level as it is now: no phosphor trails of where the camera was.
+    void set_text_scale(float scale) override { text_scale_ = scale; }
     bool keeps_history() const override { return false; }
 
     scene::FrameList frame(double alpha, double aspect) override {
@@ -380,6 +381,8 @@ class EditSession final : public PlaySession {
         const std::string keys =
             "W A S D MOVE   R / F UP, DOWN   ARROWS OR RIGHT MOUSE LOOK   SHIFT FAST   "
             "F5 SHADERS   ESCAPE LEAVE";
+        // The footer holds these two lines at text size 1 only, so they keep it; each line no
+        // wider than the footer. The title above follows the player's text size.
         auto fit = [&](const std::string& text, float h) {
             const float w = font_->width(text, h);
             return w > f.width() ? h * f.width() / w : h;
@@ -388,8 +391,10 @@ class EditSession final : public PlaySession {
                     scene::TextAlign::left, 1.1f);
         font_->draw(out, keys, {f.min.x, f.min.y + 0.011f}, fit(keys, 0.03f), hud::kWhite,
                     scene::TextAlign::left, 0.8f);
-        font_->draw(out, "EDIT  " + level_.file.filename().string(), {f.max.x, 0.9f}, 0.04f,
-                    hud::kRed, scene::TextAlign::right);
+        const std::string title = "EDIT  " + level_.file.filename().string();
+        const float title_h = fit(title, 0.04f * text_scale_);
+        font_->draw(out, title, {f.max.x, 0.96f - title_h * 1.15f}, title_h, hud::kRed,
+                    scene::TextAlign::right);
     }
 
     // A world builds the obstacles through the factory table; its simulation never runs.
@@ -397,6 +402,7 @@ class EditSession final : public PlaySession {
         return game::World(lvl, 0, assets_->factories(), assets_->models()).obstacles();
     }
 
+    float text_scale_ = 1.0f;
     const scene::VectorFont* font_;
     level::Level level_;
     std::unique_ptr<game::Assets> assets_;

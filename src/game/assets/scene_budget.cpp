@@ -5,6 +5,8 @@
 #include "core/budgets.h"
 #include "core/error.h"
 #include "core/text/printable.h"
+#include "game/assets/models.h"
+#include "level/kinds.h"
 
 namespace bz::game {
 
@@ -34,14 +36,28 @@ std::string count(std::int64_t n) {
 SceneCost check_scene_budget(const level::Level& level,
                              const std::map<std::string, std::int64_t>& model_triangles) {
     SceneCost cost;
+    // Built-in kinds are counted by their own meshes (game/assets/models.h), so the count is
+    // what the GPU draws and follows any change to those meshes.
+    std::map<std::string, std::int64_t> builtin_triangles;
     std::set<std::string> counted;
     for (const level::ObjectDesc& o : level.obstacles) {
         ++cost.instances;
         if (cost.instances > budget::kSceneInstances)
             over(o, "objects", cost.instances, budget::kSceneInstances);
-        if (o.model.empty()) continue;
-        const auto it = model_triangles.find(o.model.string());
-        if (it == model_triangles.end()) continue;
+        const std::map<std::string, std::int64_t>* table = &model_triangles;
+        std::string key = o.model.string();
+        if (o.model.empty()) {
+            const level::BuiltinKind* kind = level::find_kind(o.kind);
+            if (!kind || kind->shape == level::KindShape::model) continue;
+            key = "builtin:" + o.kind;
+            if (!builtin_triangles.contains(key)) {
+                builtin_triangles[key] =
+                    static_cast<std::int64_t>(models::obstacle(*kind).triangle_count());
+            }
+            table = &builtin_triangles;
+        }
+        const auto it = table->find(key);
+        if (it == table->end()) continue;
         cost.triangles += it->second;
         if (cost.triangles > budget::kSceneTriangles)
             over(o, "triangles", cost.triangles, budget::kSceneTriangles);

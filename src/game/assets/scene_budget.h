@@ -14,13 +14,14 @@ namespace bz::game {
 
 struct SceneCost {
     std::int64_t instances = 0;
-    std::int64_t triangles = 0;  // each instance's model counted once per instance
+    std::int64_t triangles = 0;  // each instance's mesh (model or built-in) once per instance
     std::int64_t gpu_bytes = 0;  // distinct model meshes, estimated
 };
 
 // `model_triangles` maps each model path (ObjectDesc::model) to its triangle count; built-in
-// kinds are small and count as instances only. Throws UserError "FILE:LINE:COL: error: ..."
-// naming the first object that takes the scene over a budget. Returns the scene's cost.
+// kinds count their own meshes' triangles (and, once per kind, their GPU memory). Throws UserError
+// "FILE:LINE:COL: error: ..." naming the first object that takes the scene over a budget. Returns
+// the scene's cost.
 SceneCost check_scene_budget(const level::Level& level,
                              const std::map<std::string, std::int64_t>& model_triangles);
 

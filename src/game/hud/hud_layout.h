@@ -56,13 +56,18 @@ inline Box error_box(float aspect) {
     return {{-aspect + kMargin, kReticleHalfHeight + 0.04f},
             {aspect - kMargin, kBandBottom - 0.02f}};
 }
-inline Box notice_box(float aspect) {
-    return {{-aspect + kMargin, -0.818f}, {aspect - kMargin, -0.56f}};
+// The readout's strip is one line of text high, so larger text (the player's text size,
+// 1 to 2) makes it taller and the notices above it start higher.
+inline constexpr float kReadoutGrowth = 0.055f;  // per unit of text size over 1
+inline Box notice_box(float aspect, float text_scale = 1.0f) {
+    return {{-aspect + kMargin, -0.818f + (text_scale - 1.0f) * kReadoutGrowth},
+            {aspect - kMargin, -0.56f}};
 }
 // The frame-rate readout's own strip, between the notices and the footer: it never covers the
 // key hints of the title, pause and edit screens.
-inline Box readout_box(float aspect) {
-    return {{-aspect + kMargin, -0.875f}, {aspect - kMargin, -0.822f}};
+inline Box readout_box(float aspect, float text_scale = 1.0f) {
+    return {{-aspect + kMargin, -0.875f},
+            {aspect - kMargin, -0.822f + (text_scale - 1.0f) * kReadoutGrowth}};
 }
 inline Box footer_box(float aspect) {
     return {{-aspect + kMargin, -0.98f}, {aspect - kMargin, -0.88f}};

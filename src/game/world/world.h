@@ -142,6 +142,10 @@ class World {
 
     // Collision against obstacles on the ground plane; `height` lets hopping things pass over.
     const scene::Entity* obstacle_at(glm::dvec2 p, double radius, double base_height = 0.0) const;
+    // How far the eye backs off behind the tank's centre at `ground` facing `forward` (unit,
+    // xz), so that an obstacle just ahead shows its edges instead of filling the view. The
+    // view only: the simulation and its collision rule are untouched.
+    double eye_backoff(glm::dvec2 ground, glm::dvec2 forward) const;
     bool blocked(glm::dvec2 p, double radius, bool for_player) const;
     glm::dvec2 player_ground() const { return ground(cur_.player.body.transform.position); }
     glm::dvec2 view_to_world(glm::dvec2 view_offset) const;

@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "game/world/tuning.h"
+#include "game/world/view_tuning.h"
 #include "game/world/world.h"
 
 namespace bz::game {
@@ -95,6 +96,26 @@ double World::radar_sweep(double alpha) const {
     return 2.0 * kPi * std::fmod(t, period) / period;
 }
 
+double World::eye_backoff(glm::dvec2 ground_pos, glm::dvec2 forward) const {
+    using namespace view_tuning;
+    // The nearest obstacle ahead, within the clearance.
+    double ahead = kEyeClearance;
+    for (double d = 0.0; d < kEyeClearance; d += kEyeSearchStep) {
+        if (obstacle_at(ground_pos + forward * d, kEyeRadius) != nullptr) {
+            ahead = d;
+            break;
+        }
+    }
+    double back = std::min(kEyeClearance - ahead, kMaxEyeBackoff);
+    // Never into an obstacle behind, nor off the field's edge.
+    while (back > 0.0) {
+        const glm::dvec2 p = ground_pos - forward * back;
+        if (obstacle_at(p, kEyeRadius) == nullptr && field_.contains(p, kEyeRadius)) break;
+        back -= kEyeSearchStep;
+    }
+    return std::max(back, 0.0);
+}
+
 scene::FrameList World::interpolated_frame(double alpha, double fov_y_deg,
                                            double draw_distance) const {
     alpha = std::clamp(alpha, 0.0, 1.0);
@@ -106,7 +127,11 @@ scene::FrameList World::interpolated_frame(double alpha, double fov_y_deg,
     f.seed = static_cast<std::uint32_t>(cur_.tick);
     const scene::Transform eye_t =
         lerp(field_, prev_.player.body.transform, cur_.player.body.transform, alpha);
-    const glm::dvec2 eye_g = ground(eye_t.position);
+    const glm::dvec3 fwd3 = eye_t.forward();
+    const glm::dvec2 heading = glm::normalize(glm::dvec2(fwd3.x, fwd3.z));
+    const glm::dvec2 tank_g = ground(eye_t.position);
+    // Backed off along the heading, the reticle still marks where a shell goes.
+    const glm::dvec2 eye_g = field_.wrap(tank_g - heading * eye_backoff(tank_g, heading));
     f.camera.eye = {eye_g.x, tuning::kEyeHeight, eye_g.y};
     f.camera.target = f.camera.eye + eye_t.forward();
     f.camera.fov_y_deg = fov_y_deg;

@@ -21,6 +21,7 @@ void read_camera_path(const toml::table& root, Level& level, ReadContext& ctx) {
     level.camera_path.reserve(list->size());
     bool have_previous = false;
     double previous_time = 0.0;
+    glm::dvec3 previous_eye{}, previous_target{};
     for (std::size_t i = 0; i < list->size(); ++i) {
         const toml::node& item = *list->get(i);
         const auto* t = item.as_table();
@@ -58,8 +59,24 @@ void read_camera_path(const toml::table& root, Level& level, ReadContext& ctx) {
             ctx.diag.error(r.get("target")->source(), "the camera cannot make a picture: " + why);
             continue;
         }
+        // The path is played by moving eye and target linearly between keys: the views in
+        // between must make a picture too, not only the keys.
+        double at = 0.0;
+        if (have_previous) {
+            if (const std::string why = scene::path_view_problem(
+                    previous_eye, previous_target, *eye, *target, {0.0, 1.0, 0.0}, &at);
+                !why.empty()) {
+                ctx.diag.error(r.get("time")->source(),
+                               "on the way to this key from the one before (at time " +
+                                   number_text(previous_time + (*time - previous_time) * at) +
+                                   ") the camera cannot make a picture: " + why);
+                continue;
+            }
+        }
         have_previous = true;
         previous_time = *time;
+        previous_eye = *eye;
+        previous_target = *target;
         level.camera_path.push_back({*time, *eye, *target});
     }
 }

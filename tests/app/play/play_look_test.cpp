@@ -44,17 +44,18 @@ TEST(PlayLook, LevelStyleBeatsTheSettingsFileButNotTheCommandLine) {
     PlayLook look = choose_look(s, &lv);
     EXPECT_EQ(look.style, scene::LineStyle::arcade);
     EXPECT_EQ(look.render.preset, "fast") << "the player's machine decides the speed";
-    EXPECT_EQ(look.summary,
-              "style arcade (level), preset fast (settings file), beam mame (default), line width "
-              "3 px (level), "
-              "crease angle 45 deg (level), bloom strength 0.5 (level)");
+    EXPECT_EQ(
+        look.summary,
+        "style vector-xray (level), preset fast (settings file), beam mame (default), line width "
+        "3 px (level), "
+        "crease angle 45 deg (level), bloom strength 0.5 (level)");
 
     s.cli_style = "occluded";
     s.cli_preset = "balanced";
     look = choose_look(s, &lv);
     EXPECT_EQ(look.style, scene::LineStyle::occluded);
     EXPECT_EQ(look.render.preset, "balanced");
-    EXPECT_EQ(look.summary.substr(0, 52), "style occluded (command line), preset balanced (comm");
+    EXPECT_EQ(look.summary.substr(0, 50), "style vector (command line), preset balanced (comm");
 }
 
 TEST(PlayLook, LevelOverridesApplyOnTopOfAnyPreset) {
@@ -81,7 +82,7 @@ TEST(PlayLook, LevelPresetFillsInOnlyWhereTheSettingsNameNone) {
     EXPECT_EQ(look.render.preset, "fast");
     EXPECT_EQ(look.style, scene::LineStyle::arcade) << "the level names no style";
     EXPECT_EQ(look.summary,
-              "style arcade (settings file), preset fast (level), beam mame (default)");
+              "style vector-xray (settings file), preset fast (level), beam mame (default)");
 
     look = choose_look(from_settings("preset = \"high\"\n"), &lv);
     EXPECT_EQ(look.render.preset, "high");

@@ -106,3 +106,55 @@ TEST(PlayOverlay, NoticesAndFooterStayInTheirRegions) {
 
 }  // namespace
 }  // namespace bz::app
+
+namespace bz::app {
+namespace {
+
+// The height of the strokes in `lines` that lie inside `box`.
+float height_in(const std::vector<scene::HudLine>& lines, const hud::Box& box) {
+    float lo = 1e9f, hi = -1e9f;
+    for (const scene::HudLine& l : lines) {
+        if (!box.contains(l.a) || !box.contains(l.b)) continue;
+        lo = std::min({lo, l.a.y, l.b.y});
+        hi = std::max({hi, l.a.y, l.b.y});
+    }
+    return hi > lo ? hi - lo : 0.0f;
+}
+
+// The player's text size (Comfort page) reaches the overlay: at 2x the notice, the frame-rate
+// readout and the error box draw twice as tall as at 1x, each still inside its own region
+// (which for the readout strip and the notices grows with the text).
+TEST(PlayOverlay, TextFollowsTheTextSizeAndStaysInItsRegions) {
+    for (const double aspect : {4.0 / 3.0, 16.0 / 9.0}) {
+        const auto a = static_cast<float>(aspect);
+        float notice[2] = {}, readout[2] = {}, error[2] = {};
+        for (const int i : {0, 1}) {
+            const float scale = i == 0 ? 1.0f : 2.0f;
+            PlayOverlay o(font());
+            o.set_text_scale(scale);
+            o.notify("VOLUME 80");
+            o.set_footer("60 FPS 16.7 MS");
+            o.set_errors(ErrorKind::shader, {"LINES.GLSL 3 SYNTAX"});
+            std::vector<scene::HudLine> out;
+            o.draw(out, aspect);
+            for (const scene::HudLine& l : out) {
+                const bool in =
+                    (hud::notice_box(a, scale).contains(l.a) &&
+                     hud::notice_box(a, scale).contains(l.b)) ||
+                    (hud::readout_box(a, scale).contains(l.a) &&
+                     hud::readout_box(a, scale).contains(l.b)) ||
+                    (hud::error_box(a).contains(l.a) && hud::error_box(a).contains(l.b));
+                EXPECT_TRUE(in) << "scale " << scale << ": " << l.a.x << "," << l.a.y;
+            }
+            notice[i] = height_in(out, hud::notice_box(a, scale));
+            readout[i] = height_in(out, hud::readout_box(a, scale));
+            error[i] = height_in(out, hud::error_box(a));
+        }
+        EXPECT_NEAR(notice[1] / notice[0], 2.0f, 0.05f);
+        EXPECT_NEAR(error[1] / error[0], 2.0f, 0.3f);  // title and line, with the gap between
+        EXPECT_GT(readout[1] / readout[0], 1.9f);
+    }
+}
+
+}  // namespace
+}  // namespace bz::app

@@ -8,6 +8,8 @@
 
 #include "core/budgets.h"
 #include "core/error.h"
+#include "game/assets/models.h"
+#include "level/kinds.h"
 
 namespace {
 
@@ -38,9 +40,48 @@ TEST(SceneBudget, ALevelWithinTheBudgetsPassesWithItsCost) {
     for (int i = 0; i < 10; ++i) level.obstacles.push_back(object("tank.obj", 10 + i));
     level.obstacles.push_back(object("", 30));
     const auto cost = bz::game::check_scene_budget(level, {{"tank.obj", 1000}});
+    const std::int64_t cube = static_cast<std::int64_t>(
+        bz::game::models::obstacle(*bz::level::find_kind("cube")).triangle_count());
     EXPECT_EQ(cost.instances, 11);
-    EXPECT_EQ(cost.triangles, 10000);
-    EXPECT_EQ(cost.gpu_bytes, 1000 * bz::budget::kGpuBytesPerTriangle);  // one mesh, shared
+    EXPECT_EQ(cost.triangles, 10000 + cube);
+    // One model mesh and one cube mesh, each shared by its copies.
+    EXPECT_EQ(cost.gpu_bytes, (1000 + cube) * bz::budget::kGpuBytesPerTriangle);
+}
+
+// Every built-in kind counts the triangles of its own mesh, once per placed copy: a level of
+// built-in obstacles alone has a triangle cost, and one that fills the budget with a model
+// is refused at the built-in obstacle that crosses it.
+TEST(SceneBudget, BuiltInObstaclesCountTheirMeshesTriangles) {
+    bz::level::Level level;
+    std::int64_t expected = 0;
+    int line = 10;
+    for (const bz::level::BuiltinKind& kind : bz::level::builtin_kinds()) {
+        if (kind.shape == bz::level::KindShape::model) continue;
+        const auto tris =
+            static_cast<std::int64_t>(bz::game::models::obstacle(kind).triangle_count());
+        ASSERT_GT(tris, 0) << kind.name;
+        for (int copy = 0; copy < 3; ++copy) {
+            bz::level::ObjectDesc o = object("", line++);
+            o.kind = std::string(kind.name);
+            level.obstacles.push_back(o);
+            expected += tris;
+        }
+    }
+    const auto cost = bz::game::check_scene_budget(level, {});
+    EXPECT_EQ(cost.triangles, expected);
+    EXPECT_GT(cost.gpu_bytes, 0);
+
+    // Copies of a model that fill the triangle budget exactly; one cube more crosses it.
+    bz::level::Level full;
+    const std::int64_t per_copy = 1'000'000;
+    const int copies = static_cast<int>(bz::budget::kSceneTriangles / per_copy);
+    for (int i = 0; i < copies; ++i) full.obstacles.push_back(object("m.obj", 100 + i));
+    ASSERT_EQ(refusal(full, {{"m.obj", per_copy}}), "");
+    full.obstacles.push_back(object("", 100 + copies));  // a cube
+    const std::string why = refusal(full, {{"m.obj", per_copy}});
+    EXPECT_NE(why.find("big.toml:" + std::to_string(100 + copies) + ":1: error"), std::string::npos)
+        << why;
+    EXPECT_NE(why.find("triangles"), std::string::npos) << why;
 }
 
 TEST(SceneBudget, EachBudgetNamesTheLineThatCrossesIt) {

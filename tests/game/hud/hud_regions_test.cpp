@@ -29,30 +29,33 @@ bool overlap(const hud::Box& a, const hud::Box& b) {
 }
 
 TEST(HudRegions, RegionsDoNotOverlapAtCommonAspects) {
-    for (const float aspect : {4.0f / 3.0f, 16.0f / 10.0f, 16.0f / 9.0f, 21.0f / 9.0f}) {
-        const std::vector<hud::Box> boxes = {hud::radar_box(),        hud::messages_box(aspect),
-                                             hud::score_box(aspect),  hud::lives_box(aspect),
-                                             hud::error_box(aspect),  hud::notice_box(aspect),
-                                             hud::footer_box(aspect), hud::readout_box(aspect)};
-        for (std::size_t i = 0; i < boxes.size(); ++i) {
-            EXPECT_GT(boxes[i].width(), 0.0f) << i;
-            EXPECT_GT(boxes[i].height(), 0.0f) << i;
-            EXPECT_GE(boxes[i].min.x, -aspect) << i;
-            EXPECT_LE(boxes[i].max.x, aspect) << i;
-            for (std::size_t j = i + 1; j < boxes.size(); ++j) {
-                EXPECT_FALSE(overlap(boxes[i], boxes[j])) << i << " and " << j << " at " << aspect;
+    // The readout strip and the notices move with the text size: at either end of it.
+    for (const float ts : {1.0f, 2.0f})
+        for (const float aspect : {4.0f / 3.0f, 16.0f / 10.0f, 16.0f / 9.0f, 21.0f / 9.0f}) {
+            const std::vector<hud::Box> boxes = {
+                hud::radar_box(),        hud::messages_box(aspect),   hud::score_box(aspect),
+                hud::lives_box(aspect),  hud::error_box(aspect),      hud::notice_box(aspect, ts),
+                hud::footer_box(aspect), hud::readout_box(aspect, ts)};
+            for (std::size_t i = 0; i < boxes.size(); ++i) {
+                EXPECT_GT(boxes[i].width(), 0.0f) << i;
+                EXPECT_GT(boxes[i].height(), 0.0f) << i;
+                EXPECT_GE(boxes[i].min.x, -aspect) << i;
+                EXPECT_LE(boxes[i].max.x, aspect) << i;
+                for (std::size_t j = i + 1; j < boxes.size(); ++j) {
+                    EXPECT_FALSE(overlap(boxes[i], boxes[j]))
+                        << i << " and " << j << " at " << aspect;
+                }
             }
+            // The band's regions are above its bottom edge; the rest below.
+            for (const hud::Box& b : {hud::radar_box(), hud::messages_box(aspect),
+                                      hud::score_box(aspect), hud::lives_box(aspect)}) {
+                EXPECT_GE(b.min.y, hud::kBandBottom);
+            }
+            EXPECT_LE(hud::error_box(aspect).max.y, hud::kBandBottom);
+            // The reticle sits between the error box and the notices.
+            EXPECT_GT(hud::error_box(aspect).min.y, hud::kReticleHalfHeight);
+            EXPECT_LT(hud::notice_box(aspect, ts).max.y, -hud::kReticleHalfHeight);
         }
-        // The band's regions are above its bottom edge; the rest below.
-        for (const hud::Box& b : {hud::radar_box(), hud::messages_box(aspect),
-                                  hud::score_box(aspect), hud::lives_box(aspect)}) {
-            EXPECT_GE(b.min.y, hud::kBandBottom);
-        }
-        EXPECT_LE(hud::error_box(aspect).max.y, hud::kBandBottom);
-        // The reticle sits between the error box and the notices.
-        EXPECT_GT(hud::error_box(aspect).min.y, hud::kReticleHalfHeight);
-        EXPECT_LT(hud::notice_box(aspect).max.y, -hud::kReticleHalfHeight);
-    }
 }
 
 TEST(HudRegions, EachPartDrawsOnlyInItsRegion) {

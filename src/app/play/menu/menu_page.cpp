@@ -106,19 +106,26 @@ Placement place(const scene::VectorFont& font, const Page& page, std::size_t sel
          ++i, y -= l.row_step) {
         const Row& r = page.rows[i];
         float x0 = pl.label_x, x1 = pl.label_x + table_w;
+        float row_h = h;
         if (!page.columns) {
             std::string text = r.label;
             if (!r.value.empty()) text += "   < " + r.value + " >";
-            const float half = font.width(text, h) * 0.5f;
+            // A centred row wider than the screen (a long level name beside LEVEL) gets
+            // smaller text, leaving room for the selection marks either side.
+            const float row_room = room - 2.0f * (0.08f * scale + h);
+            const float w = font.width(text, h);
+            if (w > row_room) row_h = h * row_room / w;
+            const float half = font.width(text, row_h) * 0.5f;
             x0 = -half;
             x1 = half;
         }
         // The row's box reaches half a step either side of its text, so the rows tile.
         const float pad = 0.1f * scale;
-        pl.rows.push_back({i,
-                           y,
-                           {{x0 - pad, y - 0.5f * (l.row_step - h)},
-                            {x1 + pad, y + h + 0.5f * (l.row_step - h)}}});
+        pl.rows.push_back(
+            {i,
+             y,
+             {{x0 - pad, y - 0.5f * (l.row_step - h)}, {x1 + pad, y + h + 0.5f * (l.row_step - h)}},
+             row_h});
     }
     pl.after_rows_y = y;
     return pl;
@@ -157,14 +164,15 @@ void draw(std::vector<scene::HudLine>& out, const scene::VectorFont& font, const
         const glm::vec3 color = sel ? kSelectedColor : kRowColor;
         const float glow = sel ? 1.5f : 0.9f;
         if (!page.columns) {
+            const float rh = placed.text_height;
             std::string text = r.label;
             if (!r.value.empty())
                 text += "   " + (sel && r.choice ? "< " + r.value + " >" : r.value);
-            font.draw(out, text, {0.0f, y}, h, color, TextAlign::center, glow);
+            font.draw(out, text, {0.0f, y}, rh, color, TextAlign::center, glow);
             if (sel && blink_on) {
-                const float half = font.width(text, h) * 0.5f + 0.08f * scale;
-                font.draw(out, ">", {-half, y}, h, kSelectedColor, TextAlign::right, 1.5f);
-                font.draw(out, "<", {half, y}, h, kSelectedColor, TextAlign::left, 1.5f);
+                const float half = font.width(text, rh) * 0.5f + 0.08f * scale;
+                font.draw(out, ">", {-half, y}, rh, kSelectedColor, TextAlign::right, 1.5f);
+                font.draw(out, "<", {half, y}, rh, kSelectedColor, TextAlign::left, 1.5f);
             }
             continue;
         }

@@ -68,9 +68,10 @@ Window scroll_window(std::size_t rows, std::size_t selected, std::size_t visible
 // Where a page's rows go (HUD units) at a text scale (the UI scale setting, 1 to 2): drawing
 // and the mouse use the same placement, so a row is hit where it is drawn.
 struct PlacedRow {
-    std::size_t row = 0;  // index into Page::rows
-    float y = 0.0f;       // text baseline
-    game::hud::Box box;   // where the pointer picks it
+    std::size_t row = 0;       // index into Page::rows
+    float y = 0.0f;            // text baseline
+    game::hud::Box box;        // where the pointer picks it
+    float text_height = 0.0f;  // a centred row too wide for the screen is drawn smaller
 };
 struct Placement {
     Layout layout;

@@ -157,32 +157,35 @@ std::string action_label(Action a) {
     return upper(std::string(platform::action_name(a)));
 }
 
-std::string pad_label(Action a, platform::GamepadMode mode) {
-    const bool tank = mode == platform::GamepadMode::tank;
+// The pad's controls of an action on the Controls page: its sticks (by the gamepad layout),
+// then its buttons as bound ([buttons] in the settings, rebound on the Keys page).
+std::string pad_label(Action a, const platform::Settings& st) {
+    const bool tank = st.gamepad == platform::GamepadMode::tank;
+    std::string sticks;
     switch (a) {
         case Action::left_tread_forward:
         case Action::left_tread_back:
-            return tank ? "LEFT STICK" : "";
+            sticks = tank ? "LEFT STICK" : "";
+            break;
         case Action::right_tread_forward:
         case Action::right_tread_back:
-            return tank ? "RIGHT STICK" : "";
+            sticks = tank ? "RIGHT STICK" : "";
+            break;
         case Action::drive_forward:
         case Action::drive_back:
-            return tank ? "D-PAD (MENUS)" : "LEFT STICK";
         case Action::turn_left:
         case Action::turn_right:
-            return tank ? "D-PAD (MENUS)" : "LEFT STICK";
+            sticks = tank ? "D-PAD (MENUS)" : "LEFT STICK";
+            break;
         case Action::fire:
-            return "A, R1, TRIGGERS";
-        case Action::pause:
-            return "START";
-        case Action::start:
-            return "A, START";
-        case Action::back:
-            return "B, BACK";
+            sticks = "TRIGGERS";
+            break;
         default:
-            return "";
+            break;
     }
+    const std::string buttons = platform::buttons_label(st.buttons, a);
+    if (sticks.empty()) return buttons;
+    return buttons.empty() ? sticks : buttons + ", " + sticks;
 }
 
 PlayMenus::PlayMenus(Env env) : env_(std::move(env)) {}
@@ -223,7 +226,7 @@ std::string PlayMenus::hint(Screen s) const {
             return choose + "   " + hint_keys(b, Action::turn_left) + " / " +
                    hint_keys(b, Action::turn_right) + " CHANGE   " + back + pad;
         case Screen::keys:
-            return capturing_ ? std::string("PRESS THE NEW KEY   ESCAPE CANCELS")
+            return capturing_ ? std::string("PRESS THE NEW KEY OR BUTTON   ESCAPE CANCELS")
                               : choose + "   " + select + " TO REBIND   " + back;
         default:
             return choose + "   " + select + "   " + back + pad;
@@ -295,7 +298,7 @@ Page PlayMenus::build(Screen s) const {
                 choice("GAMEPAD LAYOUT", tank ? "TANK" : "DRIVE",
                        tank ? "STICK PER TREAD" : "LEFT STICK"),
                 item("KEYS"),
-                item("RESET KEYS TO DEFAULTS"),
+                item("RESET KEYS AND BUTTONS"),
                 item("BACK"),
             };
             if (vsync_note.size()) p.rows[o_vsync].warn = true;
@@ -344,7 +347,8 @@ Page PlayMenus::build(Screen s) const {
             p.columns = true;
             for (std::size_t i = 0; i < platform::kActionCount; ++i) {
                 const auto a = static_cast<Action>(i);
-                Row r = item(action_label(a), platform::keys_label(st.keys, a, 3));
+                Row r = item(action_label(a), platform::keys_label(st.keys, a, 3),
+                             platform::buttons_label(st.buttons, a));
                 for (const platform::KeyBinding& k : st.keys[i]) {
                     if (const auto other = platform::conflicting_action(st.keys, a, k)) {
                         r.warn = true;
@@ -356,7 +360,7 @@ Page PlayMenus::build(Screen s) const {
             }
             p.rows.push_back(item("BACK"));
             if (capturing_) {
-                p.lines.push_back("PRESS A KEY FOR " +
+                p.lines.push_back("PRESS A KEY OR A PAD BUTTON FOR " +
                                   action_label(static_cast<Action>(selected())));
             } else if (!status_.empty()) {
                 p.lines.push_back(status_);
@@ -368,8 +372,8 @@ Page PlayMenus::build(Screen s) const {
             p.columns = true;
             for (std::size_t i = 0; i < platform::kActionCount; ++i) {
                 const auto a = static_cast<Action>(i);
-                p.rows.push_back(item(action_label(a), platform::keys_label(st.keys, a, 3),
-                                      pad_label(a, st.gamepad)));
+                p.rows.push_back(
+                    item(action_label(a), platform::keys_label(st.keys, a, 3), pad_label(a, st)));
             }
             p.rows.push_back(item("BACK"));
             break;
@@ -614,6 +618,7 @@ std::vector<Request> PlayMenus::confirm() {
                 open_page(Screen::arcade);
             } else if (row == o_reset_keys) {
                 env_.settings->keys = platform::default_bindings();
+                env_.settings->buttons = platform::default_pad_bindings();
                 out.push_back({Request::Kind::settings_changed});
             } else {
                 out = change(1);
@@ -716,6 +721,18 @@ std::vector<Request> PlayMenus::captured(const platform::KeyBinding& key) {
     if (const auto other = platform::conflicting_action(env_.settings->keys, action, key)) {
         status_ += " - ALSO BOUND TO " + action_label(*other);
     }
+    out.push_back({Request::Kind::settings_changed});
+    return out;
+}
+
+std::vector<Request> PlayMenus::captured_button(int button) {
+    std::vector<Request> out;
+    if (!capturing_) return out;
+    capturing_ = false;
+    if (selected() >= platform::kActionCount) return out;
+    const auto action = static_cast<Action>(selected());
+    env_.settings->buttons[selected()] = {button};
+    status_ = action_label(action) + " IS NOW BUTTON " + platform::button_label(button);
     out.push_back({Request::Kind::settings_changed});
     return out;
 }

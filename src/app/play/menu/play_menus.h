@@ -82,6 +82,8 @@ class PlayMenus {
                                  double aspect);
     // The key pressed after a begin_capture request (Input::kCaptureCancelled: none).
     std::vector<Request> captured(const platform::KeyBinding& key);
+    // The gamepad button pressed after a begin_capture request: bound to the selected action.
+    std::vector<Request> captured_button(int button);
     bool capturing() const { return capturing_; }
 
     Page page() const;  // the page shown now, as data
@@ -133,6 +135,6 @@ class PlayMenus {
 
 // Human names for actions and gamepad buttons, as the controls screen shows them.
 std::string action_label(platform::Action a);
-std::string pad_label(platform::Action a, platform::GamepadMode mode);
+std::string pad_label(platform::Action a, const platform::Settings& settings);
 
 }  // namespace bz::app::menu

@@ -1,5 +1,6 @@
 #include "app/play/menu/play_menus.h"
 
+#include <SDL_gamecontroller.h>
 #include <SDL_scancode.h>
 #include <gtest/gtest.h>
 
@@ -104,7 +105,7 @@ TEST(PlayMenus, OptionsChangeTheSettingsAndAskToApplyThem) {
               (std::vector<std::string>{"DIFFICULTY", "PRESET", "STYLE", "BEAM", "EFFECTS VOLUME",
                                         "FULLSCREEN", "VSYNC", "SHOW FPS", "FRAME RATE CAP",
                                         "COMFORT AND TEXT", "ARCADE SETTINGS", "GAMEPAD LAYOUT",
-                                        "KEYS", "RESET KEYS TO DEFAULTS", "BACK"}));
+                                        "KEYS", "RESET KEYS AND BUTTONS", "BACK"}));
     const std::vector<Request> changed{{Kind::settings_changed}};
     EXPECT_EQ(f.keys({MenuKey::right}), changed);
     EXPECT_EQ(f.settings.difficulty, "easy");
@@ -253,7 +254,7 @@ TEST(PlayMenus, MouseHoverSelectsClickChoosesWheelScrollsRightClickGoesBack) {
             for (int i = 0; i < 30; ++i) f.menus.pointer(P::wheel_down, {}, font(), aspect);
             EXPECT_EQ(f.menus.page().rows[f.menus.selected()].label, "BACK");
             f.menus.pointer(P::wheel_up, {}, font(), aspect);
-            EXPECT_EQ(f.menus.page().rows[f.menus.selected()].label, "RESET KEYS TO DEFAULTS");
+            EXPECT_EQ(f.menus.page().rows[f.menus.selected()].label, "RESET KEYS AND BUTTONS");
             // A click on a setting changes it.
             const auto fps = centre_of(f.menus, 7, aspect, scale);
             const auto r = f.menus.pointer(P::click, fps, font(), aspect);
@@ -311,7 +312,7 @@ TEST(PlayMenus, RebindingCapturesAKeyAndShowsConflicts) {
     EXPECT_EQ(f.menus.page().rows[f.menus.selected()].label, "FIRE");
     EXPECT_EQ(f.keys({MenuKey::confirm}), std::vector<Request>{{Kind::begin_capture}});
     EXPECT_TRUE(f.menus.capturing());
-    EXPECT_EQ(f.menus.page().lines.at(0), "PRESS A KEY FOR FIRE");
+    EXPECT_EQ(f.menus.page().lines.at(0), "PRESS A KEY OR A PAD BUTTON FOR FIRE");
     EXPECT_TRUE(f.keys({MenuKey::down}).empty());  // keys wait for the capture
     // P is pause's key: bound, and shown as a conflict on both rows.
     const platform::KeyBinding p{SDL_SCANCODE_P, platform::kModNone};
@@ -339,6 +340,31 @@ TEST(PlayMenus, RebindingCapturesAKeyAndShowsConflicts) {
     EXPECT_EQ(f.settings.keys, platform::default_bindings());
 }
 
+// A pad button pressed while the keys page captures binds the button to the action: shown on
+// the Keys and Controls pages, saved in the settings, and put back by RESET.
+TEST(PlayMenus, RebindingCapturesAPadButton) {
+    Fixture f;
+    f.menus.set_context(Context::title);
+    f.menus.open_page(PlayMenus::Screen::options);
+    f.keys({MenuKey::up, MenuKey::up, MenuKey::up, MenuKey::confirm});  // BACK, RESET, KEYS
+    ASSERT_EQ(f.menus.screen(), PlayMenus::Screen::keys);
+    for (int i = 0; i < static_cast<int>(platform::Action::fire); ++i) f.keys({MenuKey::down});
+    EXPECT_EQ(f.menus.page().rows[f.menus.selected()].note, "A, R1");
+    EXPECT_EQ(f.keys({MenuKey::confirm}), std::vector<Request>{{Kind::begin_capture}});
+    EXPECT_EQ(f.menus.captured_button(SDL_CONTROLLER_BUTTON_X),
+              std::vector<Request>{{Kind::settings_changed}});
+    EXPECT_FALSE(f.menus.capturing());
+    EXPECT_EQ(f.settings.buttons[static_cast<std::size_t>(platform::Action::fire)],
+              std::vector<int>{SDL_CONTROLLER_BUTTON_X});
+    EXPECT_EQ(f.menus.page().rows[f.menus.selected()].note, "X");
+    EXPECT_EQ(f.menus.page().lines.at(0), "FIRE IS NOW BUTTON X");
+    // Without a capture a button binds nothing.
+    EXPECT_TRUE(f.menus.captured_button(SDL_CONTROLLER_BUTTON_Y).empty());
+    f.keys({MenuKey::back, MenuKey::down});  // KEYS -> RESET
+    EXPECT_EQ(f.keys({MenuKey::confirm}), std::vector<Request>{{Kind::settings_changed}});
+    EXPECT_EQ(f.settings.buttons, platform::default_pad_bindings());
+}
+
 TEST(PlayMenus, DefaultKeysHaveNoConflicts) {
     EXPECT_TRUE(platform::actions_in_conflict(platform::default_bindings()).empty());
 }
@@ -354,7 +380,7 @@ TEST(PlayMenus, ControlsShowTheBoundKeysAndPadButtons) {
     const Row& fire = p.rows[static_cast<std::size_t>(platform::Action::fire)];
     EXPECT_EQ(fire.label, "FIRE");
     EXPECT_EQ(fire.value, "RIGHT SHIFT");
-    EXPECT_EQ(fire.note, "A, R1, TRIGGERS");
+    EXPECT_EQ(fire.note, "A, R1, TRIGGERS");  // the default buttons, then the triggers
     const Row& left = p.rows[static_cast<std::size_t>(platform::Action::left_tread_forward)];
     EXPECT_EQ(left.value, "Q");
     EXPECT_EQ(left.note, "LEFT STICK");

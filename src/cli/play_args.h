@@ -1,5 +1,5 @@
 #pragma once
-// The command line of `beamzone play`.
+// The command line of `beamzone play`, parsed without a window or GL.
 #include <cstdint>
 #include <glm/glm.hpp>
 #include <optional>
@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "cli/cli_args.h"
 #include "platform/bindings.h"
 #include "platform/gl_context.h"
 
@@ -42,10 +43,7 @@ struct PlayOptions {
     bool help = false;
 };
 
-// Throws UsageError (app/commands/cli_args.h) naming the bad option.
+// Throws UsageError (cli/cli_args.h) naming the bad option.
 PlayOptions parse_play_options(int argc, char* const* argv);
-
-// The --help text, with the user's settings and high-score files named.
-std::string play_usage(const std::string& settings_path, const std::string& high_scores_path);
 
 }  // namespace bz::app

@@ -2,6 +2,7 @@
 // Small, strict parsers for command-line values. Each throws UsageError with a message that
 // names the option and what was expected.
 #include <glm/glm.hpp>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -9,6 +10,8 @@
 #include "scene/style.h"
 
 namespace bz::app {
+
+using Args = std::span<char* const>;  // arguments after the subcommand name
 
 class UsageError : public std::runtime_error {
   public:

@@ -1,4 +1,4 @@
-#include "app/commands/cli_args.h"
+#include "cli/cli_args.h"
 
 #include <charconv>
 #include <cmath>

@@ -1,0 +1,117 @@
+#include "cli/render_args.h"
+
+#include "core/budgets.h"
+#include "core/error.h"
+#include "core/text/printable.h"
+#include "scene/style_table.h"
+
+namespace bz::app {
+
+const std::string& render_usage() {
+    static const std::string text =
+        std::string(
+            "usage: beamzone render INPUT [--eye x,y,z] [--target x,y,z] [--up x,y,z] [--fov DEG]\n"
+            "                       [--near N] [--far F] [--size WxH] [--preset "
+            "fast|balanced|high]\n"
+            "                       [--line-method compute|geometry_shader|auto|image_outline]\n"
+            "                       [--style NAME] [--shading flat|smooth] [--no-smoothing] "
+            "[--one-sided]\n"
+            "                       [--color r,g,b] [--out frame.png]\n"
+            "                       [--mask mask.png] [--repeat N] [--copies N] [--beam "
+            "classic|mame]\n"
+            "                       [--lit-share] [--no-cluster-culling] [--svg lines.svg]\n"
+            "                       [--overwrite]\n"
+            "Renders a model file (or builtin:cube, builtin:sphere, builtin:grid) headless to PNG. "
+            "Without "
+            "--eye the camera frames the model's bounding\n"
+            "box from a 3/4 view. --mask writes the 1-pixel visible-spine mask (255 = line).\n"
+            "--style: the frame's style (default vector):\n") +
+        scene::style_help() +
+        std::string(
+            "--shading: filled styles' normals.\n"
+            "--no-smoothing: the halo style's silhouettes stay polygonal (no cubic smoothing).\n"
+            "--one-sided: toon / pop-art outlines extruded outward and depth-tested, not centred.\n"
+            "--repeat N renders N timed frames and prints the mean milliseconds of each pass.\n"
+            "--copies N draws N instances of the model on a square grid in the xz plane (a scene "
+            "of a\n"
+            "chosen size for timing; the camera frames them all).\n"
+            "--beam picks the vector beam's look (default mame, as `play` and `bench`).\n"
+            "--no-cluster-culling draws whole meshes in the depth prepass and the fills (the same\n"
+            "picture; for timing what culling triangle clusters saves).\n"
+            "--lit-share prints the share of the picture's pixels whose brightest channel is "
+            "above\n"
+            "1/255 (the haze figure; tools/haze measures Bernardoni 2018's hallway with it).\n"
+            "--svg writes the frame's exact visible lines (the CPU reference's) as SVG: polylines\n"
+            "ordered for a pen plotter, one group per line kind, in the style's colours.\n"
+            "An existing file at --out, --mask or --svg must be a PNG unless --overwrite is given; "
+            "an "
+            "input,\n"
+            "a device, a FIFO or a folder there is never replaced.\n");
+    return text;
+}
+
+RenderOptions parse_render_args(Args args) {
+    RenderOptions o;
+    ArgCursor cur(static_cast<int>(args.size()), args.data());
+    while (!cur.done()) {
+        const std::string_view a = cur.next();
+        if (parse_camera_option(a, cur, o.camera)) continue;
+        if (a == "--preset")
+            o.preset = cur.value(a);
+        else if (a == "--line-method")
+            o.line_method = cur.value(a);
+        else if (a == "--color")
+            o.color = parse_vec3(a, cur.value(a));
+        else if (a == "--out")
+            o.out = cur.value(a);
+        else if (a == "--mask")
+            o.mask = cur.value(a);
+        else if (a == "--repeat")
+            o.repeat = parse_int(a, cur.value(a), 1, 100000);
+        else if (a == "--copies")
+            o.copies = parse_int(a, cur.value(a), 1, budget::kRenderCopies);
+        else if (a == "--beam")
+            o.beam = cur.value(a);
+        else if (a == "--svg")
+            o.svg = cur.value(a);
+        else if (a == "--lit-share")
+            o.lit_share = true;
+        else if (a == "--no-cluster-culling")
+            o.cluster_culling = false;
+        else if (a == "--overwrite")
+            o.overwrite = true;
+        else if (a == "--style") {
+            o.style = parse_style(a, cur.value(a));
+        } else if (a == "--no-smoothing") {
+            o.smoothing = false;
+        } else if (a == "--one-sided") {
+            o.one_sided = true;
+        } else if (a == "--shading") {
+            const std::string_view s = cur.value(a);
+            if (s != "flat" && s != "smooth")
+                throw UsageError("--shading: expected flat or smooth");
+            o.smooth = s == "smooth";
+        } else if (!a.empty() && a[0] == '-') {
+            throw UsageError("unknown option " + printable(a));
+        } else if (o.input.empty()) {
+            o.input = a;
+        } else {
+            throw UsageError("more than one INPUT given");
+        }
+    }
+    if (o.input.empty()) throw UsageError("no INPUT model given");
+    if (o.out == o.mask) throw UsageError("--out and --mask name the same file");
+    if (!o.svg.empty() && (o.svg == o.out || o.svg == o.mask))
+        throw UsageError("--svg names the same file as --out or --mask");
+    validate_camera(o.camera);
+    try {  // an unknown preset, beam or line method is a usage error
+        render::preset(o.preset);
+        render::beam_look(o.beam);
+        if (!o.line_method.empty()) render::parse_line_method(o.line_method);
+    } catch (const UserError& e) {
+        throw UsageError(e.what());
+    }
+    return o;
+}
+
+}  // namespace bz::app

@@ -1,0 +1,39 @@
+#pragma once
+// The command line of `beamzone render`: parsed and checked without a model, a level or GL, so
+// the fuzz target (tests/fuzz/cli_fuzz.cpp) runs this very code.
+#include <glm/glm.hpp>
+#include <string>
+
+#include "cli/camera_options.h"
+#include "render/settings.h"
+#include "scene/style.h"
+
+namespace bz::app {
+
+const std::string& render_usage();  // the --help text
+
+struct RenderOptions {
+    std::string input;
+    CameraArgs camera;  // shared with `reference`, so both place the camera alike
+    std::string preset = "balanced";
+    std::string line_method;  // empty: the preset's
+    scene::Style style = scene::Style::vector;
+    bool smooth = true;      // filled styles: smooth vertex normals (--shading flat: faces)
+    bool smoothing = true;   // halo: cubic silhouette smoothing (--no-smoothing: plain)
+    bool one_sided = false;  // toon / pop-art: one-sided outline quads
+    glm::dvec3 color{0.25, 1.0, 0.35};
+    std::string out = "frame.png";
+    std::string mask;
+    std::string svg;
+    int repeat = 0;
+    int copies = 1;
+    std::string beam{render::kDefaultBeamLook};
+    bool lit_share = false;
+    bool cluster_culling = true;  // --no-cluster-culling: whole meshes in prepass and fills
+    bool overwrite = false;       // may replace an existing file that is not a PNG
+};
+
+// Throws UsageError naming the bad option.
+RenderOptions parse_render_args(Args args);
+
+}  // namespace bz::app
