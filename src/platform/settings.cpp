@@ -269,8 +269,11 @@ class Reader {
             for (const toml::node* item : items) {
                 const auto text = item->value_exact<std::string>();
                 std::string why;
-                const auto button = text ? parse_button(*text, &why) : std::nullopt;
-                if (!text) why = "a button must be a string such as \"a\"";
+                std::optional<int> button;
+                if (text)
+                    button = parse_button(*text, &why);
+                else
+                    why = "a button must be a string such as \"a\"";
                 if (!button) {
                     error(item,
                           printable(name.str()) + ": " + why + "; keeping the default buttons");
