@@ -26,6 +26,8 @@ rows=(
   "render --out|tet.obj|out.png|render tet.obj --size 32x24 --out @T"
   "render --mask|tet.obj|out.png|render tet.obj --size 32x24 --out @T.ok.png --mask @T"
   "reference --mask|tet.obj|out.png|reference tet.obj --size 32x24 --mask @T"
+  "render --svg|tet.obj|out.svg|render tet.obj --size 32x24 --out @T.ok.png --svg @T"
+  "reference --svg|tet.obj|out.svg|reference tet.obj --size 32x24 --mask @T.ok.png --svg @T"
   "difficulty --json|mine.toml|out.json|difficulty mine.toml --seeds 1 --seconds 1 --json @T"
   "play --record|mine.toml|out.replay|play mine.toml --headless-test --frames 5 --record @T"
   "replay --record-demo|mine.toml|out.replay|replay @T --record-demo 1 --level mine.toml"
