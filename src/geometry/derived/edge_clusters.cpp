@@ -1,11 +1,11 @@
 #include "geometry/derived/edge_clusters.h"
 
-#include <meshoptimizer.h>
-
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <numeric>
+
+#include "geometry/derived/meshlets.h"
 
 namespace bz::geo {
 
@@ -32,15 +32,7 @@ std::vector<std::uint32_t> meshlet_of_triangles(const AdjacencyMesh& mesh) {
     const std::size_t tris = mesh.triangle_count();
     std::vector<std::uint32_t> out(tris, kNoVertex);
     if (tris == 0) return out;
-    const std::size_t bound =
-        meshopt_buildMeshletsBound(mesh.triangles.size(), kMeshletVertices, kMeshletTriangles);
-    std::vector<meshopt_Meshlet> meshlets(bound);
-    std::vector<unsigned int> vertices(bound * kMeshletVertices);
-    std::vector<unsigned char> local(bound * kMeshletTriangles * 3);
-    meshlets.resize(
-        meshopt_buildMeshlets(meshlets.data(), vertices.data(), local.data(), mesh.triangles.data(),
-                              mesh.triangles.size(), &mesh.positions[0].x, mesh.positions.size(),
-                              sizeof(glm::vec3), kMeshletVertices, kMeshletTriangles, kConeWeight));
+    const Meshlets built = build_meshlets(mesh, kMeshletVertices, kMeshletTriangles, kConeWeight);
     // Match the meshlets' triangles to the mesh's by their vertices: both lists sorted by key
     // (then by index, so repeated triangles pair off in order).
     std::vector<std::pair<TriangleKey, std::uint32_t>> original(tris), placed;
@@ -49,13 +41,12 @@ std::vector<std::uint32_t> meshlet_of_triangles(const AdjacencyMesh& mesh) {
         original[t] = {triangle_key(v[0], v[1], v[2]), static_cast<std::uint32_t>(t)};
     }
     placed.reserve(tris);
-    for (std::size_t m = 0; m < meshlets.size(); ++m) {
-        const meshopt_Meshlet& ml = meshlets[m];
+    for (std::size_t m = 0; m < built.meshlets.size(); ++m) {
+        const meshopt_Meshlet& ml = built.meshlets[m];
         for (std::size_t t = 0; t < ml.triangle_count; ++t) {
-            const unsigned char* l = &local[ml.triangle_offset + 3 * t];
-            const unsigned int* mv = &vertices[ml.vertex_offset];
-            placed.push_back(
-                {triangle_key(mv[l[0]], mv[l[1]], mv[l[2]]), static_cast<std::uint32_t>(m)});
+            placed.push_back({triangle_key(built.vertex(ml, t, 0), built.vertex(ml, t, 1),
+                                           built.vertex(ml, t, 2)),
+                              static_cast<std::uint32_t>(m)});
         }
     }
     std::sort(original.begin(), original.end());

@@ -1,6 +1,6 @@
 #include "geometry/derived/triangle_clusters.h"
 
-#include <meshoptimizer.h>
+#include "geometry/derived/meshlets.h"
 
 namespace bz::geo {
 
@@ -31,34 +31,25 @@ ClusteredTriangles one_cluster(const AdjacencyMesh& mesh) {
 ClusteredTriangles cluster_triangles(const AdjacencyMesh& mesh) {
     const std::size_t tris = mesh.triangle_count();
     if (tris == 0 || mesh.positions.empty()) return one_cluster(mesh);
-    const std::size_t bound =
-        meshopt_buildMeshletsBound(mesh.triangles.size(), kClusterVertices, kClusterTriangles);
-    std::vector<meshopt_Meshlet> meshlets(bound);
-    std::vector<unsigned int> vertices(bound * kClusterVertices);
-    std::vector<unsigned char> local(bound * kClusterTriangles * 3);
-    meshlets.resize(
-        meshopt_buildMeshlets(meshlets.data(), vertices.data(), local.data(), mesh.triangles.data(),
-                              mesh.triangles.size(), &mesh.positions[0].x, mesh.positions.size(),
-                              sizeof(glm::vec3), kClusterVertices, kClusterTriangles, kConeWeight));
+    const Meshlets built = build_meshlets(mesh, kClusterVertices, kClusterTriangles, kConeWeight);
     std::size_t placed = 0;
-    for (const meshopt_Meshlet& ml : meshlets) placed += ml.triangle_count;
+    for (const meshopt_Meshlet& ml : built.meshlets) placed += ml.triangle_count;
     if (placed != tris) return one_cluster(mesh);
 
     // A meshlet keeps each triangle's vertices and winding, so its normal is the original's.
     ClusteredTriangles out;
     out.indices.reserve(mesh.triangles.size());
-    out.clusters.reserve(meshlets.size());
+    out.clusters.reserve(built.meshlets.size());
     std::vector<std::uint32_t> cluster_vertices;
     std::vector<std::optional<glm::dvec3>> cluster_normals;
-    for (const meshopt_Meshlet& ml : meshlets) {
+    for (const meshopt_Meshlet& ml : built.meshlets) {
         const auto first = static_cast<std::uint32_t>(out.indices.size());
-        cluster_vertices.assign(vertices.begin() + ml.vertex_offset,
-                                vertices.begin() + ml.vertex_offset + ml.vertex_count);
+        cluster_vertices.assign(built.vertices.begin() + ml.vertex_offset,
+                                built.vertices.begin() + ml.vertex_offset + ml.vertex_count);
         cluster_normals.clear();
         for (std::size_t t = 0; t < ml.triangle_count; ++t) {
-            const unsigned char* l = &local[ml.triangle_offset + 3 * t];
-            const std::uint32_t* mv = &vertices[ml.vertex_offset];
-            const std::uint32_t a = mv[l[0]], b = mv[l[1]], c = mv[l[2]];
+            const std::uint32_t a = built.vertex(ml, t, 0), b = built.vertex(ml, t, 1),
+                                c = built.vertex(ml, t, 2);
             out.indices.insert(out.indices.end(), {a, b, c});
             cluster_normals.push_back(unit_normal(mesh, a, b, c));
         }
