@@ -3,6 +3,9 @@
 // meshes give, byte for byte, on real models, in every style, from outside and inside.
 #include <gtest/gtest.h>
 
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "geometry/generated/primitives.h"
 #include "render/render_fixture.h"
 
 namespace bz::test {
@@ -58,6 +61,26 @@ TEST_F(ClusterCullingTest, AModelCutByTheFrustumAndSeenFromInside) {
     renderer->set_settings(settings);
     renderer->render(frame, meshes, render::Renderer::kOffscreen);
     EXPECT_EQ(renderer->stats().triangle_culling.facing_away, 0u);
+}
+
+TEST_F(ClusterCullingTest, ManyInstancesCullOnSeveralThreadsAndDrawTheSameFrame) {
+    // 160 spheres of 130 triangle clusters and about 380 edge clusters each: past the point
+    // where culling runs on several threads (pass_prepass.cpp, pass_edges.cpp).
+    settings.beam = render::beam_look("classic");
+    settings.method = render::LineMethod::compute;
+    const scene::MeshId id = add_mesh("sphere", geo::uv_sphere(0.4f, 64, 128));
+    frame.items.clear();
+    for (int i = 0; i < 160; ++i) {
+        add_item(id, glm::translate(glm::dmat4(1.0), glm::dvec3(i % 16 - 7.5, i / 16 - 4.5, 0.0)));
+    }
+    frame.camera.eye = glm::dvec3(0.0, 0.0, 14.0);
+    frame.camera.target = glm::dvec3(0.0);
+    frame.style = scene::Style::vector;
+    expect_same_frames("160 spheres");
+    const auto& stats = renderer->stats();
+    EXPECT_GE(stats.triangle_culling.clusters, 16384u);
+    EXPECT_GE(stats.edge_culling.clusters, 16384u);
+    EXPECT_GT(stats.triangle_culling.facing_away, 0u);
 }
 
 }  // namespace

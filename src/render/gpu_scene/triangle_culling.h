@@ -29,6 +29,14 @@ struct TriangleCullStats {
     std::size_t facing_away = 0;      // dropped: every face away, back faces culled
     std::size_t triangles = 0;        // triangles of the clusters looked at
     std::size_t triangles_drawn = 0;  // triangles of the kept clusters
+    TriangleCullStats& operator+=(const TriangleCullStats& o) {
+        clusters += o.clusters;
+        outside_frustum += o.outside_frustum;
+        facing_away += o.facing_away;
+        triangles += o.triangles;
+        triangles_drawn += o.triangles_drawn;
+        return *this;
+    }
 };
 
 // Appends one draw per run of consecutive kept clusters of instance `instance`.

@@ -29,6 +29,15 @@ struct EdgeCullStats {
     std::size_t one_way = 0;           // only the crease and boundary candidates tested
     std::size_t edges = 0;             // edges of the clusters looked at
     std::size_t edges_dispatched = 0;  // edges given to edges.comp
+    EdgeCullStats& operator+=(const EdgeCullStats& o) {
+        clusters += o.clusters;
+        outside_frustum += o.outside_frustum;
+        facing_away += o.facing_away;
+        one_way += o.one_way;
+        edges += o.edges;
+        edges_dispatched += o.edges_dispatched;
+        return *this;
+    }
 };
 
 // What culling needs of the view: the projection (any, perspective or not) and the depth

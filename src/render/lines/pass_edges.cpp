@@ -2,6 +2,7 @@
 #include <glm/gtc/type_ptr.hpp>
 #include <vector>
 
+#include "core/parallel_chunks.h"
 #include "render/lines/edge_culling.h"
 #include "render/passes.h"
 
@@ -13,6 +14,9 @@ namespace {
 // and grown when a frame appends more (EdgeStorage::keep_count).
 constexpr std::size_t kInitialRecords = std::size_t{1} << 16;
 constexpr GLuint kMaxGroups = 65535;  // the smallest GL_MAX_COMPUTE_WORK_GROUP_COUNT allowed
+// Culling uses more threads from this many (instance, cluster) pairs: below it a thread's
+// start costs more than its share of the work.
+constexpr std::size_t kClustersPerThread = 16384;
 
 }  // namespace
 
@@ -33,19 +37,53 @@ void pass_edges(const PassContext& ctx) {
         const GpuMesh* mesh;
         std::size_t first, count;  // its items in `work`
     };
+    // One job per instance; the meshes are fetched (and uploaded) here, on the GL thread.
+    struct Job {
+        std::size_t dispatch;  // its batch's entry in `dispatches`
+        const GpuMesh* mesh;
+        GLuint instance;
+        bool skip_back_faces;
+    };
     std::vector<Dispatch> dispatches;
+    std::vector<Job> jobs;
+    std::size_t clusters = 0;
     for (const Batch& b : ctx.batches.batches) {
         const GpuMesh& mesh = ctx.gpu_meshes.get(ctx.meshes, b.mesh, b.lod);
         if (mesh.edge_count == 0) continue;
         const bool skip_back_faces = ctx.occlusion && b.eye_outside && mesh.outward_closed;
-        const std::size_t first = work.size();
-        for (GLsizei i = 0; i < b.instance_count; ++i) {
-            const GLuint inst = b.first_instance + static_cast<GLuint>(i);
-            append_edge_work(mesh.edge_clusters, instances[inst].model_view,
-                             instances[inst].params.x, skip_back_faces, view, inst, work, cull);
-        }
-        if (work.size() > first) dispatches.push_back({&b, &mesh, first, work.size() - first});
+        for (GLsizei i = 0; i < b.instance_count; ++i)
+            jobs.push_back({dispatches.size(), &mesh, b.first_instance + static_cast<GLuint>(i),
+                            skip_back_faces});
+        clusters += mesh.edge_clusters.clusters.size() * static_cast<std::size_t>(b.instance_count);
+        dispatches.push_back({&b, &mesh, 0, 0});
     }
+    // Culling runs on several threads when there is enough of it; chunks keep job order, so
+    // the items are the same as one thread's.
+    const std::size_t threads = clusters >= kClustersPerThread ? worker_threads() : 1;
+    const std::size_t chunks = chunk_count(jobs.size(), 1, threads);
+    std::vector<std::vector<EdgeWorkItem>> chunk_work(chunks);
+    std::vector<EdgeCullStats> chunk_stats(chunks);
+    std::vector<std::size_t> job_items(jobs.size());
+    parallel_chunks(jobs.size(), 1, threads, [&](std::size_t j, std::size_t c) {
+        const Job& job = jobs[j];
+        const std::size_t before = chunk_work[c].size();
+        append_edge_work(job.mesh->edge_clusters, instances[job.instance].model_view,
+                         instances[job.instance].params.x, job.skip_back_faces, view, job.instance,
+                         chunk_work[c], chunk_stats[c]);
+        job_items[j] = chunk_work[c].size() - before;
+    });
+    for (std::size_t c = 0; c < chunks; ++c) {
+        work.insert(work.end(), chunk_work[c].begin(), chunk_work[c].end());
+        cull += chunk_stats[c];
+    }
+    std::size_t next = instances.size();  // the items follow the eyes
+    for (std::size_t j = 0; j < jobs.size(); ++j) {
+        Dispatch& d = dispatches[jobs[j].dispatch];
+        if (d.count == 0) d.first = next;
+        d.count += job_items[j];
+        next += job_items[j];
+    }
+    std::erase_if(dispatches, [](const Dispatch& d) { return d.count == 0; });
     if (ctx.stats) ctx.stats->edge_culling = cull;
 
     // A previous frame that overflowed asks for more; a frame that cannot overflow gets it all.

@@ -1,5 +1,6 @@
 #include <vector>
 
+#include "core/parallel_chunks.h"
 #include "render/passes.h"
 
 namespace bz::render {
@@ -23,6 +24,9 @@ namespace {
 // A mesh with fewer triangle clusters than this is drawn whole, one instanced draw for all its
 // instances: culling could save little, and a draw per instance costs more.
 constexpr std::size_t kMinClustersToCull = 4;
+// Culling uses more threads from this many (instance, cluster) pairs: below it a thread's
+// start costs more than its share of the work.
+constexpr std::size_t kClustersPerThread = 16384;
 
 bool culls_clusters(const PassContext& ctx, const GpuMesh& mesh, bool moves_vertices) {
     return !moves_vertices && ctx.settings.cluster_culling && ctx.triangle_draws != nullptr &&
@@ -42,20 +46,49 @@ TriangleCullStats draw_batch_triangles(const PassContext& ctx, gl::PipelineState
         std::size_t first = 0, count = 0;
     };
     std::vector<Range> ranges(ctx.batches.batches.size());
+    // One job per instance; the meshes are fetched (and uploaded) here, on the GL thread.
+    struct Job {
+        std::size_t batch;
+        const GpuMesh* mesh;
+        GLuint instance;
+        bool skip_back_faces;
+    };
+    std::vector<Job> jobs;
+    std::size_t clusters = 0;
     for (std::size_t i = 0; i < ctx.batches.batches.size(); ++i) {
         const Batch& b = ctx.batches.batches[i];
         if (occluders_only && !b.occluder) continue;
         const GpuMesh& mesh = ctx.gpu_meshes.get(ctx.meshes, b.mesh, b.lod);
         if (!culls_clusters(ctx, mesh, moves_vertices)) continue;
         const bool skip_back_faces = b.eye_outside && mesh.outward_closed;
-        ranges[i].first = draws.size();
-        for (GLsizei k = 0; k < b.instance_count; ++k) {
-            const GLuint inst = b.first_instance + static_cast<GLuint>(k);
-            append_triangle_draws(mesh.triangle_clusters, mesh.triangle_bounds,
-                                  ctx.batches.instances[inst].model_view, skip_back_faces, view,
-                                  inst, draws, stats);
-        }
-        ranges[i].count = draws.size() - ranges[i].first;
+        for (GLsizei k = 0; k < b.instance_count; ++k)
+            jobs.push_back({i, &mesh, b.first_instance + static_cast<GLuint>(k), skip_back_faces});
+        clusters += mesh.triangle_clusters.size() * static_cast<std::size_t>(b.instance_count);
+    }
+    // Several threads when there is enough of it; chunks keep job order (parallel_chunks.h).
+    const std::size_t threads = clusters >= kClustersPerThread ? worker_threads() : 1;
+    const std::size_t chunks = chunk_count(jobs.size(), 1, threads);
+    std::vector<std::vector<TriangleDraw>> chunk_draws(chunks);
+    std::vector<TriangleCullStats> chunk_stats(chunks);
+    std::vector<std::size_t> job_draws(jobs.size());
+    parallel_chunks(jobs.size(), 1, threads, [&](std::size_t j, std::size_t c) {
+        const Job& job = jobs[j];
+        const std::size_t before = chunk_draws[c].size();
+        append_triangle_draws(job.mesh->triangle_clusters, job.mesh->triangle_bounds,
+                              ctx.batches.instances[job.instance].model_view, job.skip_back_faces,
+                              view, job.instance, chunk_draws[c], chunk_stats[c]);
+        job_draws[j] = chunk_draws[c].size() - before;
+    });
+    for (std::size_t c = 0; c < chunks; ++c) {
+        draws.insert(draws.end(), chunk_draws[c].begin(), chunk_draws[c].end());
+        stats += chunk_stats[c];
+    }
+    std::size_t next = 0;
+    for (std::size_t j = 0; j < jobs.size(); ++j) {
+        Range& r = ranges[jobs[j].batch];
+        if (r.count == 0) r.first = next;
+        r.count += job_draws[j];
+        next += job_draws[j];
     }
     if (!draws.empty()) {
         ctx.triangle_draws->set(std::span<const TriangleDraw>(draws), GL_STREAM_DRAW);
