@@ -33,6 +33,16 @@ bool culls_clusters(const PassContext& ctx, const GpuMesh& mesh, bool moves_vert
            mesh.triangle_clusters.size() >= kMinClustersToCull;
 }
 
+// Whether every instance of the batch lies wholly inside the view.
+bool all_inside(const PassContext& ctx, const Batch& b, const GpuMesh& mesh,
+                const ViewVolume& view) {
+    for (GLsizei k = 0; k < b.instance_count; ++k) {
+        const InstanceData& d = ctx.batches.instances[b.first_instance + static_cast<GLuint>(k)];
+        if (!InstanceClusters(d.model_view).inside(mesh.triangle_bounds, view)) return false;
+    }
+    return true;
+}
+
 }  // namespace
 
 TriangleCullStats draw_batch_triangles(const PassContext& ctx, gl::PipelineState state,
@@ -44,6 +54,7 @@ TriangleCullStats draw_batch_triangles(const PassContext& ctx, gl::PipelineState
     std::vector<TriangleDraw> draws;
     struct Range {
         std::size_t first = 0, count = 0;
+        bool whole = false;  // drawn whole, one instanced draw
     };
     std::vector<Range> ranges(ctx.batches.batches.size());
     // One job per instance; the meshes are fetched (and uploaded) here, on the GL thread.
@@ -61,6 +72,12 @@ TriangleCullStats draw_batch_triangles(const PassContext& ctx, gl::PipelineState
         const GpuMesh& mesh = ctx.gpu_meshes.get(ctx.meshes, b.mesh, b.lod);
         if (!culls_clusters(ctx, mesh, moves_vertices)) continue;
         const bool skip_back_faces = b.eye_outside && mesh.outward_closed;
+        // Both faces drawn and every instance wholly in view: nothing can be dropped, so the
+        // batch stays one instanced draw.
+        if (!skip_back_faces && all_inside(ctx, b, mesh, view)) {
+            ranges[i].whole = true;
+            continue;
+        }
         for (GLsizei k = 0; k < b.instance_count; ++k)
             jobs.push_back({i, &mesh, b.first_instance + static_cast<GLuint>(k), skip_back_faces});
         clusters += mesh.triangle_clusters.size() * static_cast<std::size_t>(b.instance_count);
@@ -98,7 +115,7 @@ TriangleCullStats draw_batch_triangles(const PassContext& ctx, gl::PipelineState
         const Batch& b = ctx.batches.batches[i];
         if (occluders_only && !b.occluder) continue;
         const GpuMesh& mesh = ctx.gpu_meshes.get(ctx.meshes, b.mesh, b.lod);
-        const bool culled = culls_clusters(ctx, mesh, moves_vertices);
+        const bool culled = culls_clusters(ctx, mesh, moves_vertices) && !ranges[i].whole;
         if (culled && ranges[i].count == 0) continue;
         // Back faces of an outward-closed mesh seen from outside are hidden by its front faces.
         const bool cull = b.eye_outside && mesh.outward_closed;
