@@ -7,7 +7,6 @@
 
 #include <cmath>
 
-#include "gl/driver.h"
 #include "render/settings.h"
 #include "support/gl_test.h"
 
@@ -58,14 +57,19 @@ TEST_F(AutoThresholdGlTest, MeasuresBothMethodsOnThisContext) {
                   " / " + std::to_string(m.compute_ms[i]) + " ms; ";
     }
     SCOPED_TRACE(points);
-    for (const MethodCost& c : {m.geometry_shader, m.compute}) {
-        EXPECT_TRUE(std::isfinite(c.fixed_ms) && std::isfinite(c.per_1k_ms));
-        // On llvmpipe more triangles cost clearly more, for either method (a hardware GPU may
-        // draw these sizes in the same time, within noise).
-        if (gl::is_software_renderer()) {
-            EXPECT_GT(c.per_1k_ms, 0.0);
-        }
+    // Timings only: no test asserts on what they say (a loaded machine reorders them), only
+    // that every size was timed and the fit and the crossing follow from the times.
+    ASSERT_EQ(m.geometry_shader_ms.size(), m.sizes.size());
+    ASSERT_EQ(m.compute_ms.size(), m.sizes.size());
+    for (std::size_t i = 0; i < m.sizes.size(); ++i) {
+        EXPECT_GT(m.geometry_shader_ms[i], 0.0);
+        EXPECT_GT(m.compute_ms[i], 0.0);
     }
+    const MethodCost g = fit_cost(m.sizes, m.geometry_shader_ms);
+    EXPECT_EQ(g.fixed_ms, m.geometry_shader.fixed_ms);
+    EXPECT_EQ(g.per_1k_ms, m.geometry_shader.per_1k_ms);
+    for (const MethodCost& c : {m.geometry_shader, m.compute})
+        EXPECT_TRUE(std::isfinite(c.fixed_ms) && std::isfinite(c.per_1k_ms));
     EXPECT_EQ(m.compute_from_triangles, crossing_triangles(m.geometry_shader, m.compute));
     EXPECT_GT(m.seconds, 0.0);
 }
