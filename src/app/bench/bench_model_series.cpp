@@ -13,13 +13,6 @@ namespace {
 // Rings of the uv spheres (segments twice as many): about 20k, 80k, 320k and 1.3M triangles.
 constexpr std::uint32_t kRings[] = {71, 142, 284, 570};
 
-template <class F>
-double mean_stat(const RunResult& run, F value) {
-    double sum = 0.0;
-    for (const FrameRecord& f : run.frames) sum += static_cast<double>(value(f.stats));
-    return run.frames.empty() ? 0.0 : sum / static_cast<double>(run.frames.size());
-}
-
 }  // namespace
 
 ModelSeries run_model_series(const render::RenderSettings& settings, int width, int height,
@@ -60,11 +53,10 @@ ModelSeries run_model_series(const render::RenderSettings& settings, int width, 
         p.frame_p50_ms = run.stats.p50_ms;
         p.edges_ms = mean_pass_ms(run, "edges");
         p.prepass_ms = mean_pass_ms(run, "prepass");
-        p.feature_edges =
-            mean_stat(run, [](const render::FrameStats& f) { return f.feature_edges; });
-        p.edges_tested = mean_stat(
+        p.feature_edges = mean_feature_edges(run);
+        p.edges_tested = mean_frame_stat(
             run, [](const render::FrameStats& f) { return f.edge_culling.edges_dispatched; });
-        p.prepass_triangles = mean_stat(run, [](const render::FrameStats& f) {
+        p.prepass_triangles = mean_frame_stat(run, [](const render::FrameStats& f) {
             return f.triangle_culling.clusters > 0 ? f.triangle_culling.triangles_drawn
                                                    : f.triangles_submitted;
         });

@@ -41,6 +41,19 @@ struct RunResult {
 // The mean of one pass's time over a run's timed frames (0 when it never ran).
 double mean_pass_ms(const RunResult& run, const std::string& pass);
 
+// The mean of one FrameStats value over a run's timed frames (0 without frames).
+template <class Value>
+double mean_frame_stat(const RunResult& run, Value value) {
+    double sum = 0.0;
+    for (const FrameRecord& f : run.frames) sum += static_cast<double>(value(f.stats));
+    return run.frames.empty() ? 0.0 : sum / static_cast<double>(run.frames.size());
+}
+
+// Feature edges per frame, mean over the run's timed frames.
+inline double mean_feature_edges(const RunResult& run) {
+    return mean_frame_stat(run, [](const render::FrameStats& f) { return f.feature_edges; });
+}
+
 // Called after every timed frame.
 using Progress = std::function<void()>;
 

@@ -28,12 +28,6 @@ scene::MeshLibrary subdivided(const scene::MeshLibrary& src, int levels) {
 
 }  // namespace
 
-double mean_feature_edges(const RunResult& run) {
-    double sum = 0.0;
-    for (const FrameRecord& f : run.frames) sum += static_cast<double>(f.stats.feature_edges);
-    return run.frames.empty() ? 0.0 : sum / static_cast<double>(run.frames.size());
-}
-
 ScalingResult run_scaling(const BenchFrames& bf, const scene::MeshLibrary& meshes,
                           const render::RenderSettings& settings, int width, int height,
                           gl::TimingMethod timing, std::size_t max_tris, bool show_progress) {

@@ -26,9 +26,6 @@ ScalingResult run_scaling(const BenchFrames& frames, const scene::MeshLibrary& m
                           gl::TimingMethod timing, std::size_t max_library_triangles,
                           bool show_progress);
 
-// Feature edges per frame, mean over the run's timed frames.
-double mean_feature_edges(const RunResult& run);
-
 std::string scaling_json(const BenchMeta& meta, const ScalingResult& result);
 
 }  // namespace bz::app
