@@ -1,7 +1,5 @@
 #include "platform/settings.h"
 
-#include <toml++/toml.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -13,6 +11,7 @@
 #include "core/error.h"
 #include "core/io/file_io.h"
 #include "core/text/printable.h"
+#include "core/text/toml.h"
 #include "core/text/toml_scan.h"
 
 namespace bz::platform {

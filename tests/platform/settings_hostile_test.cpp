@@ -40,6 +40,19 @@ TEST(SettingsDeepKeys, DeepTableHeaderAndQuotedPartsAreRefused) {
     EXPECT_FALSE(parse("x = {a" + repeat(".b", 5000) + " = 1}\n").errors.empty());
 }
 
+// Accented letters typed without quotes once sent toml++ 3.3.0 down an unreachable path
+// (core/text/toml.h); now each is a positioned error and the defaults stand.
+TEST(SettingsNonAscii, AccentOutsideQuotesIsAPositionedError) {
+    const SettingsLoad r = parse("volume = 0.4\nstyle = caf\xC3\xA9\n");
+    ASSERT_FALSE(r.errors.empty());
+    EXPECT_EQ(r.errors[0].rfind("settings.toml:2:", 0), 0u) << r.errors[0];
+    EXPECT_FALSE(r.may_save());
+    const SettingsLoad combining = parse("volume = 0.5\xCC\x9C\n");
+    ASSERT_FALSE(combining.errors.empty());
+    EXPECT_EQ(combining.errors[0].rfind("settings.toml:1:13:", 0), 0u) << combining.errors[0];
+    EXPECT_EQ(combining.settings.volume, Settings{}.volume);
+}
+
 TEST(SettingsDeepKeys, DotsInStringsAndNumbersAreFine) {
     const SettingsLoad r = parse("volume = 0.5\nstyle = \"" + repeat("a.", 100) + "\"\n");
     ASSERT_EQ(r.errors.size(), 1u);  // only the bad style value

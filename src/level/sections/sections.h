@@ -1,12 +1,11 @@
 #pragma once
 // The readers of each part of a level file, used by the loader in this order: field and
 // player first, since obstacle placement is checked against them.
-#include <toml++/toml.h>
-
 #include <filesystem>
 #include <string_view>
 #include <vector>
 
+#include "core/text/toml.h"
 #include "level/level.h"
 #include "level/loader.h"
 #include "level/sections/model_path.h"

@@ -2,8 +2,6 @@
 // Typed, range-checked reads of one TOML table's keys. Every problem becomes a Diagnostic at
 // the exact key or value; a bad or missing value reads as "no value" so validation goes on and
 // the file's other errors are found in the same pass.
-#include <toml++/toml.h>
-
 #include <array>
 #include <cstdint>
 #include <glm/glm.hpp>
@@ -13,6 +11,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/text/toml.h"
 #include "level/diagnostic.h"
 
 namespace bz::level {

@@ -1,13 +1,12 @@
 #pragma once
 // Turns level text into a TOML table, or into every syntax error it can find: after an error
 // it blanks the broken statement and parses again, so one typo does not hide the next.
-#include <toml++/toml.h>
-
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "core/text/toml.h"
 #include "level/diagnostic.h"
 
 namespace bz::level {
