@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cctype>
+#include <utility>
 
 #include "core/error.h"
+#include "core/text/ascii_case.h"
 #include "game/assets/backdrop.h"
 #include "game/default_level.h"
 #include "game/difficulty/autopilot.h"
@@ -56,7 +58,7 @@ Game::~Game() = default;
 
 std::string Game::highscores_title() const {
     std::string title = level_key(level_.name, 0).name;
-    for (char& c : title) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    title = ascii_upper(std::move(title));
     // Tables are kept apart by the rules played; the non-default ones are named.
     if (options_.arcade.any()) title += " (" + arcade_label(options_.arcade) + ")";
     return title;

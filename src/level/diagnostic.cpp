@@ -18,6 +18,12 @@ std::string format(const Diagnostic& d) {
     return out;
 }
 
+std::string where(const SourcePos& pos) {
+    if (pos.file.empty()) return {};
+    return printable(pos.file) + ':' + std::to_string(pos.line) + ':' + std::to_string(pos.column) +
+           ": ";
+}
+
 std::string quote(std::string_view text, std::size_t max_chars) {
     std::string out = "'";
     std::size_t shown = 0;

@@ -16,6 +16,10 @@ struct Diagnostic {
 // "file:line:col: error: message" ("file: error: message" if a diagnostic has line 0).
 std::string format(const Diagnostic& d);
 
+// "file:line:col: " for a message about something at `pos`, the file name escaped as every
+// value in a message is; empty when the thing came from no file (built in, generated).
+std::string where(const SourcePos& pos);
+
 // Makes text from a level file safe to quote inside a one-line message: control characters
 // and quotes become escapes, and anything past `max_chars` is cut and marked with "...".
 std::string quote(std::string_view text, std::size_t max_chars = 40);

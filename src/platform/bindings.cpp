@@ -4,7 +4,9 @@
 
 #include <algorithm>
 #include <cctype>
+#include <utility>
 
+#include "core/text/ascii_case.h"
 #include "core/text/printable.h"
 
 namespace bz::platform {
@@ -173,7 +175,7 @@ std::string keys_label(const Bindings& b, Action a, std::size_t max_keys) {
         if (i) out += " / ";
         out += key_name(keys[i]);
     }
-    for (char& c : out) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    out = ascii_upper(std::move(out));
     return out.empty() ? "-" : out;
 }
 

@@ -3,7 +3,9 @@
 #include <SDL_gamecontroller.h>
 
 #include <cctype>
+#include <utility>
 
+#include "core/text/ascii_case.h"
 #include "core/text/printable.h"
 
 namespace bz::platform {
@@ -64,7 +66,7 @@ std::string button_label(int button) {
             break;
     }
     std::string out = button_name(button);
-    for (char& c : out) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    out = ascii_upper(std::move(out));
     return out;
 }
 

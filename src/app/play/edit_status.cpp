@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <limits>
 
+#include "core/text/ascii_case.h"
+
 namespace bz::app {
 
 namespace {
@@ -13,11 +15,6 @@ namespace {
 // data are taken as this many footprint radii high (a cube is 2, a tall box more).
 constexpr double kHeightPerRadius = 2.5;
 constexpr double kMinHeight = 2.0;
-
-std::string upper(std::string s) {
-    for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-    return s;
-}
 
 }  // namespace
 
@@ -78,7 +75,7 @@ std::string edit_status_line(const level::Level& level, const glm::dvec3& eye, d
     if (const auto i = object_under_reticle(level, eye, dir)) {
         const level::ObjectDesc& o = level.obstacles[*i];
         const std::string file = std::filesystem::path(o.pos.file).filename().string();
-        out += "   AIM: " + upper(o.kind) + "  " + file + ":" + std::to_string(o.pos.line);
+        out += "   AIM: " + ascii_upper(o.kind) + "  " + file + ":" + std::to_string(o.pos.line);
     } else {
         out += "   AIM: NOTHING";
     }

@@ -12,6 +12,7 @@
 #include "game/assets/obstacle_factories.h"
 #include "game/assets/scene_budget.h"
 #include "geometry/line_mesh/line_mesh.h"
+#include "level/diagnostic.h"
 
 namespace bz::game {
 
@@ -20,11 +21,6 @@ namespace {
 bool same_geometry(const geo::AdjacencyMesh& a, const geo::AdjacencyMesh& b) {
     return a.positions == b.positions && a.triangles == b.triangles && a.adjacency == b.adjacency &&
            a.edge_kinds == b.edge_kinds;
-}
-
-std::string where(const level::SourcePos& pos) {
-    if (pos.file.empty()) return {};
-    return pos.file + ":" + std::to_string(pos.line) + ":" + std::to_string(pos.column) + ": ";
 }
 
 }  // namespace
@@ -61,7 +57,8 @@ void Assets::reload(const level::Level& level) {
     std::map<std::string, std::int64_t> triangles;
     for (const level::ObjectDesc& o : level.obstacles) {
         if (!factories_.contains(o.kind)) {
-            throw UserError(where(o.pos) + "error: no object kind '" + printable(o.kind) + "'");
+            throw UserError(level::where(o.pos) + "error: no object kind '" + printable(o.kind) +
+                            "'");
         }
         if (o.model.empty() || !imported.insert(o.model.string()).second) continue;
         geo::AdjacencyMesh mesh = import_level_model(level, o);

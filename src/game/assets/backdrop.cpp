@@ -5,13 +5,13 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <numbers>
 
+#include "core/angles.h"
 #include "scene/shapes.h"
 
 namespace bz::game::backdrop {
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 constexpr double kMaxStepDeg = 2.5;     // strip bend per quad, well under any crease angle
 constexpr double kMinHeightDeg = 0.25;  // keeps the silhouette off the horizon line
 

@@ -6,16 +6,12 @@
 #include "core/error.h"
 #include "core/text/printable.h"
 #include "game/assets/models.h"
+#include "level/diagnostic.h"
 #include "level/kinds.h"
 
 namespace bz::game {
 
 namespace {
-
-std::string where(const level::SourcePos& p) {
-    if (p.file.empty()) return {};
-    return printable(p.file) + ":" + std::to_string(p.line) + ":" + std::to_string(p.column) + ": ";
-}
 
 std::string count(std::int64_t n) {
     std::string digits = std::to_string(n);
@@ -26,8 +22,8 @@ std::string count(std::int64_t n) {
 
 [[noreturn]] void over(const level::ObjectDesc& o, const std::string& what, std::int64_t total,
                        std::int64_t budget) {
-    throw UserError(where(o.pos) + "error: this object takes the scene to " + count(total) + " " +
-                    what + ", over the budget of " + count(budget) +
+    throw UserError(level::where(o.pos) + "error: this object takes the scene to " + count(total) +
+                    " " + what + ", over the budget of " + count(budget) +
                     " (place fewer objects or use a smaller model)");
 }
 

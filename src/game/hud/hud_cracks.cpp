@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/angles.h"
 #include "core/rng.h"
 #include "game/hud/hud.h"
 #include "game/hud/hud_layout.h"
@@ -12,7 +13,6 @@ namespace bz::game::hud {
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 constexpr double kGrowSeconds = 0.35;
 
 // Clips a segment to the screen rectangle (Liang-Barsky); false when nothing is left.

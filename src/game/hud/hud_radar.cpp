@@ -4,14 +4,13 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/angles.h"
 #include "game/hud/hud.h"
 #include "game/hud/hud_layout.h"
 
 namespace bz::game::hud {
 
 namespace {
-
-constexpr double kPi = std::numbers::pi;
 
 glm::vec2 polar(double clockwise_from_up, float r) {
     return kRadarCenter + r * glm::vec2(static_cast<float>(std::sin(clockwise_from_up)),

@@ -4,20 +4,16 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/angles.h"
 #include "core/error.h"
 #include "core/hash.h"
 #include "game/world/collision.h"
 #include "game/world/tuning.h"
+#include "level/diagnostic.h"
 
 namespace bz::game {
 
 namespace {
-
-constexpr double kPi = std::numbers::pi;
-
-double deg(double d) {
-    return d * kPi / 180.0;
-}
 
 scene::Placement placement_of(const level::ObjectDesc& o) {
     scene::Placement p;
@@ -28,11 +24,6 @@ scene::Placement placement_of(const level::ObjectDesc& o) {
     p.color = o.color;
     p.model = o.model;
     return p;
-}
-
-std::string where(const level::SourcePos& pos) {
-    if (pos.file.empty()) return {};
-    return pos.file + ":" + std::to_string(pos.line) + ":" + std::to_string(pos.column) + ": ";
 }
 
 void hash_entity(Hasher& h, const scene::Entity& e) {
@@ -76,7 +67,7 @@ std::vector<scene::Entity> World::build_obstacles(const level::Level& level,
             e.transform.position.z = g.y;
             out.push_back(e);
         } catch (const UserError& err) {
-            throw UserError(where(o.pos) + "error: " + err.what());
+            throw UserError(level::where(o.pos) + "error: " + err.what());
         }
     }
     return out;

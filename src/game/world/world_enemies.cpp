@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/angles.h"
 #include "game/world/collision.h"
 #include "game/world/tuning.h"
 #include "game/world/world.h"
@@ -12,12 +13,6 @@
 namespace bz::game {
 
 namespace {
-
-constexpr double kPi = std::numbers::pi;
-
-double deg(double d) {
-    return d * kPi / 180.0;
-}
 
 // The yaw that faces along d (x, z).
 double yaw_of(glm::dvec2 d) {

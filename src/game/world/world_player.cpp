@@ -3,16 +3,11 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/angles.h"
 #include "game/world/tuning.h"
 #include "game/world/world.h"
 
 namespace bz::game {
-
-namespace {
-
-constexpr double kPi = std::numbers::pi;
-
-}  // namespace
 
 glm::dvec2 World::view_to_world(glm::dvec2 view_offset) const {
     const double yaw = cur_.player.body.transform.yaw;

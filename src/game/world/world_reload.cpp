@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/angles.h"
 #include "game/world/tuning.h"
 #include "game/world/world.h"
 
@@ -11,7 +12,6 @@ namespace bz::game {
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 // The search for a free place: rings this far apart, points at most this far apart on a ring.
 constexpr double kSearchStep = 0.5;
 constexpr int kMaxPointsPerRing = 256;

@@ -3,17 +3,12 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/angles.h"
 #include "game/world/collision.h"
 #include "game/world/tuning.h"
 #include "game/world/world.h"
 
 namespace bz::game {
-
-namespace {
-
-constexpr double kPi = std::numbers::pi;
-
-}  // namespace
 
 void World::step_shells() {
     std::size_t keep = 0;

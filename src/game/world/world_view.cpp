@@ -5,6 +5,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <numbers>
 
+#include "core/angles.h"
 #include "game/world/tuning.h"
 #include "game/world/view_tuning.h"
 #include "game/world/world.h"
@@ -12,12 +13,6 @@
 namespace bz::game {
 
 namespace {
-
-constexpr double kPi = std::numbers::pi;
-
-double deg(double d) {
-    return d * kPi / 180.0;
-}
 
 // The target's offset in the player's view: x to the right, y straight ahead.
 glm::dvec2 to_view(glm::dvec2 delta, double yaw) {

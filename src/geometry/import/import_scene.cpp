@@ -16,8 +16,8 @@
 #include "core/error.h"
 #include "core/io/regular_file.h"
 #include "core/stderr_capture.h"
-#include "core/text/printable.h"
 #include "geometry/import/confined_io.h"
+#include "geometry/import/import_failure.h"
 #include "geometry/import/import_gltf.h"
 #include "geometry/import/import_guard.h"
 #include "geometry/import/import_zip.h"
@@ -29,15 +29,6 @@ namespace fs = std::filesystem;
 
 // Deeper hierarchies than this are treated as broken files rather than walked.
 constexpr std::size_t kMaxNodeDepth = 1024;
-
-[[noreturn]] void fail(const fs::path& path, const std::string& reason) {
-    std::string line = printable(path.string()) + ": error: " + reason;
-    for (char& c : line) {
-        if (c == '\n' || c == '\r') c = ' ';
-    }
-    while (!line.empty() && line.back() == ' ') line.pop_back();
-    throw UserError(line);
-}
 
 std::string lowercase_extension(const fs::path& path) {
     std::string ext = path.extension().string();
@@ -69,23 +60,25 @@ void check_before_import(const fs::path& path, const RegularFile& file,
     const ImportLimits& limits = options.limits;
     const std::string ext = lowercase_extension(path);
     const std::string head = read_head(file, kGuardHeadBytes);
-    if (auto why = implausible_declared_counts(head, file.size(), ext)) fail(path, *why);
+    if (auto why = implausible_declared_counts(head, file.size(), ext)) fail_import(path, *why);
     if (looks_like_zip(head)) {
-        if (auto why = zip_over_limits(file.fd(), limits.max_unzipped_bytes)) fail(path, *why);
+        if (auto why = zip_over_limits(file.fd(), limits.max_unzipped_bytes))
+            fail_import(path, *why);
     }
     if (looks_like_glb(head)) {
         if (const auto json = glb_json_chunk(file.fd(), file.size())) {
             if (auto why = gltf_nodes_over_limit(*json, limits.max_node_instances)) {
-                fail(path, *why);
+                fail_import(path, *why);
             }
         }
     } else if (ext == ".gltf") {
         const std::string json = read_head(file, static_cast<std::size_t>(file.size()));
-        if (auto why = gltf_nodes_over_limit(json, limits.max_node_instances)) fail(path, *why);
+        if (auto why = gltf_nodes_over_limit(json, limits.max_node_instances))
+            fail_import(path, *why);
     }
     if (ext == ".obj") {
         if (auto why = too_many_lines(file.fd(), limits.max_text_lines))
-            fail(path, "OBJ has " + *why);
+            fail_import(path, "OBJ has " + *why);
     }
 }
 
@@ -108,16 +101,16 @@ struct Walk {
         if (!mesh.mVertices || !has_triangles(mesh)) return;
         if (out.positions.size() + mesh.mNumVertices > limits.max_triangles ||
             out.triangle_count() + mesh.mNumFaces > limits.max_triangles) {
-            fail(path, "more than " + std::to_string(limits.max_triangles) +
-                           " triangles or vertices with every node instance placed");
+            fail_import(path, "more than " + std::to_string(limits.max_triangles) +
+                                  " triangles or vertices with every node instance placed");
         }
         const auto base = static_cast<std::uint32_t>(out.positions.size());
         for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
             const aiVector3D p = to_model * mesh.mVertices[v];
             if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
                 const std::string name = mesh.mName.C_Str();
-                fail(path, "non-finite vertex position (NaN or Inf)" +
-                               (name.empty() ? std::string() : " in mesh '" + name + "'"));
+                fail_import(path, "non-finite vertex position (NaN or Inf)" +
+                                      (name.empty() ? std::string() : " in mesh '" + name + "'"));
             }
             out.positions.emplace_back(p.x, p.y, p.z);
         }
@@ -125,7 +118,8 @@ struct Walk {
             const aiFace& face = mesh.mFaces[f];
             if (face.mNumIndices != 3) continue;  // points and lines
             for (unsigned k = 0; k < 3; ++k) {
-                if (face.mIndices[k] >= mesh.mNumVertices) fail(path, "vertex index out of range");
+                if (face.mIndices[k] >= mesh.mNumVertices)
+                    fail_import(path, "vertex index out of range");
                 out.indices.push_back(base + face.mIndices[k]);
             }
         }
@@ -142,16 +136,18 @@ struct Walk {
         while (!stack.empty()) {
             const Visit at = stack.back();
             stack.pop_back();
-            if (at.depth > kMaxNodeDepth) fail(path, "node hierarchy too deep");
+            if (at.depth > kMaxNodeDepth) fail_import(path, "node hierarchy too deep");
             // The budget counts instances, so a node reachable along many paths costs each time.
             if (++visited > limits.max_node_instances) {
-                fail(path, "scene graph has more than " +
-                               std::to_string(limits.max_node_instances) + " node instances");
+                fail_import(path, "scene graph has more than " +
+                                      std::to_string(limits.max_node_instances) +
+                                      " node instances");
             }
             const aiMatrix4x4 to_model = at.parent * at.node->mTransformation;
             for (unsigned i = 0; i < at.node->mNumMeshes; ++i) {
                 const unsigned m = at.node->mMeshes[i];
-                if (m >= scene.mNumMeshes || !scene.mMeshes[m]) fail(path, "bad mesh reference");
+                if (m >= scene.mNumMeshes || !scene.mMeshes[m])
+                    fail_import(path, "bad mesh reference");
                 append_instance(*scene.mMeshes[m], to_model);
             }
             // Pushed in reverse so children are visited in file order.
@@ -176,18 +172,18 @@ std::vector<fs::path> allowed_folders_for(const fs::path& path, const ImportOpti
 
 TriMesh import_in_this_process(const fs::path& path, const ImportOptions& options) {
     RegularFileResult opened = open_regular_file(path);
-    if (!opened.why.empty()) fail(path, opened.why);
+    if (!opened.why.empty()) fail_import(path, opened.why);
     const RegularFile& file = opened.file;
     if (file.size() > options.limits.max_file_bytes) {
-        fail(path, "file is " + std::to_string(file.size()) + " bytes, over the limit of " +
-                       std::to_string(options.limits.max_file_bytes));
+        fail_import(path, "file is " + std::to_string(file.size()) + " bytes, over the limit of " +
+                              std::to_string(options.limits.max_file_bytes));
     }
     std::error_code ec;
     const fs::path resolved = fs::weakly_canonical(fs::absolute(path, ec), ec);
-    if (ec) fail(path, "cannot be resolved: " + ec.message());
+    if (ec) fail_import(path, "cannot be resolved: " + ec.message());
     const std::vector<fs::path> folders = allowed_folders_for(path, options);
     if (!inside_any(resolved, folders)) {
-        fail(path, "lies outside the folders models may be read from");
+        fail_import(path, "lies outside the folders models may be read from");
     }
     check_before_import(path, file, options);
 
@@ -208,23 +204,23 @@ TriMesh import_in_this_process(const fs::path& path, const ImportOptions& option
             throw;  // the caller says which memory cap was hit
         } catch (const std::exception& e) {
             // Assimp catches its own import errors; this is for the unexpected.
-            fail(path, std::string("import failed: ") + e.what());
+            fail_import(path, std::string("import failed: ") + e.what());
         }
         const std::string printed = loader_output.text();
         // A refused reference fails the import even when the loader carried on without it:
         // the level would otherwise look different from what its author sees.
-        if (!confined.refusal().empty()) fail(path, confined.refusal());
+        if (!confined.refusal().empty()) fail_import(path, confined.refusal());
         if (!scene) {
             std::string why = importer.GetErrorString();
             if (why.find("bad_alloc") != std::string::npos) throw std::bad_alloc();
             if (!printed.empty()) why += " (loader printed: " + printed.substr(0, 200) + ")";
-            fail(path, why);
+            fail_import(path, why);
         }
     }
-    if (!scene->mRootNode) fail(path, "no scene hierarchy");
+    if (!scene->mRootNode) fail_import(path, "no scene hierarchy");
     Walk walk{path, *scene, options.limits, {}};
     walk.run();
-    if (walk.out.indices.empty()) fail(path, "no triangles");
+    if (walk.out.indices.empty()) fail_import(path, "no triangles");
     return std::move(walk.out);
 }
 

@@ -24,7 +24,7 @@
 #include <vector>
 
 #include "core/error.h"
-#include "core/text/printable.h"
+#include "geometry/import/import_failure.h"
 
 #if defined(__SANITIZE_ADDRESS__)
 #define BZ_ADDRESS_SANITIZER 1
@@ -242,10 +242,6 @@ class Receiver {
     std::string text_;
 };
 
-[[noreturn]] void fail(const fs::path& path, const std::string& reason) {
-    throw UserError(printable(path.string()) + ": error: " + printable_message(reason));
-}
-
 // Owns the child until it has been waited for, so no exit path leaves a zombie or a runaway.
 class Child {
   public:
@@ -312,7 +308,7 @@ TriMesh run_isolated(const fs::path& path, const ImportLimits& limits,
                      const std::function<TriMesh()>& work) {
     int fds[2];
     if (::pipe2(fds, O_CLOEXEC) != 0)
-        fail(path, std::string("cannot create a pipe: ") + std::strerror(errno));
+        fail_import(path, std::string("cannot create a pipe: ") + std::strerror(errno));
     const pid_t parent = ::getpid();
     std::fflush(nullptr);  // buffered output is written once, not once per process
     const pid_t pid = ::fork();
@@ -320,7 +316,7 @@ TriMesh run_isolated(const fs::path& path, const ImportLimits& limits,
         const int err = errno;
         ::close(fds[0]);
         ::close(fds[1]);
-        fail(path, std::string("cannot start the import process: ") + std::strerror(err));
+        fail_import(path, std::string("cannot start the import process: ") + std::strerror(err));
     }
     if (pid == 0) {
         ::close(fds[0]);
@@ -345,12 +341,12 @@ TriMesh run_isolated(const fs::path& path, const ImportLimits& limits,
         const auto now = Clock::now();
         if (now >= deadline) {
             child.kill_now();
-            fail(path, wall_abandoned);
+            fail_import(path, wall_abandoned);
         }
         if (cpu_seconds(child.pid()) > limits.seconds) {
             child.kill_now();
-            fail(path, "import took more than " + seconds_text(limits.seconds) +
-                           " s of CPU time and was abandoned");
+            fail_import(path, "import took more than " + seconds_text(limits.seconds) +
+                                  " s of CPU time and was abandoned");
         }
         const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - now);
         pollfd p{in.fd, POLLIN, 0};
@@ -359,12 +355,13 @@ TriMesh run_isolated(const fs::path& path, const ImportLimits& limits,
         if (ready < 0 && errno == EINTR) {
             // SIGINT or SIGTERM: the command is ending; do not make it wait for the import.
             child.kill_now();
-            fail(path, "import interrupted by a signal");
+            fail_import(path, "import interrupted by a signal");
         }
         if (limits.memory_bytes > 0 && resident_bytes(child.pid()) > limits.memory_bytes) {
             child.kill_now();
-            fail(path, "import needed more than " + megabytes(limits.memory_bytes) +
-                           " of memory (the cap, BEAMZONE_MEMORY_LIMIT_MB) and was abandoned");
+            fail_import(path,
+                        "import needed more than " + megabytes(limits.memory_bytes) +
+                            " of memory (the cap, BEAMZONE_MEMORY_LIMIT_MB) and was abandoned");
         }
         if (ready <= 0) continue;
         const ssize_t n = ::read(in.fd, buf.data(), buf.size());
@@ -372,42 +369,42 @@ TriMesh run_isolated(const fs::path& path, const ImportLimits& limits,
         if (n <= 0) break;  // end of file: the child is done (or died)
         if (!receiver.take(buf.data(), static_cast<std::size_t>(n))) {
             child.kill_now();
-            fail(path, "the import process sent a malformed result");
+            fail_import(path, "the import process sent a malformed result");
         }
     }
     const std::optional<int> status = child.wait_until(deadline + std::chrono::seconds(1));
     if (!status) {
         child.kill_now();
-        fail(path, wall_abandoned);
+        fail_import(path, wall_abandoned);
     }
     if (WIFSIGNALED(*status)) {
         const int sig = WTERMSIG(*status);
         if (sig == SIGKILL) {
-            fail(path, "the import process was killed (SIGKILL; out of memory?)");
+            fail_import(path, "the import process was killed (SIGKILL; out of memory?)");
         }
-        fail(path, "the importer crashed on this file (" + signal_text(sig) + ")");
+        fail_import(path, "the importer crashed on this file (" + signal_text(sig) + ")");
     }
     if (!receiver.complete()) {
-        fail(path, "the import process ended without a result (exit status " +
-                       std::to_string(WIFEXITED(*status) ? WEXITSTATUS(*status) : -1) + ")");
+        fail_import(path, "the import process ended without a result (exit status " +
+                              std::to_string(WIFEXITED(*status) ? WEXITSTATUS(*status) : -1) + ")");
     }
     switch (receiver.kind()) {
         case Frame::mesh: {
             TriMesh& mesh = receiver.mesh();
             for (const std::uint32_t i : mesh.indices) {
                 if (i >= mesh.positions.size())
-                    fail(path, "the import process sent a malformed result");
+                    fail_import(path, "the import process sent a malformed result");
             }
             return std::move(mesh);
         }
         case Frame::error:
             throw UserError(receiver.text());
         case Frame::out_of_memory:
-            if (limits.memory_bytes == 0) fail(path, "import ran out of memory");
-            fail(path, "import needed more than " + megabytes(limits.memory_bytes) +
-                           " of memory (the cap, BEAMZONE_MEMORY_LIMIT_MB)");
+            if (limits.memory_bytes == 0) fail_import(path, "import ran out of memory");
+            fail_import(path, "import needed more than " + megabytes(limits.memory_bytes) +
+                                  " of memory (the cap, BEAMZONE_MEMORY_LIMIT_MB)");
     }
-    fail(path, "the import process sent a malformed result");
+    fail_import(path, "the import process sent a malformed result");
 }
 
 }  // namespace bz::geo::detail

@@ -2,11 +2,16 @@
 // Tests of one instance's clusters (geometry/derived/cluster_bounds.h) against the view, on
 // the CPU, before any per-element work: outside a view volume, and facing. The edge pass
 // (render/lines/edge_culling.h) and the triangle passes (triangle_culling.h) share them.
+#include <cstddef>
 #include <glm/glm.hpp>
 
 #include "geometry/derived/cluster_bounds.h"
 
 namespace bz::render {
+
+// The edge and triangle passes cull on more threads from this many (instance, cluster)
+// pairs: below it a thread's start costs more than its share of the work.
+inline constexpr std::size_t kCullPairsPerThread = 16384;
 
 // The eye in the instance's object space (xyz) and the sign of det(model_view) (w): a face
 // with object-space normal n and vertex p faces the eye when w * dot(n, xyz - p) > 0, exactly

@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "core/parallel_chunks.h"
+#include "render/gpu_scene/cluster_culling.h"
 #include "render/lines/edge_culling.h"
 #include "render/passes.h"
 
@@ -14,9 +15,6 @@ namespace {
 // and grown when a frame appends more (EdgeStorage::keep_count).
 constexpr std::size_t kInitialRecords = std::size_t{1} << 16;
 constexpr GLuint kMaxGroups = 65535;  // the smallest GL_MAX_COMPUTE_WORK_GROUP_COUNT allowed
-// Culling uses more threads from this many (instance, cluster) pairs: below it a thread's
-// start costs more than its share of the work.
-constexpr std::size_t kClustersPerThread = 16384;
 
 }  // namespace
 
@@ -59,7 +57,7 @@ void pass_edges(const PassContext& ctx) {
     }
     // Culling runs on several threads when there is enough of it; chunks keep job order, so
     // the items are the same as one thread's.
-    const std::size_t threads = clusters >= kClustersPerThread ? worker_threads() : 1;
+    const std::size_t threads = clusters >= kCullPairsPerThread ? worker_threads() : 1;
     const std::size_t chunks = chunk_count(jobs.size(), 1, threads);
     std::vector<std::vector<EdgeWorkItem>> chunk_work(chunks);
     std::vector<EdgeCullStats> chunk_stats(chunks);

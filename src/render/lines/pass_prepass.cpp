@@ -1,6 +1,7 @@
 #include <vector>
 
 #include "core/parallel_chunks.h"
+#include "render/gpu_scene/cluster_culling.h"
 #include "render/passes.h"
 
 namespace bz::render {
@@ -24,9 +25,6 @@ namespace {
 // A mesh with fewer triangle clusters than this is drawn whole, one instanced draw for all its
 // instances: culling could save little, and a draw per instance costs more.
 constexpr std::size_t kMinClustersToCull = 4;
-// Culling uses more threads from this many (instance, cluster) pairs: below it a thread's
-// start costs more than its share of the work.
-constexpr std::size_t kClustersPerThread = 16384;
 
 bool culls_clusters(const PassContext& ctx, const GpuMesh& mesh, bool moves_vertices) {
     return !moves_vertices && ctx.settings.cluster_culling && ctx.triangle_draws != nullptr &&
@@ -83,7 +81,7 @@ TriangleCullStats draw_batch_triangles(const PassContext& ctx, gl::PipelineState
         clusters += mesh.triangle_clusters.size() * static_cast<std::size_t>(b.instance_count);
     }
     // Several threads when there is enough of it; chunks keep job order (parallel_chunks.h).
-    const std::size_t threads = clusters >= kClustersPerThread ? worker_threads() : 1;
+    const std::size_t threads = clusters >= kCullPairsPerThread ? worker_threads() : 1;
     const std::size_t chunks = chunk_count(jobs.size(), 1, threads);
     std::vector<std::vector<TriangleDraw>> chunk_draws(chunks);
     std::vector<TriangleCullStats> chunk_stats(chunks);

@@ -58,17 +58,15 @@ TEST(TomlHeader, NonAsciiOutsideStringsIsAPositionedError) {
         int line, column;
     };
     const std::vector<Case> cases = {
-        {"a = 1\xCC\x9C\n", false, 1, 6},
-        {"name = caf\xC3\xA9\n", false, 1, 8},
-        {"\xC3\xA9 = 1\n", false, 1, 1},
-        {"s = \"\"\"\\\n\xC2\xA7\"\"\"\n", true, 0, 0},
-        {"a = [1,\xE3\x82\xA2 2]\n", false, 1, 8},
-        {"t = {x = 1\xEF\xAC\x90}\n", false, 1, 11},
+        {"a = 1\xCC\x9C\n", false, 1, 6},          {"name = caf\xC3\xA9\n", false, 1, 8},
+        {"\xC3\xA9 = 1\n", false, 1, 1},           {"s = \"\"\"\\\n\xC2\xA7\"\"\"\n", true, 0, 0},
+        {"a = [1,\xE3\x82\xA2 2]\n", false, 1, 8}, {"t = {x = 1\xEF\xAC\x90}\n", false, 1, 11},
         {"a = 1\xC2\xA0\n", false, 1, 6},  // U+00A0: whitespace to toml++, an error in TOML
     };
     for (const Case& c : cases) {
         try {
-            const toml::table t = toml::parse(std::string_view(c.text), std::string_view("case.toml"));
+            const toml::table t =
+                toml::parse(std::string_view(c.text), std::string_view("case.toml"));
             EXPECT_TRUE(c.parses) << c.text;
         } catch (const toml::parse_error& e) {
             EXPECT_FALSE(c.parses) << c.text << ": " << e.description();

@@ -5,17 +5,13 @@
 #include <string>
 #include <tuple>
 
+#include "core/text/ascii_case.h"
 #include "core/text/printable.h"
 #include "level/loader.h"
 
 namespace bz::app::menu {
 
 namespace {
-
-std::string upper(std::string s) {
-    for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-    return s;
-}
 
 struct Found {
     LevelChoice choice;
@@ -30,13 +26,14 @@ Found describe(const std::filesystem::path& file, bool user) {
     if (!r.level) {
         std::string name = file.stem().string();
         std::replace(name.begin(), name.end(), '_', ' ');
-        f.choice.name = upper(menu_label(name));
+        f.choice.name = ascii_upper(menu_label(name));
         f.choice.description = "DOES NOT LOAD: CHOOSE IT TO SEE WHY";
         f.choice.loads = false;
         return f;
     }
-    f.choice.name = upper(menu_label(r.level->name));
-    f.choice.description = upper(menu_label(r.level->description, 2 * budget::kMenuLabelChars));
+    f.choice.name = ascii_upper(menu_label(r.level->name));
+    f.choice.description =
+        ascii_upper(menu_label(r.level->description, 2 * budget::kMenuLabelChars));
     f.choice.listed = r.level->listed;
     f.order = r.level->menu_order;
     return f;

@@ -7,6 +7,7 @@
 #include <optional>
 #include <span>
 
+#include "core/text/ascii_case.h"
 #include "scene/style.h"
 
 namespace bz::app::menu {
@@ -52,11 +53,6 @@ const std::string kBeams[] = {"mame", "classic"};
 constexpr int kFrameRateCaps[] = {0, 30, 60, 75, 120, 144, 240};  // 0: AUTO
 const std::string kDifficulties[] = {"level", "easy", "normal", "arcade"};
 
-std::string upper(std::string s) {
-    for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-    return s;
-}
-
 std::string on_off(bool b) {
     return b ? "ON" : "OFF";
 }
@@ -75,7 +71,7 @@ std::string level_label(const Env& env) {
     for (const LevelChoice& l : env.levels) {
         if (l.file == env.current_level) return l.name;
     }
-    return upper(env.current_level.stem().string());
+    return ascii_upper(env.current_level.stem().string());
 }
 
 // One DIP switch: the level's rule, then each setting of the switch, wrapping.
@@ -154,7 +150,7 @@ std::string action_label(Action a) {
             break;
     }
     // Actions added later still get a readable name: their settings-file name.
-    return upper(std::string(platform::action_name(a)));
+    return ascii_upper(std::string(platform::action_name(a)));
 }
 
 // The pad's controls of an action on the Controls page: its sticks (by the gamepad layout),
@@ -276,20 +272,23 @@ Page PlayMenus::build(Screen s) const {
             const int volume = static_cast<int>(std::lround(st.volume * 100.0f));
             const bool tank = st.gamepad == platform::GamepadMode::tank;
             const std::string difficulty =
-                st.difficulty == "level" ? std::string("LEVEL'S") : upper(st.difficulty);
+                st.difficulty == "level" ? std::string("LEVEL'S") : ascii_upper(st.difficulty);
             std::string vsync_note;
             if (env_.vsync_given && *env_.vsync_given != st.vsync) {
                 // What the driver gave, not what was asked for.
-                vsync_note = "GOT " + upper(std::string(platform::vsync_name(*env_.vsync_given)));
+                vsync_note =
+                    "GOT " + ascii_upper(std::string(platform::vsync_name(*env_.vsync_given)));
             }
             p.rows = {
                 choice("DIFFICULTY", difficulty, context_ == Context::paused ? "NEXT GAME" : ""),
-                choice("PRESET", upper(st.preset)),
-                choice("STYLE", upper(st.style)),
-                choice("BEAM", upper(st.beam), st.beam == "mame" ? "PHOSPHOR, GLOW" : "STEADY"),
+                choice("PRESET", ascii_upper(st.preset)),
+                choice("STYLE", ascii_upper(st.style)),
+                choice("BEAM", ascii_upper(st.beam),
+                       st.beam == "mame" ? "PHOSPHOR, GLOW" : "STEADY"),
                 choice("EFFECTS VOLUME", std::to_string(volume) + "%", st.mute ? "MUTED" : ""),
                 choice("FULLSCREEN", on_off(st.fullscreen)),
-                choice("VSYNC", upper(std::string(platform::vsync_name(st.vsync))), vsync_note),
+                choice("VSYNC", ascii_upper(std::string(platform::vsync_name(st.vsync))),
+                       vsync_note),
                 choice("SHOW FPS", on_off(st.show_fps)),
                 choice("FRAME RATE CAP", st.max_fps > 0 ? std::to_string(st.max_fps) : "AUTO",
                        st.max_fps > 0 ? "ALWAYS" : "DISPLAY RATE WITHOUT VSYNC"),
@@ -310,7 +309,7 @@ Page PlayMenus::build(Screen s) const {
             p.columns = true;
             p.rows = {
                 choice("TEXT SIZE", scale_label(st.ui_scale), "MENUS AND HUD"),
-                choice("FLICKER AND FLASHES", upper(st.flashes),
+                choice("FLICKER AND FLASHES", ascii_upper(st.flashes),
                        st.flashes == "full"   ? "AS DESIGNED"
                        : st.flashes == "soft" ? "HALVED"
                                               : "NO FLICKER, FLASH OR TRAILS"),
@@ -717,7 +716,7 @@ std::vector<Request> PlayMenus::captured(const platform::KeyBinding& key) {
         return out;
     }
     env_.settings->keys[selected()] = {key};
-    status_ = action_label(action) + " IS NOW " + upper(platform::key_name(key));
+    status_ = action_label(action) + " IS NOW " + ascii_upper(platform::key_name(key));
     if (const auto other = platform::conflicting_action(env_.settings->keys, action, key)) {
         status_ += " - ALSO BOUND TO " + action_label(*other);
     }
