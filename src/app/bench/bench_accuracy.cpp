@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <system_error>
 
+#include "app/bench/bench_text.h"
 #include "app/model_source.h"
 #include "core/error.h"
 #include "core/hash.h"
@@ -25,12 +26,6 @@ using Clock = std::chrono::steady_clock;
 
 // Bump when the reference's definition changes, so cached masks are recomputed.
 constexpr int kReferenceCacheVersion = 1;
-
-std::string fmt(const char* f, double a, double b = 0.0, double c = 0.0, double d = 0.0) {
-    char buf[256];
-    std::snprintf(buf, sizeof buf, f, a, b, c, d);
-    return buf;
-}
 
 // A file-name-safe stem for a model path: "glTF/CesiumMilkTruck/CesiumMilkTruck.gltf" ->
 // "CesiumMilkTruck.gltf".
@@ -315,18 +310,20 @@ std::vector<Goal> judge_accuracy_goals(const AccuracyResult& r) {
     for (const std::string& name : render::preset_names()) {
         const AccuracyRow* row = find(r.rows, name);
         if (!row) continue;
+        goals.push_back({name + ": mean F1 >= 0.99", row->mean_f1 >= 0.99,
+                         printf_text("mean F1 %.4f", row->mean_f1)});
         goals.push_back(
-            {name + ": mean F1 >= 0.99", row->mean_f1 >= 0.99, fmt("mean F1 %.4f", row->mean_f1)});
-        goals.push_back({name + ": no view below F1 0.95", row->min_f1 >= 0.95,
-                         fmt("worst view F1 %.4f", row->min_f1) + " (" + row->worst_view + ")"});
+            {name + ": no view below F1 0.95", row->min_f1 >= 0.95,
+             printf_text("worst view F1 %.4f", row->min_f1) + " (" + row->worst_view + ")"});
     }
     const AccuracyRow* high = find(r.rows, "high");
     const AccuracyRow* balanced = find(r.rows, "balanced");
     if (high && balanced) {
-        goals.push_back({"high: mean F1 >= balanced's", high->mean_f1 >= balanced->mean_f1,
-                         fmt("high %.4f, balanced %.4f", high->mean_f1, balanced->mean_f1)});
+        goals.push_back(
+            {"high: mean F1 >= balanced's", high->mean_f1 >= balanced->mean_f1,
+             printf_text("high %.4f, balanced %.4f", high->mean_f1, balanced->mean_f1)});
         goals.push_back({"high: worst view >= balanced's", high->min_f1 >= balanced->min_f1,
-                         fmt("high %.4f, balanced %.4f", high->min_f1, balanced->min_f1)});
+                         printf_text("high %.4f, balanced %.4f", high->min_f1, balanced->min_f1)});
     }
     return goals;
 }

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cstdio>
 
+#include "app/bench/bench_text.h"
 #include "core/image_io.h"
 #include "render/reference_frame.h"
 
@@ -16,12 +17,6 @@ const SweepRow* find_row(const std::vector<SweepRow>& rows, const std::string& l
         if (r.config.label == label) return &r;
     }
     return nullptr;
-}
-
-std::string fmt(const char* f, double a, double b = 0.0, double c = 0.0, double d = 0.0) {
-    char buf[256];
-    std::snprintf(buf, sizeof buf, f, a, b, c, d);
-    return buf;
 }
 
 SweepScore summarise(std::vector<geo::MaskScore> scores) {
@@ -206,24 +201,26 @@ std::vector<Goal> judge_goals(const std::vector<SweepRow>& rows) {
     const SweepRow* high = find_row(rows, "high");
     const SweepRow* outline = find_row(rows, "image-outline");
     if (high) {
-        goals.push_back({"high: mean F1 >= 0.97", high->score.mean_f1 >= 0.97,
-                         fmt("mean F1 %.4f (min %.4f)", high->score.mean_f1, high->score.min_f1)});
+        goals.push_back(
+            {"high: mean F1 >= 0.97", high->score.mean_f1 >= 0.97,
+             printf_text("mean F1 %.4f (min %.4f)", high->score.mean_f1, high->score.min_f1)});
     }
     if (fast && high) {
         const double ratio = fast->run.stats.p50_ms / std::max(high->run.stats.p50_ms, 1e-9);
         goals.push_back({"fast: p50 <= 0.6 x p50 of high", ratio <= 0.6,
-                         fmt("fast p50 %.2f ms, high p50 %.2f ms: %.2fx", fast->run.stats.p50_ms,
-                             high->run.stats.p50_ms, ratio)});
+                         printf_text("fast p50 %.2f ms, high p50 %.2f ms: %.2fx",
+                                     fast->run.stats.p50_ms, high->run.stats.p50_ms, ratio)});
     }
     if (balanced && outline) {
         const double ratio = balanced->run.stats.p50_ms / std::max(outline->run.stats.p50_ms, 1e-9);
         goals.push_back({"balanced: F1 above the image-space baseline",
                          balanced->score.mean_f1 > outline->score.mean_f1,
-                         fmt("balanced mean F1 %.4f, baseline %.4f", balanced->score.mean_f1,
-                             outline->score.mean_f1)});
-        goals.push_back({"balanced: p50 <= 1.5 x p50 of the baseline", ratio <= 1.5,
-                         fmt("balanced p50 %.2f ms, baseline p50 %.2f ms: %.2fx",
-                             balanced->run.stats.p50_ms, outline->run.stats.p50_ms, ratio)});
+                         printf_text("balanced mean F1 %.4f, baseline %.4f",
+                                     balanced->score.mean_f1, outline->score.mean_f1)});
+        goals.push_back(
+            {"balanced: p50 <= 1.5 x p50 of the baseline", ratio <= 1.5,
+             printf_text("balanced p50 %.2f ms, baseline p50 %.2f ms: %.2fx",
+                         balanced->run.stats.p50_ms, outline->run.stats.p50_ms, ratio)});
     }
     return goals;
 }

@@ -15,8 +15,6 @@ namespace {
 // edges within one cluster (kMaxClusterEdges). meshoptimizer wants a multiple of 4.
 constexpr std::size_t kMeshletTriangles = 40;
 constexpr std::size_t kMeshletVertices = 64;
-// Weight meshoptimizer gives to tight normal cones against compact clusters.
-constexpr float kConeWeight = 0.5f;
 
 // A triangle by its vertices, rotated so the smallest comes first (winding kept): the same key
 // for a triangle and its copy in a meshlet.
@@ -32,7 +30,8 @@ std::vector<std::uint32_t> meshlet_of_triangles(const AdjacencyMesh& mesh) {
     const std::size_t tris = mesh.triangle_count();
     std::vector<std::uint32_t> out(tris, kNoVertex);
     if (tris == 0) return out;
-    const Meshlets built = build_meshlets(mesh, kMeshletVertices, kMeshletTriangles, kConeWeight);
+    const Meshlets built =
+        build_meshlets(mesh, kMeshletVertices, kMeshletTriangles, kMeshletConeWeight);
     // Match the meshlets' triangles to the mesh's by their vertices: both lists sorted by key
     // (then by index, so repeated triangles pair off in order).
     std::vector<std::pair<TriangleKey, std::uint32_t>> original(tris), placed;

@@ -20,6 +20,10 @@ struct Meshlets {
     }
 };
 
+// The weight both cluster kinds give meshoptimizer for tight normal cones against compact
+// meshlets: back-facing clusters are what culling skips.
+inline constexpr float kMeshletConeWeight = 0.5f;
+
 // At most `max_vertices` and `max_triangles` (a multiple of 4) per meshlet; `cone_weight`
 // trades compact meshlets against tight normal cones. Deterministic; empty for an empty mesh.
 Meshlets build_meshlets(const AdjacencyMesh& mesh, std::size_t max_vertices,

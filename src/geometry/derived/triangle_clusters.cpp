@@ -11,9 +11,6 @@ namespace {
 // is a small share of them. meshoptimizer wants the triangle count a multiple of 4.
 constexpr std::size_t kClusterVertices = 64;
 constexpr std::size_t kClusterTriangles = 124;
-// Weight meshoptimizer gives to tight normal cones against compact clusters: back-facing
-// clusters are what a closed mesh skips.
-constexpr float kConeWeight = 0.5f;
 
 ClusteredTriangles one_cluster(const AdjacencyMesh& mesh) {
     ClusteredTriangles out;
@@ -31,7 +28,8 @@ ClusteredTriangles one_cluster(const AdjacencyMesh& mesh) {
 ClusteredTriangles cluster_triangles(const AdjacencyMesh& mesh) {
     const std::size_t tris = mesh.triangle_count();
     if (tris == 0 || mesh.positions.empty()) return one_cluster(mesh);
-    const Meshlets built = build_meshlets(mesh, kClusterVertices, kClusterTriangles, kConeWeight);
+    const Meshlets built =
+        build_meshlets(mesh, kClusterVertices, kClusterTriangles, kMeshletConeWeight);
     std::size_t placed = 0;
     for (const meshopt_Meshlet& ml : built.meshlets) placed += ml.triangle_count;
     if (placed != tris) return one_cluster(mesh);

@@ -66,14 +66,14 @@ void check_before_import(const fs::path& path, const RegularFile& file,
             fail_import(path, *why);
     }
     if (looks_like_glb(head)) {
-        if (const auto json = glb_json_chunk(file.fd(), file.size())) {
-            if (auto why = gltf_nodes_over_limit(*json, limits.max_node_instances)) {
+        if (const auto json_chunk = glb_json_chunk(file.fd(), file.size())) {
+            if (auto why = gltf_nodes_over_limit(*json_chunk, limits.max_node_instances)) {
                 fail_import(path, *why);
             }
         }
     } else if (ext == ".gltf") {
-        const std::string json = read_head(file, static_cast<std::size_t>(file.size()));
-        if (auto why = gltf_nodes_over_limit(json, limits.max_node_instances))
+        const std::string json_text = read_head(file, static_cast<std::size_t>(file.size()));
+        if (auto why = gltf_nodes_over_limit(json_text, limits.max_node_instances))
             fail_import(path, *why);
     }
     if (ext == ".obj") {
