@@ -93,7 +93,13 @@ void begin_line_target(const PassContext& ctx, const gl::Program& program, bool 
 // Binds Targets::beam_tiles where the beam's fragment stages mark the tiles they light
 // (shaders/beam/beam_tiles.glsl, image unit 3).
 void bind_beam_tiles(const Targets& targets);
-void set_line_uniforms(const gl::Program& program, const PassContext& ctx, float half_width);
+// The uniforms of the stages that project and clip edges to the window (u_proj, u_viewport,
+// u_near, u_far: lines.geom, edges.comp, edge_quad.*, spine_visibility.comp, stroke.vert).
+void set_edge_projection_uniforms(const gl::Program& program, const PassContext& ctx);
+// The uniforms shaders/lines/spine_test.glsl declares: tolerances, depth convention, view rays.
+void set_spine_test_uniforms(const gl::Program& program, const PassContext& ctx);
+// Both: the programs that find or draw edges and test their spines.
+void set_line_uniforms(const gl::Program& program, const PassContext& ctx);
 // Fills the edge buffer from every batch's edge list (edges.comp): the strokes of the filled
 // styles and LineMethod::compute read it.
 void pass_edges(const PassContext& ctx);

@@ -26,7 +26,7 @@ void pass_halo(const PassContext& ctx) {
     glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
     glClear(GL_COLOR_BUFFER_BIT);
     const gl::Program& glow = ctx.programs.halo_glow;
-    begin_strokes(ctx, glow);
+    begin_strokes(ctx, glow, StrokeVisibility::depth_test);
     glow.set("u_profile", 1);
     glow.set("u_strokes", h.strokes_per_edge);
     ctx.style_textures.profile.bind(1);
@@ -38,7 +38,7 @@ void pass_halo(const PassContext& ctx) {
     gl::apply(apply_state);
     const gl::Program& lay = ctx.programs.halo_apply;
     lay.use();
-    set_line_uniforms(lay, ctx, 1.0f);
+    set_spine_test_uniforms(lay, ctx);
     lay.set("u_halo", 1);
     lay.set("u_paper", ctx.style.background);
     ctx.targets.depth.bind(0);
@@ -49,7 +49,7 @@ void pass_halo(const PassContext& ctx) {
     ctx.targets.canvas_shrunk_fbo.bind();
     gl::apply(halo_state(ctx, gl::Blend::min));
     const gl::Program& ink = ctx.programs.halo;
-    begin_strokes(ctx, ink);
+    begin_strokes(ctx, ink, StrokeVisibility::depth_test);
     ink.set("u_profile", 1);
     ink.set("u_offset", 2);
     ink.set("u_halo", 3);

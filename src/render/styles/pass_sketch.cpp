@@ -18,7 +18,7 @@ void pass_sketch(const PassContext& ctx, bool mask_mode) {
         gl::apply(state);
     }
     const gl::Program& p = mask_mode ? ctx.programs.sketch_mask : ctx.programs.sketch;
-    begin_strokes(ctx, p);
+    begin_strokes(ctx, p, StrokeVisibility::spine_test);
     const SketchParams& s = ctx.style.sketch;
     p.set("u_noise", 1);
     p.set("u_strokes", s.strokes_per_edge);

@@ -2,9 +2,10 @@
 
 namespace bz::render {
 
-void begin_strokes(const PassContext& ctx, const gl::Program& p) {
+void begin_strokes(const PassContext& ctx, const gl::Program& p, StrokeVisibility visibility) {
     p.use();
-    set_line_uniforms(p, ctx, 1.0f);
+    set_edge_projection_uniforms(p, ctx);
+    if (visibility == StrokeVisibility::spine_test) set_spine_test_uniforms(p, ctx);
     p.set("u_capacity", ctx.edges.capacity());
     p.set("u_light_dir", glm::normalize(ctx.style.light_dir));
     const OutlineParams& o = ctx.style.outline;
