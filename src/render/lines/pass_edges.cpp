@@ -114,7 +114,7 @@ void pass_edges(const PassContext& ctx) {
     // A fragment in the viewport lies within its beam's half-width of its spine point: cover that.
     program.set("u_sample_margin", 16.0f);
     program.set("u_sample_spacing", ctx.settings.spine_sample_spacing_px);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, ctx.instances.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kInstancesBinding, ctx.instances.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEdgeRecordsBinding, ctx.edges.records().id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEdgeCommandBinding, ctx.edges.command().id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSpineSpansBinding, ctx.edges.spans().id());

@@ -37,7 +37,6 @@ void set_edge_projection_uniforms(const gl::Program& p, const PassContext& ctx) 
 
 void set_spine_test_uniforms(const gl::Program& p, const PassContext& ctx) {
     set_spine_tolerances(p, ctx);
-    p.set("u_depth", 0);
     p.set("u_occlusion", ctx.occlusion ? 1 : 0);
     p.set("u_proj_a", ctx.cam.proj_a);
     p.set("u_proj_inv_b", 1.0f / ctx.cam.proj_b);
@@ -62,7 +61,8 @@ void set_line_uniforms(const gl::Program& p, const PassContext& ctx) {
 constexpr float kMaskHalfWidth = 0.75f;
 
 void bind_beam_tiles(const Targets& targets) {
-    glBindImageTexture(3, targets.beam_tiles.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R8UI);
+    glBindImageTexture(kImageUnitBeamTiles, targets.beam_tiles.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
+                       GL_R8UI);
 }
 
 void begin_line_target(const PassContext& ctx, const gl::Program& program, bool mask_mode) {
@@ -92,8 +92,8 @@ void begin_line_target(const PassContext& ctx, const gl::Program& program, bool 
                       ctx.targets.height, ctx.seed, mask_mode);
     if (mask_mode)
         program.set("u_beam_width", glm::vec4(kMaskHalfWidth, kMaskHalfWidth, 0.0f, 1.0f));
-    ctx.targets.depth.bind(0);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, ctx.instances.id());
+    ctx.targets.depth.bind(kTextureUnitDepth);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kInstancesBinding, ctx.instances.id());
 }
 
 // The feature-line pass of LineMethod::geometry_shader: the geometry shader finds and extrudes
@@ -106,7 +106,7 @@ void pass_lines(const PassContext& ctx, bool mask_mode) {
     program.set("u_edges_to_test", 3);  // a uniform loop bound: keeps one copy of the emit code
     for (const Batch& b : ctx.batches.batches) {
         const GpuMesh& mesh = ctx.gpu_meshes.get(ctx.meshes, b.mesh, b.lod);
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, mesh.edge_cosines.id());
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEdgeCosinesBinding, mesh.edge_cosines.id());
         program.set("u_skip_back_faces",
                     (ctx.occlusion && b.eye_outside && mesh.outward_closed) ? 1 : 0);
         mesh.lines_vao.bind();

@@ -22,8 +22,8 @@ void begin_strokes(const PassContext& ctx, const gl::Program& p, StrokeVisibilit
     p.set("u_outer_px", h.outer_px);
     p.set("u_halo_px", h.halo_px);
     p.set("u_smoothing", h.cubic_smoothing && ctx.settings.cubic_smoothing ? 1 : 0);
-    ctx.targets.depth.bind(0);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, ctx.instances.id());
+    ctx.targets.depth.bind(kTextureUnitDepth);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kInstancesBinding, ctx.instances.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEdgeRecordsBinding, ctx.edges.records().id());
 }
 

@@ -8,7 +8,7 @@ namespace bz::render {
 // How a stroke program hides strokes: the spine test against the prepass depth in its fragment
 // stage (outline, sketch), or the fixed-function depth test against a mask (halo).
 enum class StrokeVisibility { spine_test, depth_test };
-// Binds the frame's edge records, instances and depth texture (unit 0) and sets every
+// Binds the frame's edge records, instances and depth texture (kTextureUnitDepth) and sets every
 // uniform stroke.vert reads, and spine_test.glsl's with StrokeVisibility::spine_test.
 void begin_strokes(const PassContext& ctx, const gl::Program& program, StrokeVisibility visibility);
 // One quad per record appended by pass_edges, with the count it appended (no read-back).
