@@ -4,7 +4,7 @@
 // from every line fragment cost about as much as the pixels it saved the downsample.
 // TILE_SIZE (pixels) comes from render/targets.h. Every store writes the same 1.
 #ifdef BEAM_TILES
-layout(r8ui, binding = 3) uniform writeonly uimage2D u_beam_tiles;
+layout(r8ui, binding = IMAGE_UNIT_BEAM_TILES) uniform writeonly uimage2D u_beam_tiles;
 
 // The quad of segment s0-s1 (pixels): lengthened by `reach` past both ends, `half_width` to
 // each side. Points half a tile apart along it, each marking the tiles within half_width +

@@ -10,7 +10,7 @@
 #include "lit_tiles.glsl"
 
 in vec2 v_uv;
-uniform sampler2D u_source;
+layout(binding = TEXTURE_UNIT_SOURCE) uniform sampler2D u_source;
 uniform vec2 u_direction;  // (1,0) or (0,1)
 uniform bool u_encode;
 uniform float u_floor;  // black level taken off the finished bloom (only when u_encode)

@@ -12,7 +12,7 @@
 // so that the sparse composite shades it even where the light stays under the threshold.
 #include "lit_tiles.glsl"
 
-uniform sampler2D u_source;
+layout(binding = TEXTURE_UNIT_SOURCE) uniform sampler2D u_source;
 uniform int u_factor;
 uniform vec2 u_inv_target;  // 1 / this target's size in texels
 uniform float u_threshold;  // peak-channel brightness where glow starts (0: everything glows)

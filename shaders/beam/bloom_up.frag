@@ -9,8 +9,8 @@
 #include "lit_tiles.glsl"
 
 in vec2 v_uv;
-uniform sampler2D u_coarser;  // S_{k+1}
-uniform sampler2D u_level;    // L_k (only read when u_final)
+layout(binding = TEXTURE_UNIT_COARSER) uniform sampler2D u_coarser;  // S_{k+1}
+layout(binding = TEXTURE_UNIT_LEVEL) uniform sampler2D u_level;    // L_k (only read when u_final)
 uniform float u_ratio;        // w_{k+1} / w_k
 uniform float u_weight;       // w_0 / sum of weights (only when u_final)
 uniform bool u_final;

@@ -14,14 +14,14 @@
 #include "phosphor.glsl"
 // The picture, last frame's on entry. Each invocation reads and writes only its own pixel's
 // texel (one fragment per pixel), so in place is free of hazards.
-layout(rgba16f, binding = 0) uniform image2D u_picture;
+layout(rgba16f, binding = IMAGE_UNIT_PICTURE) uniform image2D u_picture;
 // Per lit tile (lit_tiles.glsl): the new picture holds light there (cleared before; the next
 // frame's tile_list.comp reads it).
-layout(r8ui, binding = 1) uniform writeonly uimage2D u_picture_lit;
+layout(r8ui, binding = IMAGE_UNIT_PICTURE_LIT) uniform writeonly uimage2D u_picture_lit;
 #endif
 
-uniform sampler2D u_lines;
-uniform sampler2D u_bloom;  // encoded 8-bit (bloom_encoding.glsl)
+layout(binding = TEXTURE_UNIT_LINES) uniform sampler2D u_lines;
+layout(binding = TEXTURE_UNIT_BLOOM) uniform sampler2D u_bloom;  // encoded 8-bit (bloom_encoding.glsl)
 uniform float u_bloom_strength;
 uniform float u_exposure;
 uniform bool u_overlay;  // Battlezone's cabinet overlay over a white tube

@@ -3,7 +3,7 @@
 // (u_tiles, from tiles.comp) and a degenerate one, culled before rasterisation, over the rest.
 #include "screen_tiles.glsl"
 
-uniform usampler2D u_tiles;
+layout(binding = TEXTURE_UNIT_TILES) uniform usampler2D u_tiles;
 uniform ivec2 u_screen;
 
 const ivec2 kCorners[6] = ivec2[](ivec2(0, 0), ivec2(1, 0), ivec2(0, 1), ivec2(0, 1), ivec2(1, 0), ivec2(1, 1));

@@ -8,7 +8,7 @@
 // the encoded value times sqrt(f). Each step also takes at least one 8-bit step off, so that
 // a faint glow reaches exact black instead of rounding back to itself.
 #ifdef GLOW_PHOSPHOR
-uniform sampler2D u_glow_last;     // last frame's finished bloom, encoded
+layout(binding = TEXTURE_UNIT_GLOW_LAST) uniform sampler2D u_glow_last;     // last frame's finished bloom, encoded
 uniform float u_glow_sqrt_factor;  // sqrt of this step's decay of the phosphor (0 at a reset)
 
 vec3 persist_glow(vec3 encoded) {

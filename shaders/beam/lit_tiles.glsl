@@ -11,7 +11,7 @@
 const int kLitTile = LIT_TILE_SIZE;
 
 #ifdef LIT_TILES
-layout(r8ui, binding = 2) uniform writeonly uimage2D u_lit_tiles;
+layout(r8ui, binding = IMAGE_UNIT_LIT_TILES) uniform writeonly uimage2D u_lit_tiles;
 uniform bool u_mark_tiles;  // false: no mark image is bound (the every-pixel composite)
 
 // Marks every tile that holds a pixel of [lo, hi] (inclusive, clipped to the screen).

@@ -3,7 +3,7 @@
 // list's indirect command, so the vertex work grows with the lit tiles, not the screen.
 #include "lit_tiles.glsl"
 
-layout(std430, binding = 6) readonly buffer TileList {
+layout(std430, binding = TILE_LIST_BINDING) readonly buffer TileList {
     uint vertex_count;
     uint instance_count;
     uint first_vertex;

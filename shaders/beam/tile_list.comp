@@ -9,10 +9,10 @@
 #include "lit_tiles.glsl"
 
 layout(local_size_x = 64) in;
-uniform usampler2D u_marks;        // this frame's marks
-uniform usampler2D u_picture_lit;  // last frame's picture marks (only with u_phosphor)
+layout(binding = TEXTURE_UNIT_MARKS) uniform usampler2D u_marks;        // this frame's marks
+layout(binding = TEXTURE_UNIT_PICTURE_LIT) uniform usampler2D u_picture_lit;  // last frame's picture marks (only with u_phosphor)
 uniform bool u_phosphor;
-layout(std430, binding = 6) buffer TileList {
+layout(std430, binding = TILE_LIST_BINDING) buffer TileList {
     uint vertex_count;
     uint instance_count;
     uint first_vertex;

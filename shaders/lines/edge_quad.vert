@@ -8,7 +8,7 @@
 #include "spine_samples.glsl"
 
 layout(std430, binding = EDGE_RECORDS_BINDING) readonly buffer Records { EdgeRecord records[]; };
-layout(std430, binding = 1) readonly buffer Instances { vec4 instance_data[]; };
+#include "../instance_data.glsl"
 layout(std430, binding = SPINE_SPANS_BINDING) readonly buffer Spans { uvec4 spans[]; };
 layout(std430, binding = EDGE_COMMAND_BINDING) readonly buffer Command { EDGE_COMMAND_MEMBERS; };
 
@@ -49,9 +49,9 @@ void main() {
 #endif
     uint instance = r.ids.y;
     // The beam's shape per edge; the flicker key is the edge's own id in its mesh and instance.
-    BeamShape beam = beam_shape(instance_data[instance * 6u + 5u].z, length(s1 - s0),
+    BeamShape beam = beam_shape(instance_params(instance).z, length(s1 - s0),
                                 (instance * 0x01000193u) ^ r.ids.z);
-    g_shade = vec4(instance_data[instance * 6u + 4u].rgb * beam.gain, beam.half_width);
+    g_shade = vec4(instance_color(instance).rgb * beam.gain, beam.half_width);
     g_stretch = vec4(-1.0, 2.0, beam.softness, 0.0);
     // When the frame asked for more samples than fit, every record is tested per fragment
     // (spine_visibility.comp skipped them all), so that which records got samples - the order

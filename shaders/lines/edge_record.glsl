@@ -38,12 +38,5 @@ const uint EDGE_CLIPPED_END = 1u << 10;
     uint samples_used
 const uint EDGE_VERTICES = 6u;
 
-#define EDGE_LIST_BINDING 2
-#define EDGE_POSITIONS_BINDING 3
-#define EDGE_RECORDS_BINDING 4
-#define EDGE_COMMAND_BINDING 5
-#define EDGE_VERTEX_NORMALS_BINDING 6
-#define SPINE_SAMPLES_BINDING 7
-#define SPINE_SPANS_BINDING 8
-#define EDGE_FACE_NORMALS_BINDING 9
-#define EDGE_WORK_BINDING 10
+// The binding points (EDGE_LIST_BINDING, EDGE_RECORDS_BINDING, ...) are #defines injected from
+// src/render/lines/edge_buffer.h (src/render/shader_interface.h).

@@ -33,8 +33,8 @@ layout(std430, binding = EDGE_FACE_NORMALS_BINDING) readonly buffer FaceNormals 
 // Per instance of the frame, its object-space eye (xyz) and the sign of det(model-view) (w) as
 // float bits; then the work items: x instance, y first edge, z edge count.
 layout(std430, binding = EDGE_WORK_BINDING) readonly buffer Work { uvec4 work[]; };
-// render::InstanceData: model-view in vec4 0-3, colour 4, parameters 5 (x: cos(crease angle)).
-layout(std430, binding = 1) readonly buffer Instances { vec4 instance_data[]; };
+// render::InstanceData: the model-view and the parameters (x: cos(crease angle)).
+#include "../instance_data.glsl"
 layout(std430, binding = EDGE_RECORDS_BINDING) writeonly buffer Records { EdgeRecord records[]; };
 // Per record, two entries: the sampled stretch and the visible one, then the visible count
 // (spine_samples.glsl).
@@ -81,10 +81,7 @@ vec2 on_screen_stretch(vec2 s0, vec2 s1) {
     return vec2(t0, t1);
 }
 
-mat4 model_view(uint inst) {
-    return mat4(instance_data[inst * 6u], instance_data[inst * 6u + 1u], instance_data[inst * 6u + 2u],
-                instance_data[inst * 6u + 3u]);
-}
+mat4 model_view(uint inst) { return instance_model_view(inst); }
 
 // Whether a face faces the eye: in object space (normal n, eye minus its vertex a), with the
 // view-space test of the geometry shader for a near tie, so that both line methods classify a
@@ -134,7 +131,7 @@ void main() {
             kind = EDGE_SILHOUETTE;
         } else {
             if (!front_a && u_skip_back_faces) return;
-            if (!(me.cos_dihedral < instance_data[inst * 6u + 5u].x)) return;
+            if (!(me.cos_dihedral < instance_params(inst).x)) return;
             kind = EDGE_CREASE;  // a < b: the face that walks low -> high, as the geometry shader
         }
     }

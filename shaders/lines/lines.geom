@@ -15,14 +15,11 @@ in VertexData {
 
 // Cosine of the dihedral angle of each triangle edge, precomputed from object-space normals
 // on the CPU (view-independent); 2.0 on edges without a usable neighbour.
-layout(std430, binding = 0) readonly buffer EdgeCosines { float edge_cos[]; };
+layout(std430, binding = EDGE_COSINES_BINDING) readonly buffer EdgeCosines { float edge_cos[]; };
 
-// The frame's per-instance data (render::InstanceData): 6 vec4 each, the model-view matrix in
-// the first four, then colour (rgb * intensity), then parameters (x: cos(crease angle),
-// z: intensity).
-layout(std430, binding = 1) readonly buffer Instances { vec4 instance_data[]; };
-vec4 instance_color(uint i) { return instance_data[i * 6u + 4u]; }
-vec4 instance_params(uint i) { return instance_data[i * 6u + 5u]; }
+// The frame's per-instance data (render::InstanceData): colour (rgb * intensity) and
+// parameters (x: cos(crease angle), z: intensity).
+#include "../instance_data.glsl"
 
 // Set for an outward-closed mesh seen from outside: its back faces are hidden by its front
 // faces, so a back-facing triangle has nothing visible to emit (its silhouettes are emitted by

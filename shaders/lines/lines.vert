@@ -3,9 +3,9 @@
 // facing, clipping and depth), the welded vertex index (to emit each crease once and to spot
 // the "no neighbour" marker) and the instance index (per-instance colour and crease threshold
 // are read once per triangle from the instance buffer, not carried by every vertex).
-layout(location = 0) in vec3 a_position;
-layout(location = 1) in mat4 a_model_view;  // locations 1-4
-layout(location = 6) in vec4 a_params;      // y: instance index
+layout(location = ATTRIB_POSITION) in vec3 a_position;
+layout(location = ATTRIB_MODEL_VIEW) in mat4 a_model_view;  // four locations
+layout(location = ATTRIB_PARAMS) in vec4 a_params;      // y: instance index
 
 out VertexData {
     vec3 view_pos;

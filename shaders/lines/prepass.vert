@@ -1,7 +1,7 @@
 #version 450 core
 // Depth prepass: positions only, instanced.
-layout(location = 0) in vec3 a_position;
-layout(location = 1) in mat4 a_model_view;  // locations 1-4
+layout(location = ATTRIB_POSITION) in vec3 a_position;
+layout(location = ATTRIB_MODEL_VIEW) in mat4 a_model_view;  // four locations
 
 uniform mat4 u_proj;
 

@@ -23,7 +23,7 @@
 // Everything is compared as inverse view depth (1/v), which is affine in the stored depth and
 // in a plane's equation, so the test needs no division: for a plane n.X = 1 (n pre-divided by
 // n.p in the geometry shader) and the ray r = (x, y, -1) through a pixel, 1/v = n.r.
-uniform sampler2D u_depth;
+layout(binding = TEXTURE_UNIT_DEPTH) uniform sampler2D u_depth;
 uniform bool u_occlusion;     // false in the arcade style: the 1980 machine hid nothing
 uniform float u_proj_a;       // stored depth -> inverse view depth: (ndc + a) * inv_b
 uniform float u_proj_inv_b;

@@ -2,11 +2,11 @@
 // Filled styles: the object's triangles with view-space position and normal, its colour and
 // whether it is shaded smooth (vertex normals) or flat (face normals, in the fragment shader).
 // With SHRINK the mesh is pulled in along its vertex normals: the halo's depth mask (Loviscach).
-layout(location = 0) in vec3 a_position;
-layout(location = 1) in mat4 a_model_view;  // locations 1-4
-layout(location = 5) in vec4 a_color;
-layout(location = 6) in vec4 a_params;      // w: smooth shading
-layout(location = 7) in vec3 a_normal;
+layout(location = ATTRIB_POSITION) in vec3 a_position;
+layout(location = ATTRIB_MODEL_VIEW) in mat4 a_model_view;  // four locations
+layout(location = ATTRIB_COLOR) in vec4 a_color;
+layout(location = ATTRIB_PARAMS) in vec4 a_params;      // w: smooth shading
+layout(location = ATTRIB_NORMAL) in vec3 a_normal;
 
 uniform mat4 u_proj;
 uniform float u_shrink;  // SHRINK: view-space distance per unit of view depth (pixels at any depth)

@@ -13,14 +13,14 @@
 #include "../beam/beam.glsl"
 #include "stroke_varyings.glsl"
 
-uniform sampler2D u_profile;   // RG: ink across the stroke (0 inner .. 1 outer), halo beyond
-uniform sampler2D u_offset;    // RG: smooth offsets in pixels, repeat
+layout(binding = TEXTURE_UNIT_PROFILE) uniform sampler2D u_profile;   // RG: ink across the stroke (0 inner .. 1 outer), halo beyond
+layout(binding = TEXTURE_UNIT_OFFSET) uniform sampler2D u_offset;    // RG: smooth offsets in pixels, repeat
 uniform int u_strokes;
 uniform float u_inner_px;
 uniform float u_outer_px;
 uniform float u_halo_px;
 uniform vec3 u_ink;
-uniform sampler2D u_halo;      // strokes: the halo buffer, so nearer halos cover farther ink
+layout(binding = TEXTURE_UNIT_HALO) uniform sampler2D u_halo;      // strokes: the halo buffer, so nearer halos cover farther ink
 
 layout(location = 0) out vec4 o_color;
 

@@ -5,7 +5,7 @@
 // of neighbouring edges, so zig-zag silhouettes leave no seams.
 #include "../lines/spine_test.glsl"
 
-uniform sampler2D u_halo;
+layout(binding = TEXTURE_UNIT_HALO) uniform sampler2D u_halo;
 uniform vec3 u_paper;
 layout(location = 0) out vec4 o_color;
 

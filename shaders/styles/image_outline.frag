@@ -3,8 +3,8 @@
 // surface is an edge pixel when the depth gradient is large relative to its own depth (an
 // occluding contour: only the nearer side qualifies, the background never does) or when the
 // normal gradient exceeds the step a crease of the crease angle makes.
-uniform sampler2D u_depth;
-uniform sampler2D u_normals;  // n * 0.5 + 0.5; alpha 0 on the background
+layout(binding = TEXTURE_UNIT_DEPTH) uniform sampler2D u_depth;
+layout(binding = TEXTURE_UNIT_NORMALS) uniform sampler2D u_normals;  // n * 0.5 + 0.5; alpha 0 on the background
 uniform float u_proj_a;
 uniform float u_proj_b;
 uniform bool u_depth_zero_to_one;

@@ -6,8 +6,8 @@
 // u_halo_px wide: text and notices then keep their contrast on light paper and over the fills
 // and strokes behind them. Without it, the HUD's tone-mapped colour goes over the paper.
 in vec2 v_uv;
-uniform sampler2D u_canvas;
-uniform sampler2D u_lines;
+layout(binding = TEXTURE_UNIT_CANVAS) uniform sampler2D u_canvas;
+layout(binding = TEXTURE_UNIT_LINES) uniform sampler2D u_lines;
 uniform bool u_ink;
 uniform float u_ink_luminance;
 uniform float u_halo_px;

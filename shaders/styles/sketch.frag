@@ -11,7 +11,7 @@
 #include "../lines/spine_test.glsl"
 #include "stroke_varyings.glsl"
 
-uniform sampler2D u_noise;     // RGBA8 uniform noise, 256 x 256, repeat
+layout(binding = TEXTURE_UNIT_NOISE) uniform sampler2D u_noise;     // RGBA8 uniform noise, 256 x 256, repeat
 uniform int u_strokes;
 uniform float u_jitter_px;
 uniform float u_width_px;

@@ -13,7 +13,7 @@
 #include "../lines/edge_record.glsl"
 
 layout(std430, binding = EDGE_RECORDS_BINDING) readonly buffer Records { EdgeRecord records[]; };
-layout(std430, binding = 1) readonly buffer Instances { vec4 instance_data[]; };
+#include "../instance_data.glsl"
 
 uniform uint u_capacity;
 uniform mat4 u_proj;
@@ -94,7 +94,7 @@ void main() {
     g_face_pos = r.face_pos.xyz;
     g_face_neg = r.face_neg.xyz;
     g_nudge = kind == EDGE_SILHOUETTE ? outward * 0.75 : vec2(0.0);
-    g_color = instance_data[r.ids.y * 6u + 4u].rgb;
+    g_color = instance_color(r.ids.y).rgb;
     g_kind = kind;
     // The edge id is stable for a mesh; mixing in the mesh id keeps two models apart.
     g_seed = hash_u32(r.ids.z * 0x9e3779b9u ^ hash_u32(r.ids.w + 0x51u));

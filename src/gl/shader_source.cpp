@@ -155,4 +155,83 @@ std::string map_info_log(std::string_view log, const std::vector<std::string>& f
     return out.str();
 }
 
+namespace {
+
+bool is_ident_char(char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+}
+
+// The text with comments blanked out (newlines kept), so a commented-out declaration is none.
+std::string without_comments(std::string_view s) {
+    std::string out(s);
+    for (std::size_t i = 0; i + 1 < out.size(); ++i) {
+        if (out[i] == '/' && out[i + 1] == '/') {
+            while (i < out.size() && out[i] != '\n') out[i++] = ' ';
+        } else if (out[i] == '/' && out[i + 1] == '*') {
+            const auto end = out.find("*/", i + 2);
+            const std::size_t stop = end == std::string::npos ? out.size() : end + 2;
+            for (; i < stop; ++i)
+                if (out[i] != '\n') out[i] = ' ';
+            --i;
+        }
+    }
+    return out;
+}
+
+}  // namespace
+
+std::vector<std::string> declared_uniforms(std::string_view glsl) {
+    const std::string text = without_comments(glsl);
+    std::vector<std::string> names;
+    std::size_t pos = 0;
+    while ((pos = text.find("uniform", pos)) != std::string::npos) {
+        const bool word = (pos == 0 || !is_ident_char(text[pos - 1])) &&
+                          (pos + 7 >= text.size() || !is_ident_char(text[pos + 7]));
+        pos += 7;
+        if (!word) continue;
+        // The declaration runs to its ';'. A '{' before it makes it a uniform block.
+        const auto end = text.find(';', pos);
+        if (end == std::string::npos) break;
+        const std::string_view decl(text.data() + pos, end - pos);
+        if (decl.find('{') != std::string_view::npos) {
+            pos = end;
+            continue;
+        }
+        // Each declarator is the last identifier before a ',', '[' or '=' at nesting depth 0, or
+        // before the ';' (the type and qualifiers come first; array sizes and initialisers are
+        // skipped by depth).
+        int depth = 0;
+        std::string last;
+        bool taken = false;  // this declarator's name is already recorded
+        for (std::size_t i = 0; i <= decl.size(); ++i) {
+            const char c = i < decl.size() ? decl[i] : ';';
+            if (depth == 0 && is_ident_char(c)) {
+                std::size_t j = i;
+                while (j < decl.size() && is_ident_char(decl[j])) ++j;
+                if (!taken) last = std::string(decl.substr(i, j - i));
+                i = j - 1;
+                continue;
+            }
+            if (c == '(' || c == '[') {
+                if (depth == 0 && c == '[' && !taken && !last.empty()) {
+                    names.push_back(last);
+                    taken = true;
+                }
+                ++depth;
+            } else if (c == ')' || c == ']') {
+                depth = std::max(0, depth - 1);
+            } else if (depth == 0 && (c == '=' || c == ',' || c == ';')) {
+                if (!taken && !last.empty() && !std::isdigit(static_cast<unsigned char>(last[0])))
+                    names.push_back(last);
+                taken = c == '=';  // an initialiser's identifiers are not names
+                if (c == ',') last.clear();
+            }
+        }
+        pos = end;
+    }
+    std::sort(names.begin(), names.end());
+    names.erase(std::unique(names.begin(), names.end()), names.end());
+    return names;
+}
+
 }  // namespace bz::gl

@@ -22,4 +22,11 @@ ShaderSource assemble_shader(const std::filesystem::path& file,
 // with "file:L:C: msg" using the file table of the assembled source.
 std::string map_info_log(std::string_view log, const std::vector<std::string>& files);
 
+// The names of the default-block uniforms an assembled source declares (`uniform T name;`,
+// `uniform T a, b[4];`, with any layout or precision qualifiers), comments skipped. Uniform
+// blocks (`uniform Name { ... }`) are not default-block uniforms and are left out. Declarations
+// inside a branch the preprocessor drops count too: the program's interface is what its source
+// text declares, of which the compiled variant and the optimiser keep a subset (gl::Program).
+std::vector<std::string> declared_uniforms(std::string_view glsl);
+
 }  // namespace bz::gl

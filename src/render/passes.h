@@ -12,6 +12,7 @@
 #include "render/lines/edge_counter.h"
 #include "render/lines/edge_storage.h"
 #include "render/programs.h"
+#include "render/shader_interface.h"
 #include "render/styles/style_def.h"
 #include "render/styles/style_textures.h"
 #include "render/targets.h"
@@ -91,9 +92,15 @@ void pass_lines(const PassContext& ctx, bool mask_mode);
 // geometry.
 void begin_line_target(const PassContext& ctx, const gl::Program& program, bool mask_mode);
 // Binds Targets::beam_tiles where the beam's fragment stages mark the tiles they light
-// (shaders/beam/beam_tiles.glsl, image unit 3).
+// (shaders/beam/beam_tiles.glsl, kImageUnitBeamTiles).
 void bind_beam_tiles(const Targets& targets);
-void set_line_uniforms(const gl::Program& program, const PassContext& ctx, float half_width);
+// The uniforms of the stages that project and clip edges to the window (u_proj, u_viewport,
+// u_near, u_far: lines.geom, edges.comp, edge_quad.*, spine_visibility.comp, stroke.vert).
+void set_edge_projection_uniforms(const gl::Program& program, const PassContext& ctx);
+// The uniforms shaders/lines/spine_test.glsl declares: tolerances, depth convention, view rays.
+void set_spine_test_uniforms(const gl::Program& program, const PassContext& ctx);
+// Both: the programs that find or draw edges and test their spines.
+void set_line_uniforms(const gl::Program& program, const PassContext& ctx);
 // Fills the edge buffer from every batch's edge list (edges.comp): the strokes of the filled
 // styles and LineMethod::compute read it.
 void pass_edges(const PassContext& ctx);
@@ -124,10 +131,9 @@ float mip_weight(const std::vector<float>& weights, std::size_t level);
 // where last frame's picture held light.
 void pass_tiles(const PassContext& ctx);
 // Draws shaders/beam/composite_tiles.vert's quads over the tiles that `tiles` marks (R8UI, one
-// texel per kScreenTileSize square of a `screen`-pixel screen), read on texture unit `unit`,
+// texel per kScreenTileSize square of a `screen`-pixel screen), read on kTextureUnitTiles,
 // with `program` in use: the sparse first downsample over the beam's tiles.
-void draw_tile_quads(const gl::Program& program, const gl::Texture2D& tiles, glm::ivec2 screen,
-                     int unit);
+void draw_tile_quads(const gl::Program& program, const gl::Texture2D& tiles, glm::ivec2 screen);
 // With `program` in use (one built with LIT_TILES): binds Targets::lit_tiles for its marks,
 // or, with `mark` false, tells it to mark nothing (shaders/beam/lit_tiles.glsl).
 void bind_lit_tile_marks(const gl::Program& program, const Targets& targets, bool mark);

@@ -4,6 +4,7 @@
 
 #include "core/paths.h"
 #include "render/beam/bloom_kernel.h"
+#include "render/shader_interface.h"
 #include "render/targets.h"
 
 namespace bz::render {
@@ -19,6 +20,15 @@ std::string glsl_array(const std::vector<float>& v) {
     return out.str();
 }
 
+// Every program of the pipeline gets the shader interface's #defines (render/shader_interface.h)
+// ahead of its own.
+gl::Program program(const std::vector<gl::StageFile>& stages,
+                    const std::vector<std::string>& defines = {}) {
+    std::vector<std::string> all = shader_interface_defines();
+    all.insert(all.end(), defines.begin(), defines.end());
+    return gl::Program(stages, all);
+}
+
 }  // namespace
 
 gl::Program load_bloom_blur(const RenderSettings& settings, bool glow_persistence) {
@@ -31,58 +41,58 @@ gl::Program load_bloom_blur(const RenderSettings& settings, bool glow_persistenc
     // Its last direction marks the lit tiles (shaders/beam/lit_tiles.glsl).
     defines.push_back("LIT_TILES 1");
     defines.push_back("LIT_TILE_SIZE " + std::to_string(kLitTileSize));
-    return gl::Program({{GL_VERTEX_SHADER, dir / "fullscreen.vert"},
-                        {GL_FRAGMENT_SHADER, dir / "beam/bloom_blur.frag"}},
-                       std::move(defines));
+    return program({{GL_VERTEX_SHADER, dir / "fullscreen.vert"},
+                    {GL_FRAGMENT_SHADER, dir / "beam/bloom_blur.frag"}},
+                   std::move(defines));
 }
 
 Programs load_programs(const RenderSettings& settings) {
     const auto dir = shaders_dir();
     auto stage = [&](GLenum type, const char* file) { return gl::StageFile{type, dir / file}; };
     Programs p;
-    p.prepass = gl::Program({stage(GL_VERTEX_SHADER, "lines/prepass.vert")});
+    p.prepass = program({stage(GL_VERTEX_SHADER, "lines/prepass.vert")});
     // The beam's line stages mark the screen tiles they light (shaders/beam/beam_tiles.glsl).
     const std::vector<std::string> beam_tiles = {"BEAM_TILES 1",
                                                  "TILE_SIZE " + std::to_string(kScreenTileSize)};
-    p.lines = gl::Program(
+    p.lines = program(
         {stage(GL_VERTEX_SHADER, "lines/lines.vert"), stage(GL_GEOMETRY_SHADER, "lines/lines.geom"),
          stage(GL_FRAGMENT_SHADER, "lines/lines.frag")},
         beam_tiles);
-    p.mask = gl::Program(
+    p.mask = program(
         {stage(GL_VERTEX_SHADER, "lines/lines.vert"), stage(GL_GEOMETRY_SHADER, "lines/lines.geom"),
          stage(GL_FRAGMENT_SHADER, "lines/lines.frag")},
         {"MASK_MODE 1"});
-    p.edges = gl::Program({stage(GL_COMPUTE_SHADER, "lines/edges.comp")});
-    p.spine_visibility = gl::Program({stage(GL_COMPUTE_SHADER, "lines/spine_visibility.comp")});
-    p.edge_quads = gl::Program({stage(GL_VERTEX_SHADER, "lines/edge_quad.vert"),
-                                stage(GL_FRAGMENT_SHADER, "lines/edge_quad.frag")},
-                               beam_tiles);
-    p.edge_quads_mask = gl::Program({stage(GL_VERTEX_SHADER, "lines/edge_quad.vert"),
-                                     stage(GL_FRAGMENT_SHADER, "lines/edge_quad.frag")},
-                                    {"MASK_MODE 1"});
-    p.hud = gl::Program(
-        {stage(GL_VERTEX_SHADER, "hud/hud.vert"), stage(GL_GEOMETRY_SHADER, "hud/hud.geom"),
-         stage(GL_FRAGMENT_SHADER, "hud/hud.frag")},
-        beam_tiles);
+    p.edges = program({stage(GL_COMPUTE_SHADER, "lines/edges.comp")});
+    p.spine_visibility = program({stage(GL_COMPUTE_SHADER, "lines/spine_visibility.comp")});
+    p.edge_quads = program({stage(GL_VERTEX_SHADER, "lines/edge_quad.vert"),
+                            stage(GL_FRAGMENT_SHADER, "lines/edge_quad.frag")},
+                           beam_tiles);
+    p.edge_quads_mask = program({stage(GL_VERTEX_SHADER, "lines/edge_quad.vert"),
+                                 stage(GL_FRAGMENT_SHADER, "lines/edge_quad.frag")},
+                                {"MASK_MODE 1"});
+    p.hud =
+        program({stage(GL_VERTEX_SHADER, "hud/hud.vert"), stage(GL_GEOMETRY_SHADER, "hud/hud.geom"),
+                 stage(GL_FRAGMENT_SHADER, "hud/hud.frag")},
+                beam_tiles);
     // The passes that know where light is mark the composite's lit tiles (lit_tiles.glsl).
     const std::string lit_tile_size = "LIT_TILE_SIZE " + std::to_string(kLitTileSize);
-    p.bloom_down = gl::Program({stage(GL_VERTEX_SHADER, "fullscreen.vert"),
-                                stage(GL_FRAGMENT_SHADER, "beam/bloom_down.frag")},
-                               {"LIT_TILES 1", lit_tile_size});
+    p.bloom_down = program({stage(GL_VERTEX_SHADER, "fullscreen.vert"),
+                            stage(GL_FRAGMENT_SHADER, "beam/bloom_down.frag")},
+                           {"LIT_TILES 1", lit_tile_size});
     p.bloom_blur = load_bloom_blur(settings, false);
     p.bloom_blur_glow = load_bloom_blur(settings, true);
-    p.composite = gl::Program({stage(GL_VERTEX_SHADER, "fullscreen.vert"),
-                               stage(GL_FRAGMENT_SHADER, "beam/composite.frag")});
+    p.composite = program({stage(GL_VERTEX_SHADER, "fullscreen.vert"),
+                           stage(GL_FRAGMENT_SHADER, "beam/composite.frag")});
     const std::string tile_size = "TILE_SIZE " + std::to_string(kScreenTileSize);
     const auto composite = [&](const char* vertex, std::vector<std::string> defines) {
-        return gl::Program(
+        return program(
             {stage(GL_VERTEX_SHADER, vertex), stage(GL_FRAGMENT_SHADER, "beam/composite.frag")},
             std::move(defines));
     };
     p.composite_tiles = composite("beam/lit_tiles.vert", {lit_tile_size});
-    p.bloom_down_tiles = gl::Program({stage(GL_VERTEX_SHADER, "beam/composite_tiles.vert"),
-                                      stage(GL_FRAGMENT_SHADER, "beam/bloom_down.frag")},
-                                     {tile_size, "LIT_TILES 1", lit_tile_size});
+    p.bloom_down_tiles = program({stage(GL_VERTEX_SHADER, "beam/composite_tiles.vert"),
+                                  stage(GL_FRAGMENT_SHADER, "beam/bloom_down.frag")},
+                                 {tile_size, "LIT_TILES 1", lit_tile_size});
     for (std::size_t power_law = 0; power_law < 2; ++power_law) {
         const std::string decay = "POWER_LAW " + std::to_string(power_law);
         p.composite_phosphor[power_law] =
@@ -90,33 +100,33 @@ Programs load_programs(const RenderSettings& settings) {
         p.composite_tiles_phosphor[power_law] =
             composite("beam/lit_tiles.vert", {lit_tile_size, "PHOSPHOR 1", decay});
     }
-    p.tile_list = gl::Program({stage(GL_COMPUTE_SHADER, "beam/tile_list.comp")}, {lit_tile_size});
-    p.bloom_up = gl::Program({stage(GL_VERTEX_SHADER, "fullscreen.vert"),
-                              stage(GL_FRAGMENT_SHADER, "beam/bloom_up.frag")},
-                             {"LIT_TILES 1", lit_tile_size});
-    p.bloom_up_glow = gl::Program({stage(GL_VERTEX_SHADER, "fullscreen.vert"),
-                                   stage(GL_FRAGMENT_SHADER, "beam/bloom_up.frag")},
-                                  {"GLOW_PHOSPHOR 1", "LIT_TILES 1", lit_tile_size});
-    p.outline_prepass = gl::Program({stage(GL_VERTEX_SHADER, "styles/outline_prepass.vert"),
-                                     stage(GL_FRAGMENT_SHADER, "styles/outline_prepass.frag")});
-    p.image_outline = gl::Program({stage(GL_VERTEX_SHADER, "fullscreen.vert"),
-                                   stage(GL_FRAGMENT_SHADER, "styles/image_outline.frag")});
-    p.image_outline_mask = gl::Program({stage(GL_VERTEX_SHADER, "fullscreen.vert"),
-                                        stage(GL_FRAGMENT_SHADER, "styles/image_outline.frag")},
-                                       {"MASK_MODE 1"});
+    p.tile_list = program({stage(GL_COMPUTE_SHADER, "beam/tile_list.comp")}, {lit_tile_size});
+    p.bloom_up = program({stage(GL_VERTEX_SHADER, "fullscreen.vert"),
+                          stage(GL_FRAGMENT_SHADER, "beam/bloom_up.frag")},
+                         {"LIT_TILES 1", lit_tile_size});
+    p.bloom_up_glow = program({stage(GL_VERTEX_SHADER, "fullscreen.vert"),
+                               stage(GL_FRAGMENT_SHADER, "beam/bloom_up.frag")},
+                              {"GLOW_PHOSPHOR 1", "LIT_TILES 1", lit_tile_size});
+    p.outline_prepass = program({stage(GL_VERTEX_SHADER, "styles/outline_prepass.vert"),
+                                 stage(GL_FRAGMENT_SHADER, "styles/outline_prepass.frag")});
+    p.image_outline = program({stage(GL_VERTEX_SHADER, "fullscreen.vert"),
+                               stage(GL_FRAGMENT_SHADER, "styles/image_outline.frag")});
+    p.image_outline_mask = program({stage(GL_VERTEX_SHADER, "fullscreen.vert"),
+                                    stage(GL_FRAGMENT_SHADER, "styles/image_outline.frag")},
+                                   {"MASK_MODE 1"});
     const auto fill = [&](const char* define) {
-        return gl::Program({stage(GL_VERTEX_SHADER, "styles/fill.vert"),
-                            stage(GL_FRAGMENT_SHADER, "styles/fill.frag")},
-                           {define});
+        return program({stage(GL_VERTEX_SHADER, "styles/fill.vert"),
+                        stage(GL_FRAGMENT_SHADER, "styles/fill.frag")},
+                       {define});
     };
     p.fill_toon = fill("FILL_TOON 1");
     p.fill_pop_art = fill("FILL_POP_ART 1");
     p.fill_paper = fill("FILL_PAPER 1");
-    p.shrunk_depth = gl::Program({stage(GL_VERTEX_SHADER, "styles/fill.vert")}, {"SHRINK 1"});
-    p.ink_composite = gl::Program({stage(GL_VERTEX_SHADER, "fullscreen.vert"),
-                                   stage(GL_FRAGMENT_SHADER, "styles/ink_composite.frag")});
+    p.shrunk_depth = program({stage(GL_VERTEX_SHADER, "styles/fill.vert")}, {"SHRINK 1"});
+    p.ink_composite = program({stage(GL_VERTEX_SHADER, "fullscreen.vert"),
+                               stage(GL_FRAGMENT_SHADER, "styles/ink_composite.frag")});
     const auto stroke = [&](const char* frag, std::vector<std::string> defines) {
-        return gl::Program(
+        return program(
             {stage(GL_VERTEX_SHADER, "styles/stroke.vert"), stage(GL_FRAGMENT_SHADER, frag)},
             std::move(defines));
     };
@@ -125,8 +135,8 @@ Programs load_programs(const RenderSettings& settings) {
     p.sketch_mask = stroke("styles/sketch.frag", {"STROKE_SKETCH 1", "MASK_MODE 1"});
     p.halo_glow = stroke("styles/halo.frag", {"STROKE_HALO 1", "HALO_GLOW 1"});
     p.halo = stroke("styles/halo.frag", {"STROKE_HALO 1"});
-    p.halo_apply = gl::Program({stage(GL_VERTEX_SHADER, "fullscreen.vert"),
-                                stage(GL_FRAGMENT_SHADER, "styles/halo_apply.frag")});
+    p.halo_apply = program({stage(GL_VERTEX_SHADER, "fullscreen.vert"),
+                            stage(GL_FRAGMENT_SHADER, "styles/halo_apply.frag")});
     return p;
 }
 

@@ -80,17 +80,28 @@ struct Renderer::Impl {
                         const CameraMatrices& cam, const StyleDef& style, GLsizei hud_count,
                         GLuint target, const scene::FrameList& frame, FramePicture* picture) {
         const int view_rows = scene_view_rows(frame.view_top, height);
-        return PassContext{programs,       targets,
-                           gpu_meshes,     meshes,
-                           batches,        cam,
-                           frame_settings, style.hidden_lines_removed,
-                           empty_vao,      instances,
-                           edges,          style,
-                           style_textures, hud_vao,
-                           hud_count,      target,
-                           &stats,         &edge_counter,
-                           picture,        frame.seed,
-                           view_rows,      &triangle_draws};
+        return PassContext{.programs = programs,
+                           .targets = targets,
+                           .gpu_meshes = gpu_meshes,
+                           .meshes = meshes,
+                           .batches = batches,
+                           .cam = cam,
+                           .settings = frame_settings,
+                           .occlusion = style.hidden_lines_removed,
+                           .empty_vao = empty_vao,
+                           .instances = instances,
+                           .edges = edges,
+                           .style = style,
+                           .style_textures = style_textures,
+                           .hud_vao = hud_vao,
+                           .hud_vertex_count = hud_count,
+                           .target_fbo = target,
+                           .stats = &stats,
+                           .edge_counter = &edge_counter,
+                           .picture = picture,
+                           .seed = frame.seed,
+                           .view_rows = view_rows,
+                           .triangle_draws = &triangle_draws};
     }
 
     CameraMatrices camera(const scene::FrameList& frame) const {

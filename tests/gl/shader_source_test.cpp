@@ -111,3 +111,22 @@ TEST(ShaderSource, AnIncludeThatIsNotARegularFileIsAnErrorNotAHang) {
     write(dir / "a.frag", "#version 450 core\n#include \"fifo.glsl\"\n");
     EXPECT_THROW(bz::gl::assemble_shader(dir / "a.frag"), bz::UserError);
 }
+
+TEST(ShaderSource, DeclaredUniformsAreReadFromTheDeclarations) {
+    const std::string glsl = R"(#version 450 core
+layout(r8ui, binding = 3) uniform writeonly uimage2D u_tiles;
+uniform float u_a, u_b[4], u_c = 1.0;
+uniform highp vec2 u_d;  // uniform float u_commented;
+/* uniform float u_block_commented; */
+uniform Block { float u_in_block; } blk;
+#ifdef NEVER
+uniform mat4 u_compiled_out;
+#endif
+float u_not_uniform;
+const float k_weights[2] = float[](0.5, 0.5);
+void main() {}
+)";
+    const std::vector<std::string> expected = {"u_a", "u_b",    "u_c", "u_compiled_out",
+                                               "u_d", "u_tiles"};
+    EXPECT_EQ(bz::gl::declared_uniforms(glsl), expected);
+}

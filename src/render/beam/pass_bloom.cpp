@@ -29,18 +29,17 @@ void first_downsample(const PassContext& ctx, const gl::Texture2D& source, float
     down.use();
     bind_lit_tile_marks(down, t, mark);
     down.set("u_inv_target", 1.0f / glm::vec2(t.first_down_fbo.width(), t.first_down_fbo.height()));
-    down.set("u_source", 0);
     down.set("u_factor", static_cast<int>(ctx.settings.bloom_resolution));
     down.set("u_threshold", threshold);
     down.set("u_knee", ctx.settings.beam.bloom_knee);
-    source.bind(0);
+    source.bind(kTextureUnitSource);
     if (!sparse) {
         glDrawArrays(GL_TRIANGLES, 0, 3);
         return;
     }
     glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
     glClear(GL_COLOR_BUFFER_BIT);
-    draw_tile_quads(down, t.beam_tiles, glm::ivec2(t.width, t.height), 1);
+    draw_tile_quads(down, t.beam_tiles, glm::ivec2(t.width, t.height));
 }
 
 // The program of the bloom's last step, which writes the finished bloom: with the phosphor,
@@ -52,11 +51,10 @@ const gl::Program& last_step(const PassContext& ctx, const gl::Program& plain,
         return plain;
     }
     glow.use();
-    glow.set("u_glow_last", 2);
     // A history from before a frame without bloom is stale: start from black.
     glow.set("u_glow_sqrt_factor",
              ctx.targets.glow_history_valid ? std::sqrt(phosphor->glow_factor) : 0.0f);
-    ctx.targets.bloom_last.bind(2);
+    ctx.targets.bloom_last.bind(kTextureUnitGlowLast);
     return glow;
 }
 
@@ -75,22 +73,20 @@ void gaussian_bloom(const PassContext& ctx, const gl::Texture2D& source,
 
     const gl::Program& blur = ctx.programs.bloom_blur;  // kernel baked in (programs.cpp)
     blur.use();
-    blur.set("u_source", 0);
 
     t.bloom_b_fbo.bind();
     blur.set("u_encode", 0);
     blur.set("u_direction", glm::vec2(1.0f, 0.0f));
-    t.bloom_a.bind(0);
+    t.bloom_a.bind(kTextureUnitSource);
     glDrawArrays(GL_TRIANGLES, 0, 3);
 
     t.bloom_out_fbo.bind();
     const gl::Program& last = last_step(ctx, blur, ctx.programs.bloom_blur_glow, phosphor);
-    last.set("u_source", 0);
     last.set("u_encode", 1);
     last.set("u_floor", ctx.settings.beam.bloom_floor);
     last.set("u_direction", glm::vec2(0.0f, 1.0f));
     set_last_step_marks(ctx, last);
-    t.bloom_b.bind(0);
+    t.bloom_b.bind(kTextureUnitSource);
     glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
@@ -107,7 +103,6 @@ void mip_chain_bloom(const PassContext& ctx, const gl::Texture2D& source,
     const gl::Program& down = ctx.programs.bloom_down;
     down.use();
     bind_lit_tile_marks(down, t, false);  // only the first level's blocks are screen pixels
-    down.set("u_source", 0);
     down.set("u_factor", 2);
     down.set("u_threshold", 0.0f);
     down.set("u_knee", ctx.settings.beam.bloom_knee);
@@ -115,7 +110,7 @@ void mip_chain_bloom(const PassContext& ctx, const gl::Texture2D& source,
         t.bloom_mip_fbos[k].bind();
         down.set("u_inv_target",
                  1.0f / glm::vec2(t.bloom_mip_fbos[k].width(), t.bloom_mip_fbos[k].height()));
-        t.bloom_mips[k - 1].bind(0);
+        t.bloom_mips[k - 1].bind(kTextureUnitSource);
         glDrawArrays(GL_TRIANGLES, 0, 3);
     }
 
@@ -123,8 +118,6 @@ void mip_chain_bloom(const PassContext& ctx, const gl::Texture2D& source,
     for (std::size_t k = 0; k < n; ++k) total += mip_weight(w, k);
     const gl::Program& up = ctx.programs.bloom_up;
     up.use();
-    up.set("u_coarser", 0);
-    up.set("u_level", 1);
     up.set("u_final", 0);
     gl::PipelineState add;
     add.blend = gl::Blend::add;
@@ -132,21 +125,19 @@ void mip_chain_bloom(const PassContext& ctx, const gl::Texture2D& source,
     for (std::size_t k = n - 1; k-- > 1;) {  // levels n-2 .. 1
         t.bloom_mip_fbos[k].bind();
         up.set("u_ratio", mip_weight(w, k + 1) / mip_weight(w, k));
-        t.bloom_mips[k + 1].bind(0);
+        t.bloom_mips[k + 1].bind(kTextureUnitCoarser);
         glDrawArrays(GL_TRIANGLES, 0, 3);
     }
     gl::apply(gl::PipelineState{});
     t.bloom_out_fbo.bind();
     const gl::Program& last = last_step(ctx, up, ctx.programs.bloom_up_glow, phosphor);
-    last.set("u_coarser", 0);
-    last.set("u_level", 1);
     last.set("u_final", 1);
     last.set("u_floor", ctx.settings.beam.bloom_floor);
     last.set("u_ratio", n > 1 ? mip_weight(w, 1) / mip_weight(w, 0) : 0.0f);
     last.set("u_weight", mip_weight(w, 0) / total);
     set_last_step_marks(ctx, last);
-    t.bloom_mips[n > 1 ? 1 : 0].bind(0);
-    t.bloom_mips[0].bind(1);
+    t.bloom_mips[n > 1 ? 1 : 0].bind(kTextureUnitCoarser);
+    t.bloom_mips[0].bind(kTextureUnitLevel);
     glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 

@@ -26,22 +26,22 @@ void pass_composite(const PassContext& ctx, const gl::Texture2D& picture, bool b
         sparse ? (phosphor ? programs.composite_tiles_phosphor[decay] : programs.composite_tiles)
                : (phosphor ? programs.composite_phosphor[decay] : programs.composite);
     p.use();
-    p.set("u_lines", 0);
-    p.set("u_bloom", 1);
     p.set("u_bloom_strength", bloom ? ctx.settings.bloom_strength : 0.0f);
     p.set("u_exposure", ctx.settings.exposure);
     p.set("u_overlay", ctx.settings.beam.overlay ? 1 : 0);
     p.set("u_overlay_safe", ctx.settings.beam.colour_safe ? 1 : 0);
     p.set("u_inv_screen",
           glm::vec2(1.0f / static_cast<float>(width), 1.0f / static_cast<float>(height)));
-    picture.bind(0);
-    t.bloom_out.bind(1);
+    picture.bind(kTextureUnitLines);
+    t.bloom_out.bind(kTextureUnitBloom);
     if (phosphor) {
         set_phosphor_uniforms(p, *phosphor);
-        glBindImageTexture(0, t.phosphor.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA16F);
+        glBindImageTexture(kImageUnitPicture, t.phosphor.id(), 0, GL_FALSE, 0, GL_READ_WRITE,
+                           GL_RGBA16F);
         // tile_list.comp has read last frame's marks; this frame's composite marks them afresh.
         glClearTexImage(t.picture_lit.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_BYTE, nullptr);
-        glBindImageTexture(1, t.picture_lit.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R8UI);
+        glBindImageTexture(kImageUnitPictureLit, t.picture_lit.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
+                           GL_R8UI);
     }
     ctx.empty_vao.bind();
     if (!sparse) {

@@ -2,18 +2,17 @@
 
 namespace bz::render {
 
-void draw_tile_quads(const gl::Program& program, const gl::Texture2D& tiles, glm::ivec2 screen,
-                     int unit) {
-    program.set("u_tiles", unit);
+void draw_tile_quads(const gl::Program& program, const gl::Texture2D& tiles, glm::ivec2 screen) {
     program.set("u_screen", screen);
-    tiles.bind(unit);
+    tiles.bind(kTextureUnitTiles);
     glDrawArraysInstanced(GL_TRIANGLES, 0, 6, tiles.width() * tiles.height());
 }
 
 void bind_lit_tile_marks(const gl::Program& program, const Targets& targets, bool mark) {
     program.set("u_mark_tiles", mark ? 1 : 0);
     if (mark) {
-        glBindImageTexture(2, targets.lit_tiles.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R8UI);
+        glBindImageTexture(kImageUnitLitTiles, targets.lit_tiles.id(), 0, GL_FALSE, 0,
+                           GL_WRITE_ONLY, GL_R8UI);
     }
 }
 
@@ -34,12 +33,10 @@ void pass_tiles(const PassContext& ctx) {
     glNamedBufferSubData(t.tile_list.id(), 0, sizeof(command), command);
     const gl::Program& p = ctx.programs.tile_list;
     p.use();
-    p.set("u_marks", 0);
-    p.set("u_picture_lit", 1);
     p.set("u_phosphor", phosphor ? 1 : 0);
-    t.lit_tiles.bind(0);
-    if (phosphor) t.picture_lit.bind(1);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, t.tile_list.id());
+    t.lit_tiles.bind(kTextureUnitMarks);
+    if (phosphor) t.picture_lit.bind(kTextureUnitPictureLit);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTileListBinding, t.tile_list.id());
     const GLuint tiles = static_cast<GLuint>(t.lit_tiles.width() * t.lit_tiles.height());
     glDispatchCompute((tiles + 63) / 64, 1, 1);
     // The composite reads the list as its draw command and in its vertex stage.
@@ -49,7 +46,7 @@ void pass_tiles(const PassContext& ctx) {
 
 void draw_listed_tiles(const gl::Program& program, const Targets& targets, glm::ivec2 screen) {
     program.set("u_screen", screen);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, targets.tile_list.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTileListBinding, targets.tile_list.id());
     glBindBuffer(GL_DRAW_INDIRECT_BUFFER, targets.tile_list.id());
     glDrawArraysIndirect(GL_TRIANGLES, nullptr);
     glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);

@@ -6,21 +6,23 @@
 #include "geometry/derived/dihedral.h"
 #include "geometry/derived/edge_list.h"
 #include "geometry/derived/simplify.h"
+#include "render/shader_interface.h"
 
 namespace bz::render {
 
 namespace {
 
 void instance_attributes(gl::VertexArray& vao, const gl::Buffer& instances, bool with_color) {
-    vao.bind_buffer(1, instances, sizeof(InstanceData), 0, 1);
+    vao.bind_buffer(kVertexBufferInstances, instances, sizeof(InstanceData), 0, 1);
     for (GLuint col = 0; col < 4; ++col) {
         vao.float_attribute(
-            1 + col, 1, 4,
+            kAttribModelView + col, kVertexBufferInstances, 4,
             static_cast<GLuint>(offsetof(InstanceData, model_view) + col * sizeof(glm::vec4)));
     }
     if (with_color) {
-        vao.float_attribute(5, 1, 4, offsetof(InstanceData, color));
-        vao.float_attribute(6, 1, 4, offsetof(InstanceData, params));
+        vao.float_attribute(kAttribColor, kVertexBufferInstances, 4, offsetof(InstanceData, color));
+        vao.float_attribute(kAttribParams, kVertexBufferInstances, 4,
+                            offsetof(InstanceData, params));
     }
 }
 
@@ -86,21 +88,21 @@ void MeshCache::upload(GpuMesh& gpu, const geo::AdjacencyMesh& mesh) {
     gpu.adjacency_count = static_cast<GLsizei>(mesh.adjacency.size());
     gpu.triangle_index_count = static_cast<GLsizei>(mesh.triangles.size());
 
-    gpu.lines_vao.bind_buffer(0, gpu.positions, sizeof(glm::vec3));
-    gpu.lines_vao.float_attribute(0, 0, 3, 0);
+    gpu.lines_vao.bind_buffer(kVertexBufferPositions, gpu.positions, sizeof(glm::vec3));
+    gpu.lines_vao.float_attribute(kAttribPosition, kVertexBufferPositions, 3, 0);
     instance_attributes(gpu.lines_vao, *instances_, true);
     gpu.lines_vao.element_buffer(gpu.adjacency);
 
-    gpu.prepass_vao.bind_buffer(0, gpu.positions, sizeof(glm::vec3));
-    gpu.prepass_vao.float_attribute(0, 0, 3, 0);
+    gpu.prepass_vao.bind_buffer(kVertexBufferPositions, gpu.positions, sizeof(glm::vec3));
+    gpu.prepass_vao.float_attribute(kAttribPosition, kVertexBufferPositions, 3, 0);
     instance_attributes(gpu.prepass_vao, *instances_, false);
     gpu.prepass_vao.element_buffer(gpu.triangles);
 
-    gpu.fill_vao.bind_buffer(0, gpu.positions, sizeof(glm::vec3));
-    gpu.fill_vao.float_attribute(0, 0, 3, 0);
+    gpu.fill_vao.bind_buffer(kVertexBufferPositions, gpu.positions, sizeof(glm::vec3));
+    gpu.fill_vao.float_attribute(kAttribPosition, kVertexBufferPositions, 3, 0);
     instance_attributes(gpu.fill_vao, *instances_, true);
-    gpu.fill_vao.bind_buffer(2, gpu.vertex_normals, sizeof(glm::vec3));
-    gpu.fill_vao.float_attribute(7, 2, 3, 0);
+    gpu.fill_vao.bind_buffer(kVertexBufferNormals, gpu.vertex_normals, sizeof(glm::vec3));
+    gpu.fill_vao.float_attribute(kAttribNormal, kVertexBufferNormals, 3, 0);
     gpu.fill_vao.element_buffer(gpu.triangles);
 }
 

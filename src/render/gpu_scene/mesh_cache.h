@@ -2,7 +2,8 @@
 // One GPU mesh per scene::MeshId, shared by all its instances: welded positions and smooth
 // vertex normals, the adjacency index buffer for the line pass and a plain triangle index
 // buffer for the prepass and the fills.
-// Both vertex arrays read per-instance data from one shared instance buffer (binding 1).
+// The vertex arrays read per-instance data from one shared instance buffer (the locations and
+// binding points of render/shader_interface.h).
 // Distance LOD: a mesh may also have a simplified GPU mesh (geo::simplify_line_mesh), built
 // the first time a far instance asks for it.
 #include <memory>
@@ -16,8 +17,8 @@
 
 namespace bz::render {
 
-// Per-instance data, 96 bytes: locations 1-4 model-view, 5 colour, 6 parameters. Vertex
-// normals are location 7 (binding 2).
+// Per-instance data, 96 bytes = kInstanceVec4s vec4 (render/shader_interface.h, which pins the
+// layout with static_asserts and hands it to the shaders; shaders/instance_data.glsl reads it).
 struct InstanceData {
     glm::mat4 model_view;
     glm::vec4 color;
@@ -45,7 +46,7 @@ struct GpuMesh {
     gl::Buffer triangles;
     std::vector<geo::TriangleCluster> triangle_clusters;
     geo::ClusterBounds triangle_bounds;  // a sphere around them all
-    gl::Buffer edge_cosines;             // 3 per triangle, read by the geometry shader (binding 0)
+    gl::Buffer edge_cosines;  // 3 per triangle, read by the geometry shader (kEdgeCosinesBinding)
     bool has_edge_list = false;  // edge_list is filled (uploaded on first use with edge lists on)
     gl::VertexArray lines_vao;
     gl::VertexArray prepass_vao;

@@ -28,7 +28,7 @@ void pass_edges(const PassContext& ctx) {
     work.reserve(instances.size() * 2);
     for (const InstanceData& d : instances)
         work.push_back(glm::floatBitsToUint(object_space_eye(d.model_view)));
-    const CullView view{ctx.cam.proj, ctx.cam.near, ctx.cam.far};
+    const CullView view{.proj = ctx.cam.proj, .near = ctx.cam.near, .far = ctx.cam.far};
     EdgeCullStats cull;
     struct Dispatch {
         const Batch* batch;
@@ -50,10 +50,12 @@ void pass_edges(const PassContext& ctx) {
         if (mesh.edge_count == 0) continue;
         const bool skip_back_faces = ctx.occlusion && b.eye_outside && mesh.outward_closed;
         for (GLsizei i = 0; i < b.instance_count; ++i)
-            jobs.push_back({dispatches.size(), &mesh, b.first_instance + static_cast<GLuint>(i),
-                            skip_back_faces});
+            jobs.push_back({.dispatch = dispatches.size(),
+                            .mesh = &mesh,
+                            .instance = b.first_instance + static_cast<GLuint>(i),
+                            .skip_back_faces = skip_back_faces});
         clusters += mesh.edge_clusters.clusters.size() * static_cast<std::size_t>(b.instance_count);
-        dispatches.push_back({&b, &mesh, 0, 0});
+        dispatches.push_back({.batch = &b, .mesh = &mesh, .first = 0, .count = 0});
     }
     // Culling runs on several threads when there is enough of it; chunks keep job order, so
     // the items are the same as one thread's.
@@ -112,7 +114,7 @@ void pass_edges(const PassContext& ctx) {
     // A fragment in the viewport lies within its beam's half-width of its spine point: cover that.
     program.set("u_sample_margin", 16.0f);
     program.set("u_sample_spacing", ctx.settings.spine_sample_spacing_px);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, ctx.instances.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kInstancesBinding, ctx.instances.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEdgeRecordsBinding, ctx.edges.records().id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEdgeCommandBinding, ctx.edges.command().id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSpineSpansBinding, ctx.edges.spans().id());

@@ -7,8 +7,8 @@ namespace bz::render {
 
 namespace {
 
-// The spine test's tolerances (shaders/lines/spine_test.glsl): how far the prepass may sit from the
-// exact plane of the edge's face, in inverse view depth.
+// The spine test's tolerances: how far the prepass may sit from the exact plane of the edge's
+// face, in inverse view depth.
 void set_spine_tolerances(const gl::Program& p, const PassContext& ctx) {
     const auto& s = ctx.settings;
     const double inv_b = 1.0 / static_cast<double>(ctx.cam.proj_b);
@@ -27,16 +27,16 @@ void set_spine_tolerances(const gl::Program& p, const PassContext& ctx) {
 
 }  // namespace
 
-void set_line_uniforms(const gl::Program& p, const PassContext& ctx, float half_width) {
+void set_edge_projection_uniforms(const gl::Program& p, const PassContext& ctx) {
     p.set("u_proj", ctx.cam.proj);
     p.set("u_viewport",
           glm::vec2(static_cast<float>(ctx.targets.width), static_cast<float>(ctx.targets.height)));
-    p.set("u_half_width", half_width);  // the mask's quads; lines take theirs from the beam
     p.set("u_near", ctx.cam.near);
     p.set("u_far", ctx.cam.far);
+}
+
+void set_spine_test_uniforms(const gl::Program& p, const PassContext& ctx) {
     set_spine_tolerances(p, ctx);
-    p.set("u_depth", 0);
-    p.set("u_edges_to_test", 3);  // a uniform loop bound: keeps one copy of the emit code
     p.set("u_occlusion", ctx.occlusion ? 1 : 0);
     p.set("u_proj_a", ctx.cam.proj_a);
     p.set("u_proj_inv_b", 1.0f / ctx.cam.proj_b);
@@ -49,6 +49,11 @@ void set_line_uniforms(const gl::Program& p, const PassContext& ctx, float half_
     p.set("u_depth_max", glm::ivec2(ctx.targets.width - 1, ctx.targets.height - 1));
 }
 
+void set_line_uniforms(const gl::Program& p, const PassContext& ctx) {
+    set_edge_projection_uniforms(p, ctx);
+    set_spine_test_uniforms(p, ctx);
+}
+
 // The mask marks the pixels whose unit square the spine crosses: their centres lie within
 // sqrt(2)/2 of the spine (sideways and past its ends), so a quad of half-width 0.75 holds them
 // all. The beam fades to exactly zero at its half-width, so its quad is already as small as
@@ -56,7 +61,8 @@ void set_line_uniforms(const gl::Program& p, const PassContext& ctx, float half_
 constexpr float kMaskHalfWidth = 0.75f;
 
 void bind_beam_tiles(const Targets& targets) {
-    glBindImageTexture(3, targets.beam_tiles.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R8UI);
+    glBindImageTexture(kImageUnitBeamTiles, targets.beam_tiles.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
+                       GL_R8UI);
 }
 
 void begin_line_target(const PassContext& ctx, const gl::Program& program, bool mask_mode) {
@@ -81,13 +87,13 @@ void begin_line_target(const PassContext& ctx, const gl::Program& program, bool 
         gl::apply(state);
     }
     program.use();
-    set_line_uniforms(program, ctx, mask_mode ? kMaskHalfWidth : ctx.settings.line_half_width_px);
+    set_line_uniforms(program, ctx);
     set_beam_uniforms(program, ctx.settings.beam, ctx.settings.line_half_width_px,
                       ctx.targets.height, ctx.seed, mask_mode);
     if (mask_mode)
         program.set("u_beam_width", glm::vec4(kMaskHalfWidth, kMaskHalfWidth, 0.0f, 1.0f));
-    ctx.targets.depth.bind(0);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, ctx.instances.id());
+    ctx.targets.depth.bind(kTextureUnitDepth);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kInstancesBinding, ctx.instances.id());
 }
 
 // The feature-line pass of LineMethod::geometry_shader: the geometry shader finds and extrudes
@@ -97,9 +103,10 @@ void begin_line_target(const PassContext& ctx, const gl::Program& program, bool 
 void pass_lines(const PassContext& ctx, bool mask_mode) {
     const gl::Program& program = mask_mode ? ctx.programs.mask : ctx.programs.lines;
     begin_line_target(ctx, program, mask_mode);
+    program.set("u_edges_to_test", 3);  // a uniform loop bound: keeps one copy of the emit code
     for (const Batch& b : ctx.batches.batches) {
         const GpuMesh& mesh = ctx.gpu_meshes.get(ctx.meshes, b.mesh, b.lod);
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, mesh.edge_cosines.id());
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEdgeCosinesBinding, mesh.edge_cosines.id());
         program.set("u_skip_back_faces",
                     (ctx.occlusion && b.eye_outside && mesh.outward_closed) ? 1 : 0);
         mesh.lines_vao.bind();

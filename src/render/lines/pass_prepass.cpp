@@ -77,7 +77,10 @@ TriangleCullStats draw_batch_triangles(const PassContext& ctx, gl::PipelineState
             continue;
         }
         for (GLsizei k = 0; k < b.instance_count; ++k)
-            jobs.push_back({i, &mesh, b.first_instance + static_cast<GLuint>(k), skip_back_faces});
+            jobs.push_back({.batch = i,
+                            .mesh = &mesh,
+                            .instance = b.first_instance + static_cast<GLuint>(k),
+                            .skip_back_faces = skip_back_faces});
         clusters += mesh.triangle_clusters.size() * static_cast<std::size_t>(b.instance_count);
     }
     // Several threads when there is enough of it; chunks keep job order (parallel_chunks.h).

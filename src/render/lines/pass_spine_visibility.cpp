@@ -33,10 +33,10 @@ void pass_spine_visibility(const PassContext& ctx) {
     const EdgeStorage& edges = ctx.edges;
     const gl::Program& program = ctx.programs.spine_visibility;
     program.use();
-    set_line_uniforms(program, ctx, 0.0f);
+    set_line_uniforms(program, ctx);
     program.set("u_capacity", edges.capacity());
     program.set("u_sample_capacity", edges.sample_capacity());
-    ctx.targets.depth.bind(0);
+    ctx.targets.depth.bind(kTextureUnitDepth);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEdgeCommandBinding, edges.command().id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEdgeRecordsBinding, edges.records().id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSpineSamplesBinding, edges.samples().id());

@@ -26,10 +26,9 @@ void pass_halo(const PassContext& ctx) {
     glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
     glClear(GL_COLOR_BUFFER_BIT);
     const gl::Program& glow = ctx.programs.halo_glow;
-    begin_strokes(ctx, glow);
-    glow.set("u_profile", 1);
+    begin_strokes(ctx, glow, StrokeVisibility::depth_test);
     glow.set("u_strokes", h.strokes_per_edge);
-    ctx.style_textures.profile.bind(1);
+    ctx.style_textures.profile.bind(kTextureUnitProfile);
     draw_edge_strokes(ctx);
 
     ctx.targets.canvas_fbo.bind();
@@ -38,25 +37,21 @@ void pass_halo(const PassContext& ctx) {
     gl::apply(apply_state);
     const gl::Program& lay = ctx.programs.halo_apply;
     lay.use();
-    set_line_uniforms(lay, ctx, 1.0f);
-    lay.set("u_halo", 1);
+    set_spine_test_uniforms(lay, ctx);
     lay.set("u_paper", ctx.style.background);
-    ctx.targets.depth.bind(0);
-    ctx.targets.halo.bind(1);
+    ctx.targets.depth.bind(kTextureUnitDepth);
+    ctx.targets.halo.bind(kTextureUnitHalo);
     ctx.empty_vao.bind();
     glDrawArrays(GL_TRIANGLES, 0, 3);
 
     ctx.targets.canvas_shrunk_fbo.bind();
     gl::apply(halo_state(ctx, gl::Blend::min));
     const gl::Program& ink = ctx.programs.halo;
-    begin_strokes(ctx, ink);
-    ink.set("u_profile", 1);
-    ink.set("u_offset", 2);
-    ink.set("u_halo", 3);
+    begin_strokes(ctx, ink, StrokeVisibility::depth_test);
     ink.set("u_strokes", h.strokes_per_edge);
-    ctx.style_textures.profile.bind(1);
-    ctx.style_textures.offset.bind(2);
-    ctx.targets.halo.bind(3);
+    ctx.style_textures.profile.bind(kTextureUnitProfile);
+    ctx.style_textures.offset.bind(kTextureUnitOffset);
+    ctx.targets.halo.bind(kTextureUnitHalo);
     draw_edge_strokes(ctx);
     ctx.edges.keep_count();
 }

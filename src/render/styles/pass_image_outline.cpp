@@ -29,8 +29,6 @@ void pass_image_outline(const PassContext& ctx, bool mask_mode) {
     glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
     glClear(GL_COLOR_BUFFER_BIT);
     p.use();
-    p.set("u_depth", 0);
-    p.set("u_normals", 1);
     p.set("u_proj_a", ctx.cam.proj_a);
     p.set("u_proj_b", ctx.cam.proj_b);
     p.set("u_depth_zero_to_one", ctx.cam.zero_to_one ? 1 : 0);
@@ -39,8 +37,8 @@ void pass_image_outline(const PassContext& ctx, bool mask_mode) {
         static_cast<double>(ctx.settings.crease_angle_deg) * 3.14159265358979323846 / 360.0;
     p.set("u_normal_threshold", static_cast<float>(2.0 * std::sin(half)));
     p.set("u_color", glm::vec3(0.25f, 1.0f, 0.35f));
-    ctx.targets.depth.bind(0);
-    ctx.targets.normals.bind(1);
+    ctx.targets.depth.bind(kTextureUnitDepth);
+    ctx.targets.normals.bind(kTextureUnitNormals);
     ctx.empty_vao.bind();
     glDrawArrays(GL_TRIANGLES, 0, 3);
 }

@@ -10,16 +10,14 @@ void pass_ink_composite(const PassContext& ctx) {
     gl::apply(gl::PipelineState{});
     const gl::Program& p = ctx.programs.ink_composite;
     p.use();
-    p.set("u_canvas", 0);
-    p.set("u_lines", 1);
     // The style's HUD theme (scene::HudTheme): ink over a paper halo, or the beam's colours.
     const HudTheme& hud = ctx.style.hud;
     p.set("u_ink", hud.ink);
     p.set("u_ink_luminance", hud.ink_luminance);
     p.set("u_halo_px", hud.halo_px);
     p.set("u_paper", ctx.style.background);
-    ctx.targets.canvas.bind(0);
-    ctx.targets.lines.bind(1);
+    ctx.targets.canvas.bind(kTextureUnitCanvas);
+    ctx.targets.lines.bind(kTextureUnitLines);
     ctx.empty_vao.bind();
     glDrawArrays(GL_TRIANGLES, 0, 3);
 }

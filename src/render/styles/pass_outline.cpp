@@ -10,7 +10,7 @@ void pass_outline(const PassContext& ctx) {
     state.blend = gl::Blend::min;  // ink darkens; the order strokes land in does not matter
     state.depth_zero_to_one = ctx.cam.zero_to_one;
     gl::apply(state);
-    begin_strokes(ctx, ctx.programs.outline);
+    begin_strokes(ctx, ctx.programs.outline, StrokeVisibility::spine_test);
     draw_edge_strokes(ctx);
     ctx.edges.keep_count();
 }

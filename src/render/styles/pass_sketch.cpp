@@ -18,13 +18,12 @@ void pass_sketch(const PassContext& ctx, bool mask_mode) {
         gl::apply(state);
     }
     const gl::Program& p = mask_mode ? ctx.programs.sketch_mask : ctx.programs.sketch;
-    begin_strokes(ctx, p);
+    begin_strokes(ctx, p, StrokeVisibility::spine_test);
     const SketchParams& s = ctx.style.sketch;
-    p.set("u_noise", 1);
     p.set("u_strokes", s.strokes_per_edge);
     p.set("u_darkness", s.darkness);
     p.set("u_min_significance", s.min_significance);
-    ctx.style_textures.noise.bind(1);
+    ctx.style_textures.noise.bind(kTextureUnitNoise);
     draw_edge_strokes(ctx);
     ctx.edges.keep_count();
 }

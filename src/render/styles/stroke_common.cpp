@@ -2,9 +2,10 @@
 
 namespace bz::render {
 
-void begin_strokes(const PassContext& ctx, const gl::Program& p) {
+void begin_strokes(const PassContext& ctx, const gl::Program& p, StrokeVisibility visibility) {
     p.use();
-    set_line_uniforms(p, ctx, 1.0f);
+    set_edge_projection_uniforms(p, ctx);
+    if (visibility == StrokeVisibility::spine_test) set_spine_test_uniforms(p, ctx);
     p.set("u_capacity", ctx.edges.capacity());
     p.set("u_light_dir", glm::normalize(ctx.style.light_dir));
     const OutlineParams& o = ctx.style.outline;
@@ -21,8 +22,8 @@ void begin_strokes(const PassContext& ctx, const gl::Program& p) {
     p.set("u_outer_px", h.outer_px);
     p.set("u_halo_px", h.halo_px);
     p.set("u_smoothing", h.cubic_smoothing && ctx.settings.cubic_smoothing ? 1 : 0);
-    ctx.targets.depth.bind(0);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, ctx.instances.id());
+    ctx.targets.depth.bind(kTextureUnitDepth);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kInstancesBinding, ctx.instances.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEdgeRecordsBinding, ctx.edges.records().id());
 }
 
