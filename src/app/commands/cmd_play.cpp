@@ -191,23 +191,34 @@ struct Play {
         for (const ScriptedPress& p : options.presses) {
             config.presses.push_back({p.frame, p.release_frame, p.key});
         }
-        LoopParts parts{context, choose, make_renderer, audio, input, gamepads, watcher.get(),
-                        overlay, log,    settings,      font,  {},    {},       nullptr,
-                        {},      {}};
-        // From here on a signal ends the loop, and what must be saved is saved below.
-        stop_gracefully_on_signal();
-        parts.presets = render::preset_names();
-        parts.levels = menu::find_levels(level::default_level_path().parent_path(), paths.levels);
-        parts.look_sources = &look;
-        parts.settings_errors = loaded.errors;
-        parts.vsync_given = vsync;
         // The menus save at once; never over a file that did not load cleanly.
-        parts.save_settings = [this, &loaded](const platform::Settings& s) -> std::string {
+        auto save_settings = [this, &loaded](const platform::Settings& s) -> std::string {
             if (!loaded.may_save()) {
                 return "NOT SAVED: SETTINGS.TOML HAS ERRORS TO FIX FIRST (SEE THE LOG)";
             }
             return save(s) ? std::string() : "NOT SAVED: SEE THE LOG";
         };
+        LoopParts parts{
+            .context = context,
+            .look = choose,
+            .make_renderer = make_renderer,
+            .audio = audio,
+            .input = input,
+            .gamepads = gamepads,
+            .watcher = watcher.get(),
+            .overlay = overlay,
+            .log = log,
+            .settings = settings,
+            .font = font,
+            .presets = render::preset_names(),
+            .levels = menu::find_levels(level::default_level_path().parent_path(), paths.levels),
+            .look_sources = &look,
+            .save_settings = save_settings,
+            .settings_errors = loaded.errors,
+            .vsync_given = vsync,
+        };
+        // From here on a signal ends the loop, and what must be saved is saved below.
+        stop_gracefully_on_signal();
         const LoopResult result = run_play_loop(*session, parts, config);
         const bool saved = session->save_on_exit();  // before we report
         session.reset();
