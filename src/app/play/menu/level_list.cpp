@@ -36,7 +36,7 @@ Found describe(const std::filesystem::path& file, bool user) {
         return f;
     }
     f.choice.name = upper(menu_label(r.level->name));
-    f.choice.description = upper(menu_label(r.level->description, 2 * budget::kMenuLabelChars));
+    f.choice.description = upper(menu_label(r.level->description, 3 * budget::kMenuLabelChars));
     f.choice.listed = r.level->listed;
     f.order = r.level->menu_order;
     return f;
