@@ -112,6 +112,7 @@ void Game::start_game() {
         h.difficulty = difficulty();
         h.missile_score = options_.arcade.missile_score;
         h.bonus_score = options_.arcade.bonus_score;
+        h.missile_nastier_after = world_->rules().missile_nastier_after;
         h.hash_interval = std::max(1, options_.hash_interval);
         recorder_.emplace(std::move(h));
     }
@@ -151,12 +152,8 @@ void Game::start_replay(replay::Replay r) {
                         ") than the one loaded (" + level_name() + ", hash " +
                         std::to_string(level_hash_value()) + ")");
     }
-    ArcadeRules recorded;  // lives come from the header's own line
-    recorded.missile_score = r.header.missile_score;
-    recorded.bonus_score = r.header.bonus_score;
-    world_ = std::make_unique<World>(
-        with_arcade_rules(level_for(level_, r.header.difficulty), recorded), r.header.seed,
-        assets_->factories(), assets_->models(), r.header.lives);
+    world_ = std::make_unique<World>(replay::played_level(r.header, level_), r.header.seed,
+                                     assets_->factories(), assets_->models(), r.header.lives);
     recorder_.reset();
     mismatch_.reset();
     playback_.emplace(std::move(r));

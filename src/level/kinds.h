@@ -25,6 +25,9 @@ struct BuiltinKind {
     double height;            // world units at scale 1
     double footprint_radius;  // circle about the origin that holds the base, at scale 1
     std::string_view summary;
+    // > 0: what blocks tanks, shells and missiles is a circle of this radius about the origin
+    // (the 1980 arcade's rule: each obstacle is a point with a collision radius); 0: the base.
+    double collision_radius = 0.0;
 };
 
 // For "model" the sizes are unknown until the mesh is imported, which level loading does not
@@ -38,6 +41,21 @@ inline constexpr BuiltinKind kBuiltinKinds[] = {
      "8 long, 4 deep, 2.5 high slab"},
     {"wall", KindShape::box, 10.0, 0.5, 4.0, 10.012492197250394,
      "20 long, 1 thick, 4 high wall segment (mazes)"},
+    // The 1980 arcade's four shapes. The ROM table (stephenlclarke/battlezone,
+    // assets/arcade/battlefield.txt, after MAME's `bzone`) gives each obstacle a collision
+    // radius: wide pyramid 4, narrow pyramid 3.25, tall box 3.25, short box 3.75, in the
+    // units of its 256-unit field. The shapes are that remake's drawn proportions (its
+    // obstacle vertex tables times their per-kind scales), in the same units: base width :
+    // height 7.92 : 4.56 (wide pyramid), 4.32 x 5.04 : 6.0 (narrow pyramid), 3.6 : 9.2 (tall
+    // box), 4.8 : 5.6 (short box). The base may reach past the collision circle, as there.
+    {"arcade_wide_pyramid", KindShape::pyramid, 3.96, 3.96, 4.56, 5.6002857069974565,
+     "1980 arcade wide pyramid, 7.92 wide, 4.56 high, blocks within 4", 4.0},
+    {"arcade_narrow_pyramid", KindShape::pyramid, 2.16, 2.52, 6.0, 3.3190360046254397,
+     "1980 arcade narrow pyramid, 4.32 x 5.04 base, 6 high, blocks within 3.25", 3.25},
+    {"arcade_tall_box", KindShape::box, 1.8, 1.8, 9.2, 2.545584412271571,
+     "1980 arcade tall box, 3.6 wide, 9.2 high, blocks within 3.25", 3.25},
+    {"arcade_short_box", KindShape::box, 2.4, 2.4, 5.6, 3.394112549695428,
+     "1980 arcade short box, 4.8 wide, 5.6 high, blocks within 3.75", 3.75},
     {"model", KindShape::model, 0.0, 0.0, 0.0, 3.0, "a mesh file given by `model`"},
 };
 

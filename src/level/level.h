@@ -45,6 +45,11 @@ struct EnemyRules {
     int super_tank_score = 10000;  // super tanks may appear from this score
     int missile_score = 10000;     // missiles may appear from this score
     int saucer_score = 2000;       // the saucer may appear from this score
+    // The arcade's rule: missiles turn nastier this many points after missile_score (see
+    // game/world/tuning.h). A game rule, not a level key: no level file sets it and the level
+    // hashes leave it out; replays record it, and one recorded before it existed plays with 0
+    // (never), as it was played.
+    int missile_nastier_after = 25000;
     double spawn_min_distance = 40.0;
     double spawn_max_distance = 90.0;
     double spawn_rear_chance = 0.1;  // share of spawns placed in the 90 degrees behind the player

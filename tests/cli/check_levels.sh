@@ -53,7 +53,7 @@ run "$work/bad.toml"
 cat >"$work/expected" <<EXPECTED
 $work/bad.toml:4:8: error: 'size' must be a finite number, not nan
 $work/bad.toml:5:1: error: unknown key 'wrapp' in [field]; did you mean 'wrap'?
-$work/bad.toml:7:8: error: unknown kind 'cubee'; did you mean 'cube'? (one of: cube, pyramid, tall_box, short_box, wall, model)
+$work/bad.toml:7:8: error: unknown kind 'cubee'; did you mean 'cube'? (one of: cube, pyramid, tall_box, short_box, wall, arcade_wide_pyramid, arcade_narrow_pyramid, arcade_tall_box, arcade_short_box, model)
 $work/bad.toml:11:9: error: model path '../../../etc/passwd' leads outside the level's folder and the project's data/ folder
 EXPECTED
 diff "$work/expected" "$work/err" >"$work/diff" || { cat "$work/diff"; fail "broken file messages"; }

@@ -79,7 +79,8 @@ TEST(Game, GameOverInitialsAndTable) {
     Game g(default_level(), o, &font());
     tap(g, &TickCommand::start);
     play_out(g);
-    ASSERT_EQ(g.screen(), Screen::game_over);
+    ASSERT_EQ(g.screen(), Screen::game_over)
+        << "score " << g.world()->score() << " at tick " << g.world()->state().tick;
     const int score = g.world()->score();
     ASSERT_GT(score, 19) << "the autopilot scores before it is shot";
     EXPECT_FALSE(g.frame(0.0, 1.5).hud.empty());

@@ -45,6 +45,27 @@ TEST(ShippedLevels, DefaultIsTheClassicField) {
                 l.enemies.saucer);
 }
 
+// The ROM's battlefield: its 21 obstacles are the arcade's own four kinds, at scale 1, as many
+// of each as the ROM table has (6 wide pyramids, 5 narrow, 5 tall boxes, 5 short).
+TEST(ShippedLevels, Battlefield1980UsesTheArcadesFourShapes) {
+    const Level l = load_shipped("battlefield_1980.toml");
+    ASSERT_EQ(l.obstacles.size(), 21u);
+    EXPECT_EQ(l.field_size, 256.0);
+    EXPECT_TRUE(l.wrap);
+    const auto count = [&](const char* kind) {
+        return std::count_if(l.obstacles.begin(), l.obstacles.end(),
+                             [&](const ObjectDesc& o) { return o.kind == kind; });
+    };
+    EXPECT_EQ(count("arcade_wide_pyramid"), 6);
+    EXPECT_EQ(count("arcade_narrow_pyramid"), 5);
+    EXPECT_EQ(count("arcade_tall_box"), 5);
+    EXPECT_EQ(count("arcade_short_box"), 5);
+    for (const ObjectDesc& o : l.obstacles) EXPECT_EQ(o.scale, 1.0) << o.kind;
+    // The first row of the table: a wide pyramid at (32, 32), heading 0.
+    EXPECT_EQ(l.obstacles.front().kind, "arcade_wide_pyramid");
+    EXPECT_EQ(l.obstacles.front().position, glm::dvec3(32, 0, 32));
+}
+
 TEST(ShippedLevels, StressLevelHasHundredsOfObjectsAndImportedModels) {
     const Level l = load_shipped("stress.toml");
     EXPECT_GE(l.obstacles.size(), 300u);

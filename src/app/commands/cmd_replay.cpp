@@ -68,6 +68,7 @@ int record_demo(const ReplayOptions& o) {
     h.level = name;
     h.level_hash = game::replay::level_hash(lv);
     h.lives = kLives;
+    h.missile_nastier_after = world.rules().missile_nastier_after;
     game::replay::Recorder rec(h);
     const int ticks = o.record_seconds * 60;
     for (int i = 0; i < ticks && !world.game_over(); ++i) {

@@ -14,6 +14,7 @@
 #include "app/vector_export.h"
 #include "core/error.h"
 #include "game/fixed_step.h"
+#include "game/hud/hud_layout.h"
 #include "platform/screenshot.h"
 #include "scene/presentation_clock.h"
 #include "scene/style.h"
@@ -553,6 +554,9 @@ class Loop {
         for (scene::DrawItem& item : frame.items) item.intensity *= menus_.scene_intensity();
         menus_.draw(frame.hud, p_.font, aspect, static_cast<std::uint64_t>(result_.frames));
         p_.overlay.set_footer(p_.settings.show_fps ? frame_stats_.readout() : std::string());
+        // A menu over the screen shows its own one-line footer instead of the screen's.
+        p_.overlay.set_footer_top(menus_.keeps_game_hud() ? session_.footer_top()
+                                                          : game::hud::kFooterTop);
         p_.overlay.draw(frame.hud, aspect);
         apply_comfort(frame, p_.settings.flashes, p_.settings.colour_safe);
         if (result_.frames + 1 == config_.screenshot_at) screenshot_requested_ = true;

@@ -143,7 +143,7 @@ void PlayOverlay::draw(std::vector<scene::HudLine>& out, double aspect) const {
                    scene::TextAlign::left, l.title ? 1.2f : 1.0f);
     }
 
-    const hud::Box nbox = hud::notice_box(a, scale_);
+    const hud::Box nbox = hud::notice_box(a, scale_, footer_top_);
     const float nh = kNoticeHeight * scale_;
     y = nbox.min.y + nh * kBaselineLift;
     for (auto it = notices_.rbegin(); it != notices_.rend(); ++it) {
@@ -158,7 +158,7 @@ void PlayOverlay::draw(std::vector<scene::HudLine>& out, double aspect) const {
     }
 
     if (!footer_.empty()) {
-        const hud::Box rbox = hud::readout_box(a, scale_);
+        const hud::Box rbox = hud::readout_box(a, scale_, footer_top_);
         // The strip is one line high at any text size (hud::readout_box grows with it).
         const float fh =
             std::min(kFooterHeight * scale_, rbox.height() / (kBaselineLift + 1.0f + kOvershoot));

@@ -33,6 +33,9 @@ class PlayOverlay {
     void advance(double seconds);  // ages the notices and timed errors
     // The footer's right end (the frame-rate readout); empty hides it.
     void set_footer(std::string text) { footer_ = std::move(text); }
+    // The top of the screen's footer (HUD units): the readout and the notices stack above it.
+    // The --edit footer is taller than the one-line footer of the other screens.
+    void set_footer_top(float top) { footer_top_ = top; }
 
     // The player's text size (the Comfort page's ui_scale, 1 to 2): every line is this much
     // taller, wrapped and clipped to the same regions, so larger text never leaves them.
@@ -68,6 +71,7 @@ class PlayOverlay {
     std::vector<Notice> notices_;
     std::string footer_;
     float scale_ = 1.0f;
+    float footer_top_ = -0.88f;  // game::hud::kFooterTop
 };
 
 }  // namespace bz::app

@@ -59,6 +59,9 @@ class PlaySession {
     virtual void rules_changed(const std::string& /*difficulty*/, const game::ArcadeRules&) {}
     // The player's text size (1 to 2) for the HUD.
     virtual void set_text_scale(float) {}
+    // The top of this screen's footer in HUD units (after its last frame): the overlay's
+    // readout and notices stack above it.
+    virtual float footer_top() const { return -0.88f; }  // game::hud::kFooterTop
     // The player rebound keys: on-screen hints should name the new ones.
     virtual void keys_changed(const platform::Bindings&) {}
     // The score of the game in play (0: none, or nothing to lose) and whether it would make

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <utility>
 
+#include "app/play/edit_footer.h"
 #include "app/play/edit_status.h"
 #include "core/error.h"
 #include "core/log.h"
@@ -331,6 +332,7 @@ class EditSession final : public PlaySession {
     // An editor shows the level as it is now: no phosphor trails of where the camera was.
     void set_text_scale(float scale) override { text_scale_ = scale; }
     bool keeps_history() const override { return false; }
+    float footer_top() const override { return footer_top_; }
 
     scene::FrameList frame(double alpha, double aspect) override {
         scene::FrameList f;
@@ -370,27 +372,22 @@ class EditSession final : public PlaySession {
     // Where the camera is and what it looks at, the reticle, and the keys, in the footer.
     void draw_status(std::vector<scene::HudLine>& out, double aspect) const {
         namespace hud = game::hud;
-        const auto a = static_cast<float>(aspect);
         constexpr float s = 0.03f;  // a small cross: the point the status line names
         out.push_back({{-s, 0.0f}, {s, 0.0f}, hud::kWhite, 0.8f});
         out.push_back({{0.0f, -s}, {0.0f, s}, hud::kWhite, 0.8f});
         if (!font_) return;
-        const hud::Box f = hud::footer_box(a);
         const std::string status = edit_status_line(level_, camera_.position(), camera_.yaw_deg(),
                                                     camera_.pitch_deg(), camera_.forward());
-        const std::string keys =
-            "W A S D MOVE   R / F UP, DOWN   ARROWS OR RIGHT MOUSE LOOK   SHIFT FAST   "
-            "F5 SHADERS   ESCAPE LEAVE";
-        // The footer holds these two lines at text size 1 only, so they keep it; each line no
-        // wider than the footer. The title above follows the player's text size.
+        // Both lines follow the player's text size, breaking onto more lines when too wide.
+        const EditFooter footer =
+            layout_edit_footer(*font_, status, kEditKeyHints, aspect, text_scale_);
+        draw_edit_footer(*font_, footer, out);
+        footer_top_ = footer.box.max.y;
+        const hud::Box f = footer.box;
         auto fit = [&](const std::string& text, float h) {
             const float w = font_->width(text, h);
             return w > f.width() ? h * f.width() / w : h;
         };
-        font_->draw(out, status, {f.min.x, f.min.y + 0.055f}, fit(status, 0.036f), hud::kGreen,
-                    scene::TextAlign::left, 1.1f);
-        font_->draw(out, keys, {f.min.x, f.min.y + 0.011f}, fit(keys, 0.03f), hud::kWhite,
-                    scene::TextAlign::left, 0.8f);
         const std::string title = "EDIT  " + level_.file.filename().string();
         const float title_h = fit(title, 0.04f * text_scale_);
         font_->draw(out, title, {f.max.x, 0.96f - title_h * 1.15f}, title_h, hud::kRed,
@@ -403,6 +400,7 @@ class EditSession final : public PlaySession {
     }
 
     float text_scale_ = 1.0f;
+    mutable float footer_top_ = game::hud::kFooterTop;  // of the last frame's footer
     const scene::VectorFont* font_;
     level::Level level_;
     std::unique_ptr<game::Assets> assets_;

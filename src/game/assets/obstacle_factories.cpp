@@ -32,9 +32,16 @@ scene::FactoryTable make_obstacle_factories(scene::MeshLibrary& library) {
         if (kind.shape == level::KindShape::model) continue;
         const scene::MeshId mesh = library.add("builtin:" + std::string(kind.name),
                                                geo::build_line_mesh(models::obstacle(kind)));
-        // Pyramids block like their base: a tank cannot drive up their slopes either.
-        const scene::Collider collider{
-            scene::ColliderShape::box, 0.0, {kind.half_x, kind.half_z}, kind.height};
+        // Pyramids block like their base: a tank cannot drive up their slopes either. The
+        // arcade's kinds block within their ROM collision radius instead.
+        const scene::Collider collider =
+            kind.collision_radius > 0.0
+                ? scene::Collider{scene::ColliderShape::circle,
+                                  kind.collision_radius,
+                                  {},
+                                  kind.height}
+                : scene::Collider{
+                      scene::ColliderShape::box, 0.0, {kind.half_x, kind.half_z}, kind.height};
         table.add(std::string(kind.name),
                   [mesh, collider](const scene::Placement& p) { return place(p, mesh, collider); });
     }

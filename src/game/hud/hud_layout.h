@@ -1,6 +1,7 @@
 #pragma once
 // Where the HUD puts things, in HUD units (origin at the screen centre, y up, 1 = half the
 // screen height, x spans -aspect..aspect). Tests check the drawn lines against these regions.
+#include <algorithm>
 #include <glm/glm.hpp>
 
 namespace bz::game::hud {
@@ -57,20 +58,28 @@ inline Box error_box(float aspect) {
             {aspect - kMargin, kBandBottom - 0.02f}};
 }
 // The readout's strip is one line of text high, so larger text (the player's text size,
-// 1 to 2) makes it taller and the notices above it start higher.
+// 1 to 2) makes it taller and the notices above it start higher. Both stack on the footer's
+// top: the one-line footer's (kFooterTop) on the title, pause and play screens; the --edit
+// screen's footer holds more lines and grows with the text size (app/play/edit_footer.h).
 inline constexpr float kReadoutGrowth = 0.055f;  // per unit of text size over 1
-inline Box notice_box(float aspect, float text_scale = 1.0f) {
-    return {{-aspect + kMargin, -0.818f + (text_scale - 1.0f) * kReadoutGrowth},
-            {aspect - kMargin, -0.56f}};
+inline constexpr float kFooterTop = -0.88f;
+// A footer taller than one line is the --edit screen's, which has no reticle (only a small
+// cross at the centre): its notices may rise this far, to keep room for two of them at 2x.
+inline constexpr float kEditNoticeTop = -0.08f;
+inline Box notice_box(float aspect, float text_scale = 1.0f, float footer_top = kFooterTop) {
+    const float lift = footer_top - kFooterTop;
+    return {{-aspect + kMargin, -0.818f + (text_scale - 1.0f) * kReadoutGrowth + lift},
+            {aspect - kMargin, std::clamp(-0.56f + lift, -0.56f, kEditNoticeTop)}};
 }
 // The frame-rate readout's own strip, between the notices and the footer: it never covers the
 // key hints of the title, pause and edit screens.
-inline Box readout_box(float aspect, float text_scale = 1.0f) {
-    return {{-aspect + kMargin, -0.875f},
-            {aspect - kMargin, -0.822f + (text_scale - 1.0f) * kReadoutGrowth}};
+inline Box readout_box(float aspect, float text_scale = 1.0f, float footer_top = kFooterTop) {
+    const float lift = footer_top - kFooterTop;
+    return {{-aspect + kMargin, -0.875f + lift},
+            {aspect - kMargin, -0.822f + (text_scale - 1.0f) * kReadoutGrowth + lift}};
 }
 inline Box footer_box(float aspect) {
-    return {{-aspect + kMargin, -0.98f}, {aspect - kMargin, -0.88f}};
+    return {{-aspect + kMargin, -0.98f}, {aspect - kMargin, kFooterTop}};
 }
 
 // The arcade's colour overlay: the top strip (radar, messages, score) red, the rest green.

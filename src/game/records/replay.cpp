@@ -6,6 +6,7 @@
 #include "core/hash.h"
 #include "core/io/file_io.h"
 #include "game/assets/assets.h"
+#include "game/difficulty/arcade_rules.h"
 #include "game/difficulty/difficulty.h"
 #include "game/records/level_rules.h"
 
@@ -88,8 +89,17 @@ std::string missing_state_hashes(const Replay& replay) {
     return {};
 }
 
+level::Level played_level(const Header& header, const level::Level& level) {
+    ArcadeRules recorded;  // lives come from the header's own line
+    recorded.missile_score = header.missile_score;
+    recorded.bonus_score = header.bonus_score;
+    level::Level playing = with_arcade_rules(level_for(level, header.difficulty), recorded);
+    playing.enemies.missile_nastier_after = header.missile_nastier_after;
+    return playing;
+}
+
 VerifyResult verify(const Replay& replay, const level::Level& level, const Assets& assets) {
-    World world(level_for(level, replay.header.difficulty), replay.header.seed, assets.factories(),
+    World world(played_level(replay.header, level), replay.header.seed, assets.factories(),
                 assets.models(), replay.header.lives);
     Player player(replay);
     VerifyResult result;

@@ -12,6 +12,9 @@
 //   difficulty normal      optional (older files: normal)
 //   missile-score 30000    optional: the arcade setting it was played with (else the level's)
 //   bonus-score 0          optional: the first bonus tank, 0 none (else the level's)
+//   missile-nastier-after 25000  optional: the nastier-missile rule it was played with
+//                          (level::EnemyRules::missile_nastier_after); absent: 0, never, as
+//                          every game recorded before the rule existed was played
 //   hash-interval 60
 //   ticks 3600
 //   c COUNT LEFT RIGHT BUTTONS   a run of COUNT identical commands (treads -127..127, buttons hex)
@@ -47,6 +50,8 @@ struct Header {
     level::Difficulty difficulty = level::Difficulty::normal;
     std::optional<int> missile_score;  // arcade settings (game/difficulty/arcade_rules.h)
     std::optional<int> bonus_score;
+    // A new recording takes the world's (World::rules()); a file without the line reads 0.
+    int missile_nastier_after = level::EnemyRules{}.missile_nastier_after;
     int hash_interval = 60;
 };
 
@@ -123,6 +128,10 @@ struct VerifyResult {
 // missing ("no state hashes", "no hash at tick 120 ..."). A replay whose hashes were stripped
 // or thinned would otherwise "verify" with nothing compared.
 std::string missing_state_hashes(const Replay& replay);
+
+// The level as the replay's game played it: its difficulty, its arcade settings and its
+// nastier-missile rule applied to `level`.
+level::Level played_level(const Header& header, const level::Level& level);
 
 // Re-simulates headless from the seed and checks every recorded state hash.
 VerifyResult verify(const Replay& replay, const level::Level& level, const Assets& assets);

@@ -112,7 +112,9 @@ using Fields = std::vector<std::string_view>;
 // state hashes in any order, then 'end'; at the end, checks that nothing is missing.
 class Reader {
   public:
-    explicit Reader(const std::string& name) : name_(name) {}
+    explicit Reader(const std::string& name) : name_(name) {
+        r_.header.missile_nastier_after = 0;  // absent: recorded before the rule existed
+    }
 
     Replay read(std::string_view text) {
         LineReader lines(text);
@@ -208,6 +210,14 @@ class Reader {
                             std::string(key) + " must be 0.." + std::to_string(kMaxRuleScore));
             }
             (key == "missile-score" ? h.missile_score : h.bonus_score) = v;
+        } else if (key == "missile-nastier-after") {
+            want(err, f, 2);
+            const int v = err.number<int>(f[1], "score");
+            if (v < 0 || v > kMaxRuleScore) {
+                err.fail_at(f[1],
+                            "missile-nastier-after must be 0.." + std::to_string(kMaxRuleScore));
+            }
+            h.missile_nastier_after = v;
         } else if (key == "hash-interval") {
             want(err, f, 2);
             h.hash_interval = err.number<int>(f[1], "hash interval");
@@ -320,6 +330,9 @@ std::string serialise(const Replay& r) {
         out += "missile-score " + std::to_string(*r.header.missile_score) + "\n";
     }
     if (r.header.bonus_score) out += "bonus-score " + std::to_string(*r.header.bonus_score) + "\n";
+    if (r.header.missile_nastier_after != 0) {
+        out += "missile-nastier-after " + std::to_string(r.header.missile_nastier_after) + "\n";
+    }
     out += "hash-interval " + std::to_string(r.header.hash_interval) + "\n";
     out += "ticks " + std::to_string(r.commands.size()) + "\n";
     for (std::size_t i = 0; i < r.commands.size();) {

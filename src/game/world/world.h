@@ -87,6 +87,8 @@ class World {
 
     Awareness awareness() const;
     double radar_range() const;
+    // Whether a missile now flies the arcade's nastier way (rules().missile_nastier_after).
+    bool missile_is_nasty() const;
     // The hostile as the radar shows it (never the saucer); empty when none or out of range.
     std::vector<RadarBlip> radar_blips() const;
     // Sweep angle in radians, clockwise from straight ahead, interpolated.

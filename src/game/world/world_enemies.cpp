@@ -273,6 +273,11 @@ void World::tank_fire(Hostile& h, double dist, double face_player, double aggres
     }
 }
 
+bool World::missile_is_nasty() const {
+    return rules_.missile_nastier_after > 0 &&
+           cur_.score >= rules_.missile_score + rules_.missile_nastier_after;
+}
+
 void World::step_missile(Hostile& h) {
     scene::Transform& t = h.body.transform;
     const glm::dvec2 here = ground(t.position);
@@ -285,7 +290,10 @@ void World::step_missile(Hostile& h) {
     const double weave = dist > tuning::kMissileStraightDistance
                              ? deg(tuning::kMissileWeaveDeg) * std::sin(h.weave_phase)
                              : 0.0;
-    turn_towards(t.yaw, yaw_of(to_player) + weave, deg(tuning::kMissileTurnDeg) * tuning::kDt);
+    // Faster and sharper once it has turned nastier.
+    const bool nasty = missile_is_nasty();
+    turn_towards(t.yaw, yaw_of(to_player) + weave,
+                 deg(nasty ? tuning::kMissileNastyTurnDeg : tuning::kMissileTurnDeg) * tuning::kDt);
 
     // Hop: climb over anything ahead (or below), settle back to cruise height after.
     const glm::dvec3 fwd = t.forward();
@@ -301,7 +309,8 @@ void World::step_missile(Hostile& h) {
     h.vertical_speed = std::clamp(wanted - t.position.y, -climb, climb) / tuning::kDt;
     t.position.y += h.vertical_speed * tuning::kDt;
 
-    const glm::dvec2 next = here + dir * (tuning::kMissileSpeed * tuning::kDt);
+    const glm::dvec2 next =
+        here + dir * ((nasty ? tuning::kMissileNastySpeed : tuning::kMissileSpeed) * tuning::kDt);
     if (obstacle_at(next, tuning::kMissileRadius, t.position.y) == nullptr &&
         field_.contains(next, tuning::kMissileRadius)) {
         const glm::dvec2 w = field_.wrap(next);

@@ -35,7 +35,10 @@ WorldReload World::reload_level(const level::Level& level, const scene::FactoryT
     std::vector<scene::Entity> obstacles = build_obstacles(level, factories, field);  // may throw
 
     field_ = field;
+    // The nastier-missile rule is the game's, fixed when it started (a replay's may be 0).
+    const int nastier_after = rules_.missile_nastier_after;
     rules_ = level.enemies;
+    rules_.missile_nastier_after = nastier_after;
     bonus_scores_ = level.bonus_scores;
     obstacles_ = std::move(obstacles);
     grid_ = ObstacleGrid(obstacles_, field_);

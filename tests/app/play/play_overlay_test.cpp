@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include "app/play/edit_footer.h"
 #include "game/hud/hud_layout.h"
 
 namespace bz::app {
@@ -153,6 +154,77 @@ TEST(PlayOverlay, TextFollowsTheTextSizeAndStaysInItsRegions) {
         EXPECT_NEAR(notice[1] / notice[0], 2.0f, 0.05f);
         EXPECT_NEAR(error[1] / error[0], 2.0f, 0.3f);  // title and line, with the gap between
         EXPECT_GT(readout[1] / readout[0], 1.9f);
+    }
+}
+
+// The --edit screen at every text size 1x to 2x and every window shape from 800x600 to
+// 3840x2160 (and a 21:9 one): both footer lines follow the text size (breaking onto more lines
+// rather than shrinking when too wide), stay on the screen inside the footer, and the frame-rate
+// readout and the notices stack above the footer in their own regions.
+TEST(PlayOverlay, EditFooterFollowsTheTextSizeAndTheReadoutKeepsItsOwnRegion) {
+    const std::string status =
+        "X -123.4  Y 12.0  Z 456.7   HEADING 359   PITCH -45   AIM: ARCADE_NARROW_PYRAMID  "
+        "battlefield_1980.toml:123";
+    const std::pair<int, int> windows[] = {{800, 600},   {1024, 768},  {1280, 800},
+                                           {1920, 1080}, {2560, 1080}, {3840, 2160}};
+    for (const auto& [w, h] : windows) {
+        const double aspect = static_cast<double>(w) / h;
+        const auto a = static_cast<float>(aspect);
+        float keys_height_1x = 0.0f;
+        for (const float scale : {1.0f, 1.25f, 1.5f, 1.75f, 2.0f}) {
+            SCOPED_TRACE(std::to_string(w) + "x" + std::to_string(h) + " at " +
+                         std::to_string(scale));
+            const EditFooter footer =
+                layout_edit_footer(font(), status, kEditKeyHints, aspect, scale);
+            std::vector<scene::HudLine> drawn;
+            draw_edit_footer(font(), footer, drawn);
+            ASSERT_FALSE(drawn.empty());
+            EXPECT_TRUE(all_in(drawn, footer.box));
+            EXPECT_TRUE(all_in(drawn, {{-a, -1.0f}, {a, 1.0f}})) << "on the screen";
+            EXPECT_GE(footer.box.max.y, hud::kFooterTop);
+            // Every word of both lines is there, in order, and each line's text follows the
+            // scale unless one piece alone is wider than the screen.
+            std::string keys_back, status_back;
+            for (auto it = footer.lines.rbegin(); it != footer.lines.rend(); ++it) {
+                std::string& to = it->status ? status_back : keys_back;
+                to += (to.empty() ? "" : "   ") + it->text;
+                const float base = it->status ? kEditStatusHeight : kEditKeysHeight;
+                if (it->height < base * scale - 1e-6f) {
+                    EXPECT_NEAR(font().width(it->text, it->height), footer.box.width(), 1e-4f)
+                        << "shrunk only to fit: " << it->text;
+                } else {
+                    EXPECT_NEAR(it->height, base * scale, 1e-6f) << it->text;
+                }
+                if (!it->status && scale == 1.0f) keys_height_1x = it->height;
+                if (!it->status && scale == 2.0f && keys_height_1x > 0.0f) {
+                    EXPECT_NEAR(it->height / keys_height_1x, 2.0f, 0.01f) << it->text;
+                }
+            }
+            EXPECT_EQ(keys_back, kEditKeyHints);
+            EXPECT_EQ(status_back, status);
+
+            // The overlay over it: readout and notice in their regions, above the footer.
+            PlayOverlay o(font());
+            o.set_text_scale(scale);
+            o.set_footer_top(footer.box.max.y);
+            o.set_footer("60 FPS 16.7 MS");
+            o.notify("SCREENSHOT SAVED");
+            std::vector<scene::HudLine> over;
+            o.draw(over, aspect);
+            const hud::Box readout = hud::readout_box(a, scale, footer.box.max.y);
+            const hud::Box notice = hud::notice_box(a, scale, footer.box.max.y);
+            EXPECT_GT(readout.min.y, footer.box.max.y) << "the readout never covers the footer";
+            EXPECT_GT(notice.min.y, readout.max.y);
+            EXPECT_LE(notice.max.y, hud::kEditNoticeTop);
+            EXPECT_LT(notice.max.y, -0.03f) << "under the centre cross";
+            EXPECT_GT(height_in(over, readout), 0.0f) << "the readout is drawn";
+            EXPECT_GT(height_in(over, notice), 0.0f) << "the notice is drawn";
+            for (const scene::HudLine& l : over) {
+                const bool in = (readout.contains(l.a) && readout.contains(l.b)) ||
+                                (notice.contains(l.a) && notice.contains(l.b));
+                EXPECT_TRUE(in) << l.a.x << "," << l.a.y;
+            }
+        }
     }
 }
 

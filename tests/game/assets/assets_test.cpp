@@ -2,6 +2,7 @@
 // between instances, the game's own models are closed solids, the horizon is complete.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <set>
 
 #include "core/error.h"
@@ -32,9 +33,14 @@ TEST(Assets, FactoryTableBuildsEveryBuiltinKind) {
         const scene::Entity e = table.create(p);
         EXPECT_EQ(e.behaviour, scene::Behaviour::obstacle);
         EXPECT_EQ(lib.name(e.mesh), "builtin:" + std::string(k.name));
-        EXPECT_EQ(e.collider.shape, scene::ColliderShape::box);
-        EXPECT_DOUBLE_EQ(e.collider.half_extent.x, k.half_x);
-        EXPECT_DOUBLE_EQ(e.collider.half_extent.y, k.half_z);
+        if (k.collision_radius > 0.0) {
+            EXPECT_EQ(e.collider.shape, scene::ColliderShape::circle) << k.name;
+            EXPECT_DOUBLE_EQ(e.collider.radius, k.collision_radius);
+        } else {
+            EXPECT_EQ(e.collider.shape, scene::ColliderShape::box) << k.name;
+            EXPECT_DOUBLE_EQ(e.collider.half_extent.x, k.half_x);
+            EXPECT_DOUBLE_EQ(e.collider.half_extent.y, k.half_z);
+        }
         EXPECT_DOUBLE_EQ(e.collider.height, k.height);
         EXPECT_DOUBLE_EQ(e.transform.scale, 2.0);
         EXPECT_NEAR(e.transform.yaw, 3.14159265358979 / 2, 1e-12);
@@ -90,6 +96,67 @@ TEST(Assets, GameModelsAreClosedSolids) {
     EXPECT_LT(tank.min.z, -2.5f);
     EXPECT_LT(tank.max.z, 2.5f);
     EXPECT_NEAR(tank.min.y, 0.0f, 1e-6f);
+}
+
+// The 1980 arcade's four shapes: closed solids in the proportions their sources give (base
+// width : height, see level/kinds.h), blocking within the ROM table's collision radii.
+TEST(Assets, ArcadeKindsAreClosedInTheirProportions) {
+    struct Expect {
+        const char* name;
+        bool pyramid;
+        double width, depth, height, collision_radius;
+    };
+    const Expect expected[] = {
+        {"arcade_wide_pyramid", true, 7.92, 7.92, 4.56, 4.0},
+        {"arcade_narrow_pyramid", true, 4.32, 5.04, 6.0, 3.25},
+        {"arcade_tall_box", false, 3.6, 3.6, 9.2, 3.25},
+        {"arcade_short_box", false, 4.8, 4.8, 5.6, 3.75},
+    };
+    for (const Expect& x : expected) {
+        const level::BuiltinKind* k = level::find_kind(x.name);
+        ASSERT_NE(k, nullptr) << x.name;
+        EXPECT_EQ(k->shape, x.pyramid ? level::KindShape::pyramid : level::KindShape::box);
+        EXPECT_DOUBLE_EQ(k->collision_radius, x.collision_radius) << x.name;
+        const geo::TriMesh mesh = models::obstacle(*k);
+        geo::MeshReport report;
+        geo::build_line_mesh(mesh, &report);
+        EXPECT_EQ(report.boundary_edges, 0u) << x.name;
+        EXPECT_EQ(report.non_manifold_edges, 0u) << x.name;
+        EXPECT_EQ(report.inconsistent_edges, 0u) << x.name;
+        EXPECT_GT(scene::shapes::signed_volume(mesh), 0.0) << x.name << " faces outwards";
+        const geo::Bounds b = geo::compute_bounds(mesh.positions);
+        const double w = b.max.x - b.min.x;
+        const double d = b.max.z - b.min.z;
+        const double h = b.max.y - b.min.y;
+        EXPECT_NEAR(w / h, x.width / x.height, 1e-5) << x.name;
+        EXPECT_NEAR(d / h, x.depth / x.height, 1e-5) << x.name;
+        EXPECT_NEAR(h, x.height, 1e-5) << x.name;
+        // A pyramid's apex is one point over the middle of the base; a box's top is its base.
+        std::size_t at_top = 0;
+        for (const glm::vec3& p : mesh.positions) {
+            if (std::abs(p.y - b.max.y) < 1e-5f) {
+                ++at_top;
+                if (x.pyramid) {
+                    EXPECT_NEAR(p.x, 0.0f, 1e-5f) << x.name;
+                    EXPECT_NEAR(p.z, 0.0f, 1e-5f) << x.name;
+                }
+            }
+        }
+        EXPECT_GE(at_top, 1u) << x.name;
+        if (!x.pyramid) {
+            EXPECT_GE(at_top, 4u) << x.name;
+        }
+    }
+    // The wide pyramid is wider than high, the narrow one higher than wide, the tall box more
+    // than twice as high as wide, the short box about as high as wide.
+    const auto ratio = [](const char* name) {
+        const level::BuiltinKind& k = *level::find_kind(name);
+        return 2.0 * k.half_x / k.height;
+    };
+    EXPECT_GT(ratio("arcade_wide_pyramid"), 1.5);
+    EXPECT_LT(ratio("arcade_narrow_pyramid"), 1.0);
+    EXPECT_LT(ratio("arcade_tall_box"), 0.5);
+    EXPECT_NEAR(ratio("arcade_short_box"), 0.86, 0.01);
 }
 
 TEST(Assets, HorizonOutlinesAreOpenStrips) {

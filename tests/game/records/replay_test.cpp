@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 
 #include "core/error.h"
@@ -99,6 +100,53 @@ TEST(Replay, SerialiseParseRoundTripAndSaveIsAtomic) {
     EXPECT_EQ(read_file(dir.path() / "a.bzreplay"), text);
 }
 
+// The nastier-missile rule is recorded: a new replay carries the world's, an old file (no line)
+// plays with 0, never nastier, as it was played; the rule changes the game, so the header must
+// carry it for a game where it mattered to verify.
+TEST(Replay, TheNastierMissileRuleIsRecordedAndOldFilesPlayWithout) {
+    replay::Replay r = record_game(300);
+    EXPECT_EQ(r.header.missile_nastier_after, 25000);
+    const std::string text = replay::serialise(r);
+    EXPECT_NE(text.find("\nmissile-nastier-after 25000\n"), std::string::npos);
+    EXPECT_EQ(replay::parse(text, "mem").header.missile_nastier_after, 25000);
+    std::string old = text;
+    old.erase(old.find("missile-nastier-after"),
+              std::string("missile-nastier-after 25000\n").size());
+    EXPECT_EQ(replay::parse(old, "mem").header.missile_nastier_after, 0);
+    EXPECT_EQ(replay::serialise(replay::parse(old, "mem")), old) << "an old file round-trips";
+
+    // Missiles only, from score 0, nastier after 1,000 points; the autopilot plays until a
+    // nastier missile has flown a while.
+    level::Level lv = test::empty_level();
+    lv.enemies.missile = true;
+    lv.enemies.slow_tank = true;
+    lv.enemies.missile_score = 0;
+    lv.enemies.missile_nastier_after = 1000;
+    World w = test::make_world(lv, 23, 9);
+    replay::Header h;
+    h.seed = 23;
+    h.level = "<test>";
+    h.level_hash = replay::level_hash(lv);
+    h.lives = 9;
+    h.missile_nastier_after = w.rules().missile_nastier_after;
+    replay::Recorder rec(h);
+    int nasty_ticks = 0;
+    for (int i = 0; i < 60 * 600 && nasty_ticks < 120 && !w.game_over(); ++i) {
+        const TickCommand c = autopilot(w);
+        w.step(c);
+        rec.record(c, w);
+        if (w.missile_is_nasty() && w.state().hostile &&
+            w.state().hostile->kind == HostileKind::missile)
+            ++nasty_ticks;
+    }
+    ASSERT_GE(nasty_ticks, 120) << "no nastier missile flew; score " << w.score();
+    const replay::Replay game = replay::parse(replay::serialise(rec.finish(w)), "mem");
+    EXPECT_TRUE(replay::verify(game, lv, test::shared_assets()).ok);
+    replay::Replay without = game;
+    without.header.missile_nastier_after = 0;
+    EXPECT_FALSE(replay::verify(without, lv, test::shared_assets()).ok);
+}
+
 std::string error_of(const std::string& text) {
     try {
         replay::parse(text, "r.bzr");
@@ -122,7 +170,10 @@ TEST(Replay, BadFilesGiveFileLineMessages) {
     const auto c = garbled.find("\nc ");
     garbled.replace(c + 1, 3, "c x");
     const auto msg = error_of(garbled);
-    EXPECT_NE(msg.find("r.bzr:10:3: error: run length"), std::string::npos) << msg;
+    const auto line = 2 + std::count(garbled.begin(), garbled.begin() + static_cast<long>(c), '\n');
+    EXPECT_NE(msg.find("r.bzr:" + std::to_string(line) + ":3: error: run length"),
+              std::string::npos)
+        << msg;
     // Out-of-range values and counts.
     std::string big = good;
     big.replace(big.find("ticks 120"), 9, "ticks 99999999999");

@@ -3,7 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 
+#include "game/difficulty/autopilot.h"
 #include "game/test_world.h"
 #include "game/world/tuning.h"
 
@@ -56,6 +58,92 @@ TEST(WorldMotion, MissileZigZagsThenRushesStraight) {
     EXPECT_GE(sign_changes, 2) << "weaves from side to side";
     EXPECT_GT(max_offset_far, 1.5);
     EXPECT_EQ(w.phase(), Phase::dying);
+}
+
+// The arcade's rule: 25,000 points after the score missiles first appear from, they turn
+// nastier (tuning.h: faster and sharper-turning). Scores are reached here with the saucer (5,000)
+// and a threshold of 5,000 points past a missile score of 0.
+struct MissileFlight {
+    std::vector<glm::dvec3> path;
+    double max_offset_far = 0.0;  // sideways, while still weaving
+    int ticks = 0;                // until it reached the tank
+    bool nasty = false;
+};
+
+MissileFlight fly_missile(int nastier_after, bool score_first) {
+    level::Level lv = test::empty_level();
+    lv.enemies.missile_score = 0;
+    lv.enemies.missile_nastier_after = nastier_after;
+    World w = test::make_world(lv, 5);
+    if (score_first) {
+        w.spawn_saucer({0.0, 20.0});
+        test::fire_and_wait(w, 30);
+        EXPECT_EQ(w.score(), 5000);
+    }
+    w.spawn_hostile(HostileKind::missile, {0.0, 80.0});
+    MissileFlight f;
+    f.nasty = w.missile_is_nasty();
+    while (w.state().hostile && w.phase() == Phase::playing && f.ticks < 2000) {
+        w.step(TickCommand{});
+        ++f.ticks;
+        if (!w.state().hostile) break;
+        const glm::dvec3 p = w.state().hostile->body.transform.position;
+        f.path.push_back(p);
+        if (std::hypot(p.x, p.z) > tuning::kMissileStraightDistance + 10.0) {
+            f.max_offset_far = std::max(f.max_offset_far, std::abs(p.x));
+        }
+    }
+    EXPECT_EQ(w.phase(), Phase::dying) << "the missile reached the tank";
+    return f;
+}
+
+TEST(WorldMotion, MissileTurnsNastier25000PointsAfterItFirstAppears) {
+    EXPECT_EQ(level::EnemyRules{}.missile_nastier_after, 25000) << "the arcade's delta";
+    // Before the threshold: exactly the missile as before (the rule off, as old replays play).
+    const MissileFlight before = fly_missile(5000, false);
+    const MissileFlight rule_off = fly_missile(0, false);
+    EXPECT_FALSE(before.nasty);
+    ASSERT_EQ(before.path.size(), rule_off.path.size());
+    for (std::size_t i = 0; i < before.path.size(); ++i)
+        ASSERT_EQ(before.path[i], rule_off.path[i]);
+    // At the same score with the rule off (an old replay): still the old missile.
+    const MissileFlight old_rules = fly_missile(0, true);
+    EXPECT_FALSE(old_rules.nasty);
+    // Past the threshold: still weaving, it reaches the tank sooner (a quarter faster).
+    const MissileFlight after = fly_missile(5000, true);
+    EXPECT_TRUE(after.nasty);
+    EXPECT_GT(old_rules.max_offset_far, 1.5);
+    EXPECT_GT(after.max_offset_far, 1.5);
+    EXPECT_LT(after.ticks, old_rules.ticks * 0.9);
+    // Deterministic: the same flight twice.
+    const MissileFlight again = fly_missile(5000, true);
+    ASSERT_EQ(again.path.size(), after.path.size());
+    for (std::size_t i = 0; i < after.path.size(); ++i) ASSERT_EQ(again.path[i], after.path[i]);
+}
+
+// Nastier means harder: the autopilot, meeting 60 missiles from all round at the same score,
+// is hit by more of the nastier ones than with the rule off.
+TEST(WorldMotion, NastierMissilesHitTheAutopilotMoreOften) {
+    int hits[2] = {};
+    for (const int i : {0, 1}) {
+        for (int k = 0; k < 60; ++k) {
+            level::Level lv = test::empty_level();
+            lv.enemies.missile_score = 0;
+            lv.enemies.missile_nastier_after = i == 0 ? 0 : 5000;
+            World w = test::make_world(lv, 100 + k, 9);
+            w.spawn_saucer({0.0, 20.0});
+            test::fire_and_wait(w, 30);
+            ASSERT_EQ(w.missile_is_nasty(), i == 1);
+            const double bearing = (k * 37 % 360) * std::numbers::pi / 180.0;
+            w.spawn_hostile(HostileKind::missile,
+                            {80.0 * std::sin(bearing), 80.0 * std::cos(bearing)});
+            const int lives = w.lives();
+            for (int t = 0; t < 3000 && w.state().hostile && w.phase() == Phase::playing; ++t)
+                w.step(autopilot(w));
+            if (w.phase() != Phase::playing || w.lives() < lives) ++hits[i];
+        }
+    }
+    EXPECT_GT(hits[1], hits[0] + 5) << "before " << hits[0] << ", nastier " << hits[1];
 }
 
 TEST(WorldMotion, DebrisFliesInParabolasAndSettles) {

@@ -33,7 +33,7 @@ Found describe(const std::filesystem::path& file, bool user) {
     }
     f.choice.name = ascii_upper(menu_label(r.level->name));
     f.choice.description =
-        ascii_upper(menu_label(r.level->description, 2 * budget::kMenuLabelChars));
+        ascii_upper(menu_label(r.level->description, 3 * budget::kMenuLabelChars));
     f.choice.listed = r.level->listed;
     f.order = r.level->menu_order;
     return f;

@@ -47,6 +47,9 @@ Layout layout_for(const Page& page, float scale) {
     }
     l.row_height *= scale;
     l.row_step *= scale;
+    // The last row stays above the frame-rate readout's strip, which grows with the text.
+    l.rows_bottom =
+        std::max(l.rows_bottom, hud::readout_box(1.0f, scale).max.y + 0.4f * l.row_height);
     // Larger text: when the rows no longer fit, they may rise towards the title (the demo's
     // band on the title screen is less important than reading the menu), then they scroll.
     const std::size_t n = page.rows.size();
@@ -55,6 +58,13 @@ Layout layout_for(const Page& page, float scale) {
                           : page.under_band ? l.title_y - 0.1f * scale
                                             : l.title_y - 0.12f * scale;
     if (wanted > l.rows_top) l.rows_top = std::min(wanted, std::max(ceiling, l.rows_top));
+    // The pause menu under the band: at a large text size its title rises with its rows (over
+    // the paused view) rather than leave room for only two rows.
+    if (page.under_band && wanted > l.rows_top) {
+        const float band_floor = hud::kBandBottom - 0.06f - 0.1f * scale;
+        l.rows_top = std::min(wanted, std::max(band_floor - 0.1f * scale, l.rows_top));
+        l.title_y = std::max(l.title_y, l.rows_top + 0.1f * scale);
+    }
     return l;
 }
 

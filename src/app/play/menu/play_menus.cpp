@@ -7,12 +7,29 @@
 #include <optional>
 #include <span>
 
+#include "core/budgets.h"
 #include "core/text/ascii_case.h"
 #include "scene/style.h"
 
 namespace bz::app::menu {
 
 namespace {
+
+// A level's description under the list: past one menu line's worth, it breaks at the space
+// nearest its middle onto two lines, so that it is read whole rather than shrunk or cut.
+std::vector<std::string> two_lines(const std::string& text) {
+    if (text.empty()) return {};
+    if (text.size() <= 3 * budget::kMenuLabelChars / 2) return {text};
+    const std::size_t mid = text.size() / 2;
+    std::size_t best = std::string::npos;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        if (text[i] != ' ') continue;
+        const auto dist = [mid](std::size_t k) { return k > mid ? k - mid : mid - k; };
+        if (best == std::string::npos || dist(i) < dist(best)) best = i;
+    }
+    if (best == std::string::npos) return {text};
+    return {text.substr(0, best), text.substr(best + 1)};
+}
 
 using platform::Action;
 using platform::MenuKey;
@@ -263,7 +280,7 @@ Page PlayMenus::build(Screen s) const {
             if (!stack_.empty() && stack_.back().screen == Screen::levels &&
                 stack_.back().selected < env_.levels.size()) {
                 const std::string& d = env_.levels[stack_.back().selected].description;
-                if (!d.empty()) p.lines.push_back(d);
+                for (std::string& line : two_lines(d)) p.lines.push_back(std::move(line));
             }
             break;
         case Screen::options: {

@@ -33,6 +33,10 @@ TEST(LevelList, ShippedLevelsShowTheirNamesTutorialFirstAndNoBenchmark) {
     });
     ASSERT_NE(volcano, levels.end());
     EXPECT_EQ(volcano->name, "NIGHT VOLCANO");  // the level's name, not the file's
+    // Every shipped description is shown whole (the tutorial's is 86 characters): none is cut.
+    for (const LevelChoice& l : levels) {
+        EXPECT_EQ(l.description.find("..."), std::string::npos) << l.description;
+    }
 }
 
 TEST(LevelList, UserLevelsFollowSortedByOrderThenNameAndBrokenOnesAreFlagged) {

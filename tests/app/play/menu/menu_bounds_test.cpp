@@ -8,7 +8,9 @@
 #include <string>
 
 #include "app/play/menu/level_list.h"
+#include "app/play/menu/menu_page.h"
 #include "app/play/menu/play_menus.h"
+#include "game/hud/hud_layout.h"
 #include "support/scratch_dir.h"
 
 namespace bz::app::menu {
@@ -75,6 +77,46 @@ TEST(MenuBounds, HostileLevelNamesStayOnTheScreenAtEveryScaleAndShape) {
                 EXPECT_EQ(first_outside(lines, aspect), "")
                     << "level list, row " << i << ", scale " << scale << ", aspect " << aspect;
                 menus.handle(platform::MenuKey::down);
+            }
+        }
+    }
+}
+
+// Seen under Xvfb: at 2x the pause menu showed two of its four rows over "MORE BELOW", which
+// ran into the frame-rate readout. Now its title rises with the rows, every row shows, and no
+// page's last row reaches down into the readout's strip, at any text size.
+TEST(MenuBounds, PauseShowsEveryRowAndNoRowReachesTheReadout) {
+    Page pause;
+    pause.title = "PAUSED";
+    pause.under_band = true;
+    for (const char* label : {"RESUME", "OPTIONS", "CONTROLS", "QUIT TO TITLE"}) {
+        Row r;
+        r.label = label;
+        pause.rows.push_back(r);
+    }
+    Page title = pause;
+    title.under_band = false;
+    title.big_title = true;
+    for (const char* label : {"LEVEL", "HIGH SCORES"}) {
+        Row r;
+        r.label = label;
+        title.rows.push_back(r);
+    }
+    for (const float scale : {1.0f, 1.25f, 1.5f, 1.75f, 2.0f}) {
+        for (const double aspect : {4.0 / 3.0, 16.0 / 9.0}) {
+            const auto a = static_cast<float>(aspect);
+            for (const Page* page : {&pause, &title}) {
+                const Placement pl = place(font(), *page, 0, aspect, scale);
+                EXPECT_EQ(pl.window.count, page->rows.size())
+                    << page->title << " scrolls at " << scale << ", aspect " << aspect;
+                const float readout_top = game::hud::readout_box(a, scale).max.y;
+                for (const PlacedRow& r : pl.rows) {
+                    EXPECT_GT(r.y - 0.38f * r.text_height, readout_top)
+                        << page->title << " row " << r.row << " at " << scale;
+                }
+                // The title stays under the HUD band and above the first row.
+                EXPECT_LT(pl.layout.title_y + 0.09f * scale, game::hud::kBandBottom + 0.3f);
+                EXPECT_GT(pl.layout.title_y, pl.layout.rows_top);
             }
         }
     }

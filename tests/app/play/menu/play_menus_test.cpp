@@ -84,6 +84,12 @@ TEST(PlayMenus, LevelPageListsShippedAndUserLevelsAndChooses) {
     EXPECT_EQ(p.lines, std::vector<std::string>{"THE ARCADE FIELD."});  // the selected one's
     f.keys({MenuKey::down});
     EXPECT_EQ(f.menus.page().lines, std::vector<std::string>{"WALLS."});
+    // A long description breaks near its middle onto two lines, whole.
+    f.menus.env().levels[1].description =
+        "LEARN TO DRIVE AND SHOOT: A SMALL CALM FIELD, SLOW TANKS ONLY, NOTHING THAT HUNTS YOU.";
+    EXPECT_EQ(f.menus.page().lines,
+              (std::vector<std::string>{"LEARN TO DRIVE AND SHOOT: A SMALL CALM FIELD,",
+                                        "SLOW TANKS ONLY, NOTHING THAT HUNTS YOU."}));
     f.keys({MenuKey::up});
     const auto r = f.keys({MenuKey::down, MenuKey::down, MenuKey::confirm});
     ASSERT_EQ(r.size(), 1u);
