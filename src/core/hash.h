@@ -1,7 +1,10 @@
 #pragma once
 // FNV-1a, 64-bit: stable across runs and machines, used for state hashes and file hashes.
+#include <cinttypes>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
+#include <string>
 #include <string_view>
 #include <type_traits>
 
@@ -35,6 +38,13 @@ inline std::uint64_t hash_bytes(std::string_view s) {
     Hasher h;
     h.bytes(s.data(), s.size());
     return h.digest();
+}
+
+// A hash as the files that record it write it: 16 lower-case hex digits.
+inline std::string hex(std::uint64_t v) {
+    char buf[20];
+    std::snprintf(buf, sizeof buf, "%016" PRIx64, v);
+    return buf;
 }
 
 }  // namespace bz

@@ -40,6 +40,9 @@ inline constexpr int kMaxMaxFps = 1000;
 inline constexpr float kMinUiScale = 1.0f;
 inline constexpr float kMaxUiScale = 2.0f;
 
+// One step of the volume keys and of the Options row: both land on whole tenths.
+inline constexpr float kVolumeStep = 0.1f;
+
 struct Settings {
     Bindings keys = default_bindings();
     PadBindings buttons = default_pad_bindings();  // [buttons]: gamepad buttons per action

@@ -12,6 +12,7 @@
 #include "app/replay_level.h"
 #include "cli/replay_args.h"
 #include "core/error.h"
+#include "core/hash.h"
 #include "core/io/output_path.h"
 #include "core/paths.h"
 #include "core/text/printable.h"
@@ -27,12 +28,6 @@ namespace bz::app {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string hex(std::uint64_t v) {
-    char buf[20];
-    std::snprintf(buf, sizeof buf, "%016" PRIx64, v);
-    return buf;
-}
 
 level::Level load_level_or_report(const fs::path& path, bool& ok) {
     level::LoadResult loaded = level::load_level_file(path);

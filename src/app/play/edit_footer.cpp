@@ -3,17 +3,14 @@
 #include <algorithm>
 #include <string_view>
 
+#include "app/play/text_band.h"
+
 namespace bz::app {
 
 namespace {
 
 namespace hud = game::hud;
 
-// A line's band in text heights: the baseline sits kLift above the band's bottom, and glyphs
-// reach kOvershoot past the cap height (the same as the play overlay's lines).
-constexpr float kLift = 0.38f;
-constexpr float kOvershoot = 0.15f;
-constexpr float kBand = kLift + 1.0f + kOvershoot;
 constexpr std::string_view kGap = "   ";
 
 // Splits at the "   " gaps into as few lines as fit `width` at `height` (greedy, in order).
@@ -57,8 +54,8 @@ EditFooter layout_edit_footer(const scene::VectorFont& font, const std::string& 
         for (auto it = lines.rbegin(); it != lines.rend(); ++it) {  // bottom-up
             float h = base_height * s;
             if (const float w = font.width(*it, h); w > width) h *= width / w;
-            f.lines.push_back({*it, {f.box.min.x, y + h * kLift}, h, is_status});
-            y += h * kBand;
+            f.lines.push_back({*it, {f.box.min.x, y + h * kBaselineLift}, h, is_status});
+            y += h * kTextBand;
         }
     };
     stack(keys, kEditKeysHeight, false);

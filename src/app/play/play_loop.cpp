@@ -25,7 +25,6 @@ namespace {
 
 // How often the level files are checked for edits (a stat per file: cheap, but not free).
 constexpr double kReloadPollSeconds = 0.25;
-constexpr float kVolumeStep = 0.1f;
 // Settings errors are shown this long at the start (and stay in the log); the file is the
 // player's to fix, the game goes on with defaults.
 constexpr double kSettingsErrorSeconds = 30.0;
@@ -402,9 +401,11 @@ class Loop {
             }
             case Action::volume_up:
             case Action::volume_down: {
-                const float step = a == Action::volume_up ? kVolumeStep : -kVolumeStep;
+                const float step =
+                    a == Action::volume_up ? platform::kVolumeStep : -platform::kVolumeStep;
                 // Snap to whole steps so repeated presses land on 0% and 100% exactly.
-                const float v = std::round((p_.settings.volume + step) / kVolumeStep) * kVolumeStep;
+                const float v = std::round((p_.settings.volume + step) / platform::kVolumeStep) *
+                                platform::kVolumeStep;
                 p_.settings.volume = std::clamp(v, 0.0f, 1.0f);
                 p_.audio.set_volume(p_.settings.volume);
                 p_.overlay.notify(

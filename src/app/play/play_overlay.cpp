@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "app/play/text_band.h"
 #include "game/hud/hud_layout.h"
 
 namespace bz::app {
@@ -15,10 +16,6 @@ constexpr float kErrorTitleHeight = 0.04f;
 constexpr float kNoticeHeight = 0.042f;
 constexpr float kFooterHeight = 0.036f;
 constexpr float kLineGap = 1.55f;  // baseline to baseline, in text heights
-// Where the baseline sits in a line's band, and how far glyphs reach past the cap height and
-// below the baseline (round tops, descenders), in text heights: a line stays in its band.
-constexpr float kBaselineLift = 0.38f;
-constexpr float kOvershoot = 0.15f;
 const glm::vec3 kErrorColor{1.0f, 0.25f, 0.2f};
 const glm::vec3 kNoticeColor{0.4f, 1.0f, 0.5f};
 const glm::vec3 kFooterColor{0.6f, 0.9f, 0.7f};
@@ -151,7 +148,7 @@ void PlayOverlay::draw(std::vector<scene::HudLine>& out, double aspect) const {
         const auto lines = wrap(it->text, nh, nbox.width());
         for (auto l = lines.rbegin(); l != lines.rend(); ++l) {  // drawn bottom-up
             // Full: the oldest go unshown.
-            if (y + nh * (1.0f + kOvershoot) > nbox.max.y) break;
+            if (y + nh * (1.0f + kGlyphOvershoot) > nbox.max.y) break;
             font_.draw(out, *l, {nbox.min.x, y}, nh, kNoticeColor, scene::TextAlign::left, fade);
             y += nh * kLineGap;
         }
@@ -160,8 +157,7 @@ void PlayOverlay::draw(std::vector<scene::HudLine>& out, double aspect) const {
     if (!footer_.empty()) {
         const hud::Box rbox = hud::readout_box(a, scale_, footer_top_);
         // The strip is one line high at any text size (hud::readout_box grows with it).
-        const float fh =
-            std::min(kFooterHeight * scale_, rbox.height() / (kBaselineLift + 1.0f + kOvershoot));
+        const float fh = std::min(kFooterHeight * scale_, rbox.height() / kTextBand);
         font_.draw(out, footer_, {rbox.max.x, rbox.min.y + fh * kBaselineLift}, fh, kFooterColor,
                    scene::TextAlign::right, 0.8f);
     }

@@ -10,6 +10,7 @@
 
 #include "core/budgets.h"
 #include "core/error.h"
+#include "core/hash.h"
 #include "core/io/file_io.h"
 #include "core/text/line_reader.h"
 #include "core/text/printable.h"
@@ -21,17 +22,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr std::string_view kMagic = "beamzone-highscores";
+constexpr std::string_view kHighscoresMagic = "beamzone-highscores";
 constexpr int kFormat = 2;
 // A few hundred levels' tables; a larger file is not one the game wrote.
 constexpr std::size_t kMaxFileBytes = budget::kHighScoreBytes;
 constexpr std::size_t kMaxErrors = 100;
-
-std::string hex(std::uint64_t v) {
-    char buf[20];
-    std::snprintf(buf, sizeof buf, "%016" PRIx64, v);
-    return buf;
-}
 
 class Reader {
   public:
@@ -83,8 +78,8 @@ class Reader {
     }
 
     bool read_magic(std::string_view line) {
-        const std::string v1 = std::string(kMagic) + " 1";
-        const std::string v2 = std::string(kMagic) + " " + std::to_string(kFormat);
+        const std::string v1 = std::string(kHighscoresMagic) + " 1";
+        const std::string v2 = std::string(kHighscoresMagic) + " " + std::to_string(kFormat);
         if (line == v1) {
             format_ = 1;
             key_ = kSharedTableKey;
@@ -95,8 +90,8 @@ class Reader {
             format_ = kFormat;
             return true;
         }
-        error(1, line.starts_with(kMagic)
-                     ? "high-score format '" + printable(line.substr(kMagic.size())) +
+        error(1, line.starts_with(kHighscoresMagic)
+                     ? "high-score format '" + printable(line.substr(kHighscoresMagic.size())) +
                            "' is not one this build reads (1 or 2)"
                      : std::string("not a beamzone high-score file"));
         return false;
@@ -190,7 +185,7 @@ fs::path aside_name(const fs::path& file) {
 }  // namespace
 
 std::string serialise(const HighScoreBook& book) {
-    std::string out = std::string(kMagic) + " " + std::to_string(kFormat) + "\n";
+    std::string out = std::string(kHighscoresMagic) + " " + std::to_string(kFormat) + "\n";
     for (const auto& [key, table] : book.tables()) {
         out += "level " + hex(key.rules) + " " + level_key(key.name, key.rules).name + "\n";
         for (const HighScore& e : table.entries()) {

@@ -9,6 +9,7 @@
 
 #include "core/budgets.h"
 #include "core/error.h"
+#include "core/hash.h"
 #include "core/io/file_io.h"
 #include "core/text/line_reader.h"
 #include "core/text/printable.h"
@@ -19,19 +20,13 @@ namespace bz::game::replay {
 
 namespace {
 
-constexpr std::string_view kMagic = "beamzone-replay";
+constexpr std::string_view kReplayMagic = "beamzone-replay";
 // A build version such as "0.1.0-dirty" and a level path: generous, but bounded, so a
 // hostile file cannot make every later message carry megabytes.
 constexpr std::size_t kMaxVersionBytes = 64;
 constexpr std::size_t kMaxLevelPathBytes = 4096;
 // A replay of kMaxTicks with a new command every tick is about 20 bytes a line.
 constexpr std::size_t kMaxReplayBytes = budget::kReplayBytes;
-
-std::string hex(std::uint64_t v) {
-    char buf[20];
-    std::snprintf(buf, sizeof buf, "%016" PRIx64, v);
-    return buf;
-}
 
 // Splits a line into whitespace-separated fields (views into the line, so a field's column
 // is its offset).
@@ -137,9 +132,10 @@ class Reader {
   private:
     void read_magic(const LineError& err, const Fields& f) {
         const std::string_view key = f[0];
-        if (key != kMagic)
-            err.fail_at(key, "not a beamzone replay (expected '" + std::string(kMagic) + " 1')");
-        if (f.size() != 2) err.fail_at(key, "expected '" + std::string(kMagic) + " VERSION'");
+        if (key != kReplayMagic)
+            err.fail_at(key,
+                        "not a beamzone replay (expected '" + std::string(kReplayMagic) + " 1')");
+        if (f.size() != 2) err.fail_at(key, "expected '" + std::string(kReplayMagic) + " VERSION'");
         const int v = err.number<int>(f[1], "format version");
         if (v != kFormatVersion) {
             err.fail_at(f[1], "replay format " + std::to_string(v) +
@@ -319,7 +315,7 @@ class Reader {
 
 std::string serialise(const Replay& r) {
     std::string out;
-    out += std::string(kMagic) + " " + std::to_string(kFormatVersion) + "\n";
+    out += std::string(kReplayMagic) + " " + std::to_string(kFormatVersion) + "\n";
     out += "version " + r.header.version + "\n";
     out += "seed " + std::to_string(r.header.seed) + "\n";
     out += "level " + r.header.level + "\n";

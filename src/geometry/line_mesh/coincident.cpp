@@ -8,11 +8,11 @@
 namespace bz::geo {
 namespace {
 
-constexpr std::uint32_t kUnset = std::numeric_limits<std::uint32_t>::max();
+constexpr std::uint32_t kUnsetIndex = std::numeric_limits<std::uint32_t>::max();
 
 // The vertex set of a face in ascending order, plus which of the two windings it has.
 struct FaceKey {
-    std::uint32_t a = kUnset, b = kUnset, c = kUnset;
+    std::uint32_t a = kUnsetIndex, b = kUnsetIndex, c = kUnsetIndex;
     bool operator==(const FaceKey&) const = default;
 };
 
@@ -46,7 +46,7 @@ class FaceTable {
         std::size_t i = detail::hash3(key.a, key.b, key.c) >> shift_;
         for (;; i = (i + 1) & mask) {
             Slot& s = slots_[i];
-            if (s.key.a == kUnset) s.key = key;
+            if (s.key.a == kUnsetIndex) s.key = key;
             if (s.key == key) return s.first;
         }
     }
@@ -54,7 +54,7 @@ class FaceTable {
   private:
     struct Slot {
         FaceKey key;
-        std::uint32_t first[2] = {kUnset, kUnset};
+        std::uint32_t first[2] = {kUnsetIndex, kUnsetIndex};
     };
     std::vector<Slot> slots_;
     int shift_;
@@ -82,14 +82,14 @@ CoincidentCounts remove_coincident_faces(std::vector<std::uint32_t>& triangles,
     for (std::size_t f = 0; f < faces; ++f) {
         const auto kf = key_face(triangles[3 * f], triangles[3 * f + 1], triangles[3 * f + 2]);
         std::uint32_t* first = table.first_faces(kf.key);
-        if (first[kf.winding] != kUnset) {
+        if (first[kf.winding] != kUnsetIndex) {
             dropped[f] = 1;
             ++counts.duplicates;
             continue;
         }
         first[kf.winding] = static_cast<std::uint32_t>(f);
         const std::uint32_t reverse = first[1 - kf.winding];
-        if (reverse != kUnset) pairs.push_back({reverse, static_cast<std::uint32_t>(f)});
+        if (reverse != kUnsetIndex) pairs.push_back({reverse, static_cast<std::uint32_t>(f)});
     }
     counts.twins = detail::resolve_twins(triangles, vertex_count, pairs, dropped);
     if (counts.duplicates + counts.twins > 0) erase_dropped(triangles, dropped);

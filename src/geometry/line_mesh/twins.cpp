@@ -9,7 +9,7 @@
 namespace bz::geo::detail {
 namespace {
 
-constexpr std::uint32_t kUnset = std::numeric_limits<std::uint32_t>::max();
+constexpr std::uint32_t kNoPair = std::numeric_limits<std::uint32_t>::max();
 
 enum class FaceState : std::uint8_t { settled, pending, dropped };
 
@@ -27,7 +27,7 @@ class TwinResolver {
           pairs_(pairs),
           dropped_(dropped),
           state_(tri.size() / 3),
-          pair_of_(tri.size() / 3, kUnset),
+          pair_of_(tri.size() / 3, kNoPair),
           decided_(pairs.size(), 0),
           queued_(pairs.size(), 0) {
         for (std::size_t f = 0; f < state_.size(); ++f) {

@@ -10,7 +10,7 @@
 namespace bz::geo {
 namespace {
 
-constexpr std::uint32_t kUnset = std::numeric_limits<std::uint32_t>::max();
+constexpr std::uint32_t kEmptySlot = std::numeric_limits<std::uint32_t>::max();
 
 // The key is the position's bit pattern, with -0.0 folded onto +0.0 so both weld together.
 struct PositionKey {
@@ -32,20 +32,20 @@ PositionKey key_of(const glm::vec3& p) {
 class PositionTable {
   public:
     PositionTable(std::size_t max_items, const std::vector<glm::vec3>& welded)
-        : slots_(detail::table_size_for(max_items), kUnset),
+        : slots_(detail::table_size_for(max_items), kEmptySlot),
           shift_(64 - std::countr_zero(slots_.size())),
           welded_(welded) {}
 
-    // Returns the id of the welded vertex at key, or kUnset after reserving a slot for
+    // Returns the id of the welded vertex at key, or kEmptySlot after reserving a slot for
     // `next_id`, which the caller must then append to the welded positions.
     std::uint32_t find_or_insert(const PositionKey& key, std::uint32_t next_id) {
         const std::size_t mask = slots_.size() - 1;
         std::size_t i = detail::hash3(key.x, key.y, key.z) >> shift_;
         for (;; i = (i + 1) & mask) {
             const std::uint32_t id = slots_[i];
-            if (id == kUnset) {
+            if (id == kEmptySlot) {
                 slots_[i] = next_id;
-                return kUnset;
+                return kEmptySlot;
             }
             if (key_of(welded_[id]) == key) return id;
         }
@@ -63,7 +63,7 @@ void check_shape(const TriMesh& mesh) {
                                     std::to_string(mesh.indices.size()) +
                                     " is not a multiple of 3");
     }
-    if (mesh.positions.size() >= kUnset) {
+    if (mesh.positions.size() >= kEmptySlot) {
         throw std::invalid_argument("weld_positions: too many vertices");
     }
 }
@@ -78,7 +78,7 @@ void check_shape(const TriMesh& mesh) {
 WeldedMesh weld_positions(const TriMesh& mesh) {
     check_shape(mesh);
     const std::size_t vertex_count = mesh.positions.size();
-    std::vector<std::uint32_t> remap(vertex_count, kUnset);
+    std::vector<std::uint32_t> remap(vertex_count, kEmptySlot);
     WeldedMesh out;
     PositionTable table(vertex_count, out.positions);
     out.triangles.resize(mesh.indices.size());
@@ -86,10 +86,10 @@ WeldedMesh weld_positions(const TriMesh& mesh) {
         const std::uint32_t v = mesh.indices[i];
         if (v >= vertex_count) throw_bad_index(v, vertex_count);
         std::uint32_t id = remap[v];
-        if (id == kUnset) {
+        if (id == kEmptySlot) {
             const auto next = static_cast<std::uint32_t>(out.positions.size());
             id = table.find_or_insert(key_of(mesh.positions[v]), next);
-            if (id == kUnset) {
+            if (id == kEmptySlot) {
                 id = next;
                 out.positions.push_back(mesh.positions[v]);
             }

@@ -56,8 +56,6 @@ enum OptionRow : std::size_t {
 enum ComfortRow : std::size_t { c_ui_scale, c_flashes, c_colour_safe, c_back };
 enum ArcadeRow : std::size_t { a_lives, a_missile, a_bonus, a_back };
 
-constexpr float kVolumeStep = 0.1f;
-
 // The options menu offers the style table's canonical names (scene/style.h), in F6's order.
 std::vector<std::string> style_names() {
     std::vector<std::string> out;
@@ -534,8 +532,9 @@ std::vector<Request> PlayMenus::change(int by) {
             break;
         case o_volume: {
             const float v =
-                std::round((st.volume + static_cast<float>(by) * kVolumeStep) / kVolumeStep) *
-                kVolumeStep;
+                std::round((st.volume + static_cast<float>(by) * platform::kVolumeStep) /
+                           platform::kVolumeStep) *
+                platform::kVolumeStep;
             st.volume = v > 1.0f + 1e-3f ? 0.0f : (v < -1e-3f ? 1.0f : std::clamp(v, 0.0f, 1.0f));
             break;
         }
