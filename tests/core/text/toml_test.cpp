@@ -58,10 +58,16 @@ TEST(TomlHeader, NonAsciiOutsideStringsIsAPositionedError) {
         int line, column;
     };
     const std::vector<Case> cases = {
-        {"a = 1\xCC\x9C\n", false, 1, 6},          {"name = caf\xC3\xA9\n", false, 1, 8},
-        {"\xC3\xA9 = 1\n", false, 1, 1},           {"s = \"\"\"\\\n\xC2\xA7\"\"\"\n", true, 0, 0},
-        {"a = [1,\xE3\x82\xA2 2]\n", false, 1, 8}, {"t = {x = 1\xEF\xAC\x90}\n", false, 1, 11},
+        {"a = 1\xCC\x9C\n", false, 1, 6},
+        {"name = caf\xC3\xA9\n", false, 1, 8},
+        {"\xC3\xA9 = 1\n", false, 1, 1},
+        {"s = \"\"\"\\\n\xC2\xA7\"\"\"\n", true, 0, 0},
+        {"a = [1,\xE3\x82\xA2 2]\n", false, 1, 8},
+        {"t = {x = 1\xEF\xAC\x90}\n", false, 1, 11},
         {"a = 1\xC2\xA0\n", false, 1, 6},  // U+00A0: whitespace to toml++, an error in TOML
+        // A broken parser invariant (parse_key on a '['): an error, not an abort or an assumption.
+        {"[[[[", false, 1, 3},
+        {"[[a]]\n[[[b]]]\n", false, 2, 3},
     };
     for (const Case& c : cases) {
         try {
