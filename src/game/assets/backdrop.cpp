@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
-#include <numbers>
 
 #include "core/angles.h"
 #include "scene/shapes.h"

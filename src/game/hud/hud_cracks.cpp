@@ -2,7 +2,6 @@
 // to the screen edges, with a few branches and a ring of shattered glass round the hole.
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 #include "core/angles.h"
 #include "core/rng.h"

@@ -2,7 +2,6 @@
 // turning clockwise, the field of view marked, the hostile as a blip that flares as the sweep
 // passes and fades after. The saucer never shows.
 #include <cmath>
-#include <numbers>
 
 #include "core/angles.h"
 #include "game/hud/hud.h"

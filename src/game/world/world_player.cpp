@@ -1,7 +1,6 @@
 // The player's tank: tread drive, obstacles that block it, and the gun.
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 #include "core/angles.h"
 #include "game/world/tuning.h"

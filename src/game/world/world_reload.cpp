@@ -2,7 +2,6 @@
 // inside an obstacle or off the field is moved to the nearest legal place.
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 #include "core/angles.h"
 #include "game/world/tuning.h"

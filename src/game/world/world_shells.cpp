@@ -1,7 +1,6 @@
 // Shells in flight (what they hit) and the debris of destroyed things.
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 #include "core/angles.h"
 #include "game/world/collision.h"
