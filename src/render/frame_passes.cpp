@@ -81,17 +81,27 @@ const PhosphorStep* phosphor(const PassContext& ctx) {
     return &*picture.phosphor;
 }
 
-void bloom(const PassContext& ctx) {
+void bloom_pass(const PassContext& ctx) {
     pass_bloom(ctx, *ctx.picture->texture, phosphor(ctx));
     ctx.picture->bloom = true;
 }
 
 void composite(const PassContext& ctx) {
     const PhosphorStep* step = phosphor(ctx);
-    if (step && !ctx.picture->bloom) ctx.targets.glow_history_valid = false;
     pass_composite(ctx, *ctx.picture->texture, ctx.picture->bloom, ctx.target_fbo,
                    ctx.targets.width, ctx.targets.height, step);
-    if (step) ctx.picture->texture = &ctx.targets.phosphor;  // updated in place
+    if (step) ctx.picture->texture = &ctx.history.phosphor;  // updated in place
+}
+
+bool beam_blooms(const StyleDef& style, const RenderSettings& settings) {
+    return style.bloom && settings.bloom_strength > 0.0f;
+}
+
+// A held frame (BeamSettings::refresh_hz): the picture the history holds, composited again
+// with the bloom of the frame that drew it; no phosphor step (the picture does not change).
+void held_composite(const PassContext& ctx) {
+    pass_composite(ctx, *ctx.history.picture(), beam_blooms(ctx.style, ctx.settings),
+                   ctx.target_fbo, ctx.targets.width, ctx.targets.height);
 }
 
 void outline_baseline(const PassContext& ctx) {
@@ -132,68 +142,144 @@ bool style_needs_edge_buffer(const StyleDef& style, const RenderSettings& settin
            style.lines == LinePass::halo || compute_lines(style, settings);
 }
 
-std::vector<FramePass> frame_passes(const StyleDef& style, const RenderSettings& settings) {
+namespace {
+
+using R = Resource;
+
+// The beam frame's tail: HUD, bloom, lit tiles and composite, reading the lines whichever
+// line pass drew them; `beam_tiles` says whether that pass marked the beam's tiles.
+void beam_tail(std::vector<FramePass>& list, const StyleDef& style, const RenderSettings& settings,
+               bool beam_tiles) {
+    const ResourceSet tiles = beam_tiles ? ResourceSet{R::beam_tiles} : ResourceSet{};
+    list.push_back({"hud", pass_hud, ResourceSet{R::lines} | tiles, ResourceSet{R::lines} | tiles});
+    const bool phosphor = settings.beam.phosphor != PhosphorDecay::off;
+    const bool bloom = beam_blooms(style, settings);
+    const bool sparse = bloom && settings.sparse_composite;
+    if (bloom) {
+        ResourceSet writes{R::bloom_chain, R::bloom_out};
+        if (settings.sparse_composite) writes.add(R::lit_tiles);
+        if (phosphor) writes.add(R::glow);
+        list.push_back({"bloom", bloom_pass, ResourceSet{R::lines} | tiles, writes,
+                        phosphor ? ResourceSet{R::glow} : ResourceSet{}});
+        if (sparse)
+            list.push_back({"tiles",
+                            pass_tiles,
+                            {R::lit_tiles},
+                            {R::tile_list},
+                            phosphor ? ResourceSet{R::picture_lit} : ResourceSet{}});
+    }
+    ResourceSet reads{R::lines};
+    if (bloom) reads.add(R::bloom_out);
+    if (sparse) reads.add(R::tile_list);
+    ResourceSet writes{R::target, R::picture};
+    ResourceSet past;
+    if (phosphor) {
+        writes.add(ResourceSet{R::phosphor, R::picture_lit});
+        past.add(R::phosphor);
+    }
+    list.push_back({"composite", composite, reads, writes, past});
+}
+
+// A held frame shows the picture its history holds, with the bloom (and the list of lit
+// tiles) of the frame that drew it.
+std::vector<FramePass> held_passes(const StyleDef& style, const RenderSettings& settings) {
+    ResourceSet past{R::picture};
+    if (beam_blooms(style, settings)) {
+        past.add(R::bloom_out);
+        if (settings.sparse_composite) past.add(R::tile_list);
+    }
+    return {{"composite", held_composite, {}, {R::target}, past}};
+}
+
+}  // namespace
+
+ResourceSet resources_of(const std::vector<FramePass>& list) {
+    ResourceSet all;
+    for (const FramePass& pass : list) all.add(pass.reads | pass.writes | pass.reads_past);
+    return all;
+}
+
+ResourceSet writes_of(const std::vector<FramePass>& list) {
+    ResourceSet all;
+    for (const FramePass& pass : list) all.add(pass.writes);
+    return all;
+}
+
+std::vector<FramePass> frame_passes(const StyleDef& style, const RenderSettings& settings,
+                                    FrameKind kind) {
     std::vector<FramePass> list;
     // Where the depth comes from, and what the lines go onto.
     if (style.fill == FillPass::none) {
+        if (kind == FrameKind::held) return held_passes(style, settings);
+        bool beam_tiles = true;
         if (settings.method == LineMethod::image_outline) {
             // The image-space baseline finds no edges as such: feature_edges stays 0.
-            list.push_back({"prepass", pass_outline_prepass});
-            list.push_back({"outline", outline_baseline});
+            list.push_back({"prepass", pass_outline_prepass, {}, {R::depth, R::normals}});
+            list.push_back({"outline", outline_baseline, {R::depth, R::normals}, {R::lines}});
+            beam_tiles = false;
         } else if (settings.method == LineMethod::compute) {
             // The edges pass appends every visible feature edge, the visibility pass runs the
             // spine test once per spine sample of each, and the quads draw the count the edges
             // pass appended (indirect dispatch and draw, no read-back).
-            list.push_back({"prepass", pass_prepass});
-            list.push_back({"edges", edges_sized});
-            list.push_back({"visibility", pass_spine_visibility});
-            list.push_back({"lines", edge_quads_counted});
+            list.push_back({"prepass", pass_prepass, {}, {R::depth}});
+            list.push_back({"edges", edges_sized, {}, {R::edges}});
+            list.push_back({"visibility", pass_spine_visibility, {R::depth, R::edges}, {R::edges}});
+            list.push_back(
+                {"lines", edge_quads_counted, {R::depth, R::edges}, {R::lines, R::beam_tiles}});
         } else {
-            list.push_back({"prepass", pass_prepass});
-            list.push_back({"lines", lines_counted});
+            list.push_back({"prepass", pass_prepass, {}, {R::depth}});
+            list.push_back({"lines", lines_counted, {R::depth}, {R::lines, R::beam_tiles}});
         }
-        list.push_back({"hud", pass_hud});
-        if (style.bloom && settings.bloom_strength > 0.0f) {
-            list.push_back({"bloom", bloom});
-            if (settings.sparse_composite) list.push_back({"tiles", pass_tiles});
-        }
-        list.push_back({"composite", composite});
+        beam_tail(list, style, settings, beam_tiles);
         return list;
     }
-    list.push_back({"fill", pass_fill});
+    // The fill clears the lines target, which holds only the HUD in a filled style.
+    list.push_back({"fill", pass_fill, {}, {R::canvas, R::depth, R::lines}});
     // Strokes are drawn from the edge buffer: the edges pass appends every visible feature edge.
-    if (style_needs_edge_buffer(style, settings)) list.push_back({"edges", edges_counted});
+    if (style_needs_edge_buffer(style, settings))
+        list.push_back({"edges", edges_counted, {}, {R::edges}});
+    bool beam_tiles = false;
+    const ResourceSet strokes_read{R::depth, R::edges, R::canvas};
     switch (style.lines) {
         case LinePass::outline:
-            list.push_back({"outline", pass_outline});
+            list.push_back({"outline", pass_outline, strokes_read, {R::canvas}});
             break;
         case LinePass::sketch:
-            list.push_back({"strokes", sketch_strokes});
+            list.push_back({"strokes", sketch_strokes, strokes_read, {R::canvas}});
             break;
         case LinePass::halo:
-            list.push_back({"shrunk", pass_shrunk_depth});
-            list.push_back({"halo", pass_halo});
+            list.push_back({"shrunk", pass_shrunk_depth, {}, {R::shrunk_depth}});
+            list.push_back({"halo",
+                            pass_halo,
+                            strokes_read | ResourceSet{R::shrunk_depth},
+                            {R::halo, R::canvas}});
             break;
         case LinePass::beam:
-            list.push_back({"lines", lines_counted});
+            list.push_back({"lines", lines_counted, {R::depth}, {R::lines, R::beam_tiles}});
+            beam_tiles = true;
             break;
     }
-    list.push_back({"hud", pass_hud});
-    list.push_back({"composite", pass_ink_composite});
+    const ResourceSet tiles = beam_tiles ? ResourceSet{R::beam_tiles} : ResourceSet{};
+    list.push_back({"hud", pass_hud, ResourceSet{R::lines} | tiles, ResourceSet{R::lines} | tiles});
+    list.push_back({"composite", pass_ink_composite, {R::canvas, R::lines}, {R::target}});
     return list;
 }
 
 std::vector<FramePass> mask_passes(const StyleDef& style, const RenderSettings& settings) {
     if (style.fill == FillPass::none && settings.method == LineMethod::image_outline)
-        return {{"prepass", pass_outline_prepass}, {"outline", outline_mask}};
+        return {{"prepass", pass_outline_prepass, {}, {R::depth, R::normals}},
+                {"outline", outline_mask, {R::depth, R::normals}, {R::mask}}};
     if (exact_mask_from_edges(style, settings))
-        return {{"prepass", pass_prepass},
-                {"edges", edges_complete},
-                {"visibility", pass_spine_visibility},
-                {"lines", edge_quads_mask}};
+        return {{"prepass", pass_prepass, {}, {R::depth}},
+                {"edges", edges_complete, {}, {R::edges}},
+                {"visibility", pass_spine_visibility, {R::depth, R::edges}, {R::edges}},
+                {"lines", edge_quads_mask, {R::depth, R::edges}, {R::mask}}};
     if (style.lines == LinePass::sketch)
-        return {{"prepass", pass_prepass}, {"edges", edges_complete}, {"strokes", sketch_mask}};
-    return {{"prepass", pass_prepass}, {"lines", lines_mask}};
+        return {{"prepass", pass_prepass, {}, {R::depth}},
+                {"edges", edges_complete, {}, {R::edges}},
+                {"strokes", sketch_mask, {R::depth, R::edges}, {R::mask}}};
+    return {{"prepass", pass_prepass, {}, {R::depth}},
+            {"lines", lines_mask, {R::depth}, {R::mask}}};
 }
 
 }  // namespace bz::render

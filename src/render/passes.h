@@ -8,6 +8,8 @@
 
 #include "gl/state.h"
 #include "gl/vertex_array.h"
+#include "render/frame_history.h"
+#include "render/frame_resources.h"
 #include "render/gpu_scene/batches.h"
 #include "render/lines/edge_counter.h"
 #include "render/lines/edge_storage.h"
@@ -43,6 +45,7 @@ struct FramePicture {
 struct PassContext {
     const Programs& programs;
     Targets& targets;
+    FrameHistory& history;  // what this view keeps from earlier frames (frame_history.h)
     MeshCache& gpu_meshes;
     const scene::MeshLibrary& meshes;
     const FrameBatches& batches;
@@ -66,7 +69,15 @@ struct PassContext {
     int view_rows = 0;
     // Where draw_batch_triangles puts a frame's indirect draws; null: no cluster culling.
     gl::Buffer* triangle_draws = nullptr;
+    // What the passes before this one wrote this frame (frame_passes.h declares it); a held
+    // frame starts with what the frame it holds wrote. Null: nothing (the mask passes).
+    const FrameResources* frame = nullptr;
 };
+
+// Whether an earlier pass of this frame wrote `r`.
+inline bool frame_wrote(const PassContext& ctx, Resource r) {
+    return ctx.frame && ctx.frame->has(r);
+}
 
 void pass_prepass(const PassContext& ctx);
 
@@ -118,8 +129,8 @@ void pass_hud(const PassContext& ctx);
 // pass costs per pixel it shades, so the composite computes the new picture where it shades
 // anyway and stores it, and the bloom's last step keeps last frame's glow, decayed alike.
 // phosphor_step sets up one frame's step; set_phosphor_uniforms hands it to a program
-// (shaders/beam/phosphor.glsl). The composite updates the picture (Targets::phosphor) in place;
-// the bloom's glow persists with it (shaders/beam/glow_persistence.glsl).
+// (shaders/beam/phosphor.glsl). The composite updates the picture (FrameHistory::phosphor) in
+// place; the bloom's glow persists with it (shaders/beam/glow_persistence.glsl).
 PhosphorStep phosphor_step(const PassContext& ctx, double dt_seconds);
 void set_phosphor_uniforms(const gl::Program& program, const PhosphorStep& step);
 void pass_bloom(const PassContext& ctx, const gl::Texture2D& source,
@@ -143,7 +154,7 @@ void draw_listed_tiles(const gl::Program& program, const Targets& targets, glm::
 // `bloom`: false draws the picture without glow (bloom_out is not read). With bloom and the
 // tiles of pass_tiles it shades only the lit tiles (RenderSettings::sparse_composite).
 // With `phosphor`, `picture` is this frame's beam image and the composite also updates the
-// phosphor picture (Targets::phosphor) in place.
+// phosphor picture (FrameHistory::phosphor) in place.
 void pass_composite(const PassContext& ctx, const gl::Texture2D& picture, bool bloom,
                     GLuint target_fbo, int width, int height,
                     const PhosphorStep* phosphor = nullptr);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "core/error.h"
 #include "gl/driver.h"
@@ -31,7 +32,12 @@ struct Renderer::Impl {
     int height;
     gl::PassTimer timer;
     Programs programs;
+    // This frame's images, as many as the lists drawn since the last cut named (ensure_targets).
     Targets targets;
+    // What the view keeps from frame to frame, and the rules for forgetting it (frame_history.h).
+    FrameHistory history;
+    // The style of the last frame drawn (a frame of another style forgets the history).
+    std::optional<scene::Style> last_style;
     StyleTextures style_textures = make_style_textures();
     gl::Buffer instances;
     gl::Buffer triangle_draws;  // the prepass's and fills' indirect draws (draw_batch_triangles)
@@ -44,13 +50,6 @@ struct Renderer::Impl {
     GLuint last_target = 0;
     // Feature edges per frame, read back as late as the pass times (no mid-frame wait).
     EdgeCounter edge_counter;
-    // The picture bloom and composite read last frame (the lines target, or a phosphor
-    // texture), and when that frame was shown, for phosphor decay and frame holding.
-    const gl::Texture2D* last_picture = nullptr;
-    double last_time_s = 0.0;
-    // The phosphor and glow history hold nothing (cleared, or new targets): forget_history()
-    // need not clear them again (a filled style forgets every frame).
-    bool history_blank = true;
     // Whether the last frame filled the edge buffer. A frame the geometry shader drew under
     // LineMethod::automatic leaves it as an older frame filled it: its kept counts are stale.
     bool edges_filled_last_frame = false;
@@ -65,11 +64,31 @@ struct Renderer::Impl {
           timer(timing),
           edge_counter(timer.latency()) {
         programs = load_programs(settings);
-        targets = make_targets(width, height, settings);
+        remake(HistoryCut::resize);
         hud_vao.bind_buffer(0, hud_vertices, sizeof(float) * 6);
         hud_vao.float_attribute(0, 0, 2, 0);
         hud_vao.float_attribute(1, 0, 3, sizeof(float) * 2);
         hud_vao.float_attribute(2, 0, 1, sizeof(float) * 5);
+    }
+
+    // New targets and history for the size and settings: nothing allocated until a frame's
+    // list names it (ensure_targets), nothing kept.
+    void remake(HistoryCut why) {
+        targets = make_targets(width, height, settings, {});
+        const glm::ivec2 b = bloom_size(width, height, settings);
+        history = FrameHistory::make(width, height, b.x, b.y, settings);
+        history.forget(why);
+    }
+
+    // The targets a list needs, allocated from it: grown (keeping what is there) when it needs
+    // more; after a style change, made afresh so that images only the old style used go.
+    void ensure_targets(ResourceSet needed, bool style_changed) {
+        if (style_changed && !needed.contains(targets.allocated)) {
+            targets = make_targets(width, height, settings, needed);
+        } else if (!targets.allocated.contains(needed)) {
+            targets = grow_targets(std::move(targets), width, height, settings,
+                                   targets.allocated | needed);
+        }
     }
 
     const StyleDef& style_of(const scene::FrameList& frame) const {
@@ -82,6 +101,7 @@ struct Renderer::Impl {
         const int view_rows = scene_view_rows(frame.view_top, height);
         return PassContext{.programs = programs,
                            .targets = targets,
+                           .history = history,
                            .gpu_meshes = gpu_meshes,
                            .meshes = meshes,
                            .batches = batches,
@@ -118,6 +138,7 @@ struct Renderer::Impl {
             recoloured.items = frame.items;
             recoloured.style = frame.style;
             recoloured.view_top = frame.view_top;
+            recoloured.cut = frame.cut;
             for (scene::DrawItem& item : recoloured.items)
                 item.color = palette_colour(palette, item.color);
         }
@@ -149,18 +170,35 @@ struct Renderer::Impl {
         edges_filled_last_frame = fills;
     }
 
-    // A picture without a past (new targets, a frame after one with no beam picture, or
-    // RenderSettings::keep_history off): the phosphor and the glow start from black, so nothing
-    // an earlier frame lit can linger in it.
-    void forget_history() {
-        last_picture = nullptr;
-        targets.glow_history_valid = false;
-        if (history_blank) return;  // nothing drew into it since it was last cleared
-        history_blank = true;
-        if (targets.phosphor.id() != 0)
-            glClearTexImage(targets.phosphor.id(), 0, GL_RGBA, GL_FLOAT, nullptr);
-        if (targets.picture_lit.id() != 0)
-            glClearTexImage(targets.picture_lit.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_BYTE, nullptr);
+    // The history rules that a frame itself triggers (frame_history.h): keep_history off,
+    // a cut, a style other than the last frame's. Returns whether the style changed.
+    bool apply_history_rules(const scene::FrameList& frame, const StyleDef& style) {
+        const bool style_changed = last_style && *last_style != style.id;
+        if (!settings.keep_history) {
+            history.forget(HistoryCut::no_history);
+        } else if (frame.cut) {
+            history.forget(HistoryCut::camera_cut);
+        } else if (style_changed) {
+            history.forget(HistoryCut::style_change);
+        }
+        last_style = style.id;
+        return style_changed;
+    }
+
+    // Runs a list in order, each pass timed under its name and told what the passes before it
+    // wrote; `frame` starts with what the list may read of an earlier frame.
+    void run_passes(const std::vector<FramePass>& list, PassContext ctx, FrameResources frame) {
+        ctx.frame = &frame;
+        timer.begin_frame();
+        edge_counter.begin_frame();
+        for (const FramePass& pass : list) {
+            timer.begin(pass.name);
+            pass.run(ctx);
+            timer.end();
+            frame.written.add(pass.writes);
+        }
+        timer.end_frame();
+        stats.feature_edges = edge_counter.end_frame();
     }
 
     GLsizei upload_hud(const std::vector<scene::HudLine>& hud) {
@@ -187,9 +225,7 @@ void Renderer::resize(int width, int height) {
     if (width == impl_->width && height == impl_->height) return;
     impl_->width = width;
     impl_->height = height;
-    impl_->targets = make_targets(width, height, impl_->settings);
-    impl_->last_picture = nullptr;
-    impl_->history_blank = true;
+    impl_->remake(HistoryCut::resize);
 }
 
 void Renderer::set_settings(const RenderSettings& settings) {
@@ -208,11 +244,7 @@ void Renderer::set_settings(const RenderSettings& settings) {
     }
     impl_->settings = settings;
     impl_->frame_settings = settings;
-    if (remake) {
-        impl_->targets = make_targets(impl_->width, impl_->height, settings);
-        impl_->last_picture = nullptr;
-        impl_->history_blank = true;
-    }
+    if (remake) impl_->remake(HistoryCut::settings_change);
 }
 
 const RenderSettings& Renderer::settings() const {
@@ -235,55 +267,49 @@ bool same_refresh(double hz, double a_s, double b_s) {
 void Renderer::render(const scene::FrameList& frame, const scene::MeshLibrary& meshes,
                       unsigned target_fbo) {
     Impl& m = *impl_;
-    const GLuint held_target = target_fbo == kOffscreen ? m.targets.output_fbo.id() : target_fbo;
-    if (!m.settings.keep_history) m.last_picture = nullptr;
-    if (m.last_picture && same_refresh(m.settings.beam.refresh_hz, frame.time_s, m.last_time_s)) {
+    const StyleDef& style = m.style_of(frame);
+    const bool style_changed = m.apply_history_rules(frame, style);
+    const ResourceSet output =
+        target_fbo == kOffscreen ? ResourceSet{Resource::target} : ResourceSet{};
+    const CameraMatrices cam = m.camera(frame);
+    if (m.history.picture() &&
+        same_refresh(m.settings.beam.refresh_hz, frame.time_s, m.history.time_s())) {
         // The original machine redrew at ~41 Hz: hold the last picture, only show it again.
-        m.last_target = held_target;
-        const CameraMatrices cam = m.camera(frame);
+        // The held list reads what the frame it holds wrote; the history stays as it is.
+        const std::vector<FramePass> held = frame_passes(style, m.frame_settings, FrameKind::held);
+        m.ensure_targets(resources_of(held) | output, false);
+        const GLuint target = target_fbo == kOffscreen ? m.targets.output_fbo.id() : target_fbo;
+        m.last_target = target;
         const FrameBatches none;
-        const PassContext ctx =
-            m.context(meshes, none, cam, m.style_of(frame), 0, held_target, frame, nullptr);
-        m.timer.begin_frame();
-        m.edge_counter.begin_frame();
-        m.timer.begin("composite");
-        pass_composite(ctx, *m.last_picture, m.settings.bloom_strength > 0.0f, held_target, m.width,
-                       m.height);
-        m.timer.end();
-        m.timer.end_frame();
-        m.stats.feature_edges = m.edge_counter.end_frame();  // a held frame draws none itself
+        const PassContext ctx = m.context(meshes, none, cam, style, 0, target, frame, nullptr);
+        // a held frame draws no edges itself: feature_edges reads back an earlier frame's
+        m.run_passes(held, ctx, FrameResources{m.history.frame_writes()});
         return;
     }
-    const CameraMatrices cam = m.camera(frame);
-    const StyleDef& style = m.style_of(frame);
     m.gpu_meshes.set_edge_lists(style_needs_edge_buffer(style, m.settings));
     const FrameBatches batches = m.prepare(frame, meshes, cam);
     m.choose_line_method(batches, style, style_needs_edge_buffer);
+    const std::vector<FramePass> list = frame_passes(style, m.frame_settings);
+    m.ensure_targets(resources_of(list) | output, style_changed);
     const GLsizei hud_count = m.upload_hud(frame.hud);
     m.stats = batches.stats;
     m.stats.line_method = m.frame_settings.method;
     const GLuint target = target_fbo == kOffscreen ? m.targets.output_fbo.id() : target_fbo;
     m.last_target = target;
-    if (!m.last_picture) m.forget_history();
+    // A picture without a past (the history holds none: new targets, a cut, a frame with no
+    // beam picture): the phosphor and the glow start from black, so nothing an earlier frame
+    // lit can linger in it.
+    if (!m.history.picture()) m.history.forget(HistoryCut::no_history);
+    const gl::Texture2D* past = m.history.picture();
     FramePicture picture{
-        &m.targets.lines, m.last_picture ? frame.time_s - m.last_time_s : 0.0, false, {}};
+        &m.targets.lines, past ? frame.time_s - m.history.time_s() : 0.0, false, {}};
     const PassContext ctx =
         m.context(meshes, batches, cam, style, hud_count, target, frame, &picture);
-
     // The frame is the style's list of passes (frame_passes.cpp), each timed under its name.
-    m.timer.begin_frame();
-    m.edge_counter.begin_frame();
-    for (const FramePass& pass : frame_passes(style, m.frame_settings)) {
-        m.timer.begin(pass.name);
-        pass.run(ctx);
-        m.timer.end();
-    }
-    m.timer.end_frame();
-    m.stats.feature_edges = m.edge_counter.end_frame();
-    // Only the beam styles' pictures can be held and shown again (pass_composite).
-    m.last_picture = style.fill == FillPass::none ? picture.texture : nullptr;
-    if (picture.phosphor) m.history_blank = false;
-    m.last_time_s = frame.time_s;
+    m.run_passes(list, ctx, FrameResources{});
+    // The history now holds what this frame wrote of it: only a beam style writes a picture
+    // that a held frame can show again (pass_composite).
+    m.history.keep(writes_of(list), picture.texture, frame.time_s);
 }
 
 std::vector<std::uint8_t> Renderer::render_mask(const scene::FrameList& frame,
@@ -294,9 +320,11 @@ std::vector<std::uint8_t> Renderer::render_mask(const scene::FrameList& frame,
     m.gpu_meshes.set_edge_lists(mask_needs_edge_buffer(style, m.settings));
     const FrameBatches batches = m.prepare(frame, meshes, cam);
     m.choose_line_method(batches, style, mask_needs_edge_buffer);
+    const std::vector<FramePass> list = mask_passes(style, m.frame_settings);
+    m.ensure_targets(resources_of(list), false);
     const PassContext ctx =
         m.context(meshes, batches, cam, style, 0, m.targets.output_fbo.id(), frame, nullptr);
-    for (const FramePass& pass : mask_passes(style, m.frame_settings)) pass.run(ctx);
+    for (const FramePass& pass : list) pass.run(ctx);
     std::vector<std::uint8_t> rows(static_cast<std::size_t>(m.width) * m.height);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     glGetTextureImage(m.targets.mask.id(), 0, GL_RED, GL_UNSIGNED_BYTE,
@@ -332,12 +360,14 @@ std::vector<float> Renderer::read_lines_hdr() {
 }
 
 std::vector<float> Renderer::read_picture_hdr() {
-    return read_hdr(impl_->last_picture ? *impl_->last_picture : impl_->targets.lines);
+    const gl::Texture2D* picture = impl_->history.picture();
+    return read_hdr(picture ? *picture : impl_->targets.lines);
 }
 
 std::vector<glm::ivec2> Renderer::read_lit_tiles() {
     const Targets& t = impl_->targets;
-    if (!t.tiles_valid || !t.lit_tiles) return {};
+    // Only when the last frame drawn built it (FrameHistory::frame_writes).
+    if (!impl_->history.frame_writes().has(Resource::tile_list) || !t.lit_tiles) return {};
     const std::size_t capacity =
         static_cast<std::size_t>(t.lit_tiles.width()) * t.lit_tiles.height();
     std::vector<GLuint> words(4 + capacity);

@@ -1,10 +1,12 @@
 #pragma once
 // The offscreen images one frame renders into.
 #include <array>
+#include <glm/vec2.hpp>
 #include <vector>
 
 #include "gl/buffer.h"
 #include "gl/framebuffer.h"
+#include "render/frame_resources.h"
 #include "render/settings.h"
 
 namespace bz::render {
@@ -18,12 +20,16 @@ inline constexpr int kScreenTileSize = 32;
 inline constexpr int kLitTileSize = 16;
 static_assert(kLitTileSize % static_cast<int>(BloomResolution::quarter) == 0);
 
+// The images of one frame, each allocated only when the frame's pass list names it
+// (frame_resources.h: `allocated`); what outlives the frame is in FrameHistory. No pass
+// records here what another did: a pass asks the frame (FrameResources) or the history.
 struct Targets {
     int width = 0;
     int height = 0;
+    ResourceSet allocated;  // what make_targets was asked for
     gl::Texture2D depth;    // prepass depth (32F reversed-Z or 24-bit)
     gl::Texture2D lines;    // HDR lines + HUD, RGBA16F, GL_MAX blended
-    gl::Texture2D bloom_a;  // bloom ping-pong at the bloom resolution
+    gl::Texture2D bloom_a;  // Gaussian bloom ping-pong at the bloom resolution
     gl::Texture2D bloom_b;
     gl::Texture2D
         bloom_out;  // the finished bloom, RGBA8 sqrt-encoded (shaders/beam/bloom_encoding.glsl)
@@ -46,18 +52,6 @@ struct Targets {
     // BloomKind::mip_chain: level 0 at the bloom resolution, each next one half as large.
     std::vector<gl::Texture2D> bloom_mips;
     std::vector<gl::Framebuffer> bloom_mip_fbos;
-    // Phosphor persistence: the picture (RGBA16F, alpha = age for the power law), updated in
-    // place by the composite, which loads each pixel's own texel and stores the new value only
-    // where it changed. Only when BeamSettings::phosphor is on.
-    gl::Texture2D phosphor;
-    // Which lit tiles of the picture hold light (R8UI, like lit_tiles): read by tile_list.comp
-    // (those must be decayed this frame), then cleared and marked again by the composite.
-    gl::Texture2D picture_lit;
-    // Last frame's finished bloom (like bloom_out, which it swaps with each frame): the glow
-    // persists with the phosphor (shaders/beam/glow_persistence.glsl).
-    gl::Texture2D bloom_last;
-    gl::Framebuffer bloom_last_fbo;
-    bool glow_history_valid = true;  // false after a phosphor frame drawn without bloom
     // Sparse composite (pass_tiles.cpp, shaders/beam/lit_tiles.glsl): the lit-tile marks (R8UI,
     // one texel per kLitTileSize square), cleared by the bloom, marked by its first downsample
     // (beam light) and its last step (glow); and the list of tiles to shade that tile_list.comp
@@ -66,16 +60,28 @@ struct Targets {
     gl::Texture2D lit_tiles;
     gl::Buffer tile_list;
     // The screen tiles the beam lights (R8UI, like `tiles`): cleared by the line pass, marked by
-    // the line and HUD fragments (shaders/beam/beam_tiles.glsl), and valid until the bloom's
-    // first downsample has read them (a frame whose lines come from elsewhere, the image-space
-    // outline, leaves them invalid: the downsample then reads every pixel).
+    // the line and HUD fragments (shaders/beam/beam_tiles.glsl). The bloom's first downsample
+    // reads only under them when a pass of its frame wrote them (FrameResources; a frame whose
+    // lines come from elsewhere, the image-space outline, writes none: it then reads every
+    // pixel).
     gl::Texture2D beam_tiles;
-    bool beam_tiles_valid = false;
-    bool tiles_valid = false;  // the list describes the current bloom (pass_tiles ran on it)
     // The bloom's first level.
     gl::Framebuffer first_down_fbo;
 };
 
-Targets make_targets(int width, int height, const RenderSettings& settings);
+// The bloom resolution's size of a `width` x `height` frame.
+glm::ivec2 bloom_size(int width, int height, const RenderSettings& settings);
+
+// The images `needed` names (Resource::target: the output image); the rest stay empty.
+Targets make_targets(int width, int height, const RenderSettings& settings, ResourceSet needed);
+// The same, keeping the images `old` (made at the same size and settings) already holds: a
+// frame that needs more than the last keeps what the last one wrote.
+Targets grow_targets(Targets&& old, int width, int height, const RenderSettings& settings,
+                     ResourceSet needed);
+
+// The bytes of GPU memory the targets hold (texels and buffers, as their formats store them
+// uncompressed), for the measurement of what allocation from the pass list saves.
+std::size_t allocated_bytes(const Targets& targets);
+std::size_t texture_bytes(const gl::Texture2D& texture);
 
 }  // namespace bz::render

@@ -56,6 +56,9 @@ struct FrameList {
     // NDC y (= HUD units) above which the scene's lines are not drawn: the play HUD's band,
     // as the 1980 cabinet's periscope view ends under its radar strip. 1: the whole screen.
     float view_top = 1.0f;
+    // The picture has no past: the camera jumped, or the level was (re)loaded. The renderer
+    // forgets the view's history (phosphor trails, glow) before drawing it.
+    bool cut = false;
 };
 
 }  // namespace bz::scene

@@ -20,9 +20,8 @@ bool marks_tiles(const PassContext& ctx) {
 void first_downsample(const PassContext& ctx, const gl::Texture2D& source, float threshold) {
     Targets& t = ctx.targets;
     const bool mark = marks_tiles(ctx);
-    const bool sparse = t.beam_tiles_valid && mark;
-    t.beam_tiles_valid = false;  // read once: the next frame's line pass marks afresh
-    t.tiles_valid = false;       // the list is built again from this bloom's marks
+    // The beam's tile marks, where this frame's line pass made them (not the image outline's).
+    const bool sparse = frame_wrote(ctx, Resource::beam_tiles) && mark;
     if (mark) glClearTexImage(t.lit_tiles.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_BYTE, nullptr);
     t.first_down_fbo.bind();
     const gl::Program& down = sparse ? ctx.programs.bloom_down_tiles : ctx.programs.bloom_down;
@@ -53,8 +52,8 @@ const gl::Program& last_step(const PassContext& ctx, const gl::Program& plain,
     glow.use();
     // A history from before a frame without bloom is stale: start from black.
     glow.set("u_glow_sqrt_factor",
-             ctx.targets.glow_history_valid ? std::sqrt(phosphor->glow_factor) : 0.0f);
-    ctx.targets.bloom_last.bind(kTextureUnitGlowLast);
+             ctx.history.holds(Resource::glow) ? std::sqrt(phosphor->glow_factor) : 0.0f);
+    ctx.history.glow.bind(kTextureUnitGlowLast);
     return glow;
 }
 
@@ -155,15 +154,14 @@ void pass_bloom(const PassContext& ctx, const gl::Texture2D& source, const Phosp
         // Last frame's finished bloom becomes the glow history; this frame's is written over
         // the one before it.
         Targets& t = ctx.targets;
-        std::swap(t.bloom_out, t.bloom_last);
-        std::swap(t.bloom_out_fbo, t.bloom_last_fbo);
+        std::swap(t.bloom_out, ctx.history.glow);
+        std::swap(t.bloom_out_fbo, ctx.history.glow_fbo);
     }
     if (ctx.settings.beam.bloom == BloomKind::mip_chain && !ctx.targets.bloom_mips.empty()) {
         mip_chain_bloom(ctx, source, phosphor);
     } else {
         gaussian_bloom(ctx, source, phosphor);
     }
-    if (phosphor) ctx.targets.glow_history_valid = true;
 }
 
 }  // namespace bz::render

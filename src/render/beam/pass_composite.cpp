@@ -8,15 +8,17 @@ namespace bz::render {
 // is what an unlit pixel composites to exactly, and only the listed tiles are shaded (one
 // indirect draw); on llvmpipe a full-screen pass costs per pixel even where it writes black.
 // Reads: the picture, Targets::bloom_out, sparse Targets::tile_list; with the phosphor
-// Targets::phosphor. Writes: the target; with the phosphor Targets::phosphor (in place) and
-// Targets::picture_lit (cleared, then marked).
+// FrameHistory::phosphor. Writes: the target; with the phosphor FrameHistory::phosphor (in
+// place) and FrameHistory::picture_lit (cleared, then marked).
 // With the phosphor it also updates the picture (phosphor.glsl) in place: each invocation loads
 // its own pixel's texel and stores it only where the value changed, so there is no hazard
 // between invocations and a dark or unchanged pixel costs no store.
 void pass_composite(const PassContext& ctx, const gl::Texture2D& picture, bool bloom,
                     GLuint target_fbo, int width, int height, const PhosphorStep* phosphor) {
     const Targets& t = ctx.targets;
-    const bool sparse = bloom && t.tiles_valid && ctx.settings.sparse_composite;
+    // Sparse where this frame's list (or the held frame's) built the list of lit tiles.
+    const bool sparse = bloom && t.lit_tiles && frame_wrote(ctx, Resource::tile_list) &&
+                        ctx.settings.sparse_composite;
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, target_fbo);
     glViewport(0, 0, width, height);
     gl::apply(gl::PipelineState{});
@@ -36,12 +38,12 @@ void pass_composite(const PassContext& ctx, const gl::Texture2D& picture, bool b
     t.bloom_out.bind(kTextureUnitBloom);
     if (phosphor) {
         set_phosphor_uniforms(p, *phosphor);
-        glBindImageTexture(kImageUnitPicture, t.phosphor.id(), 0, GL_FALSE, 0, GL_READ_WRITE,
-                           GL_RGBA16F);
+        glBindImageTexture(kImageUnitPicture, ctx.history.phosphor.id(), 0, GL_FALSE, 0,
+                           GL_READ_WRITE, GL_RGBA16F);
         // tile_list.comp has read last frame's marks; this frame's composite marks them afresh.
-        glClearTexImage(t.picture_lit.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_BYTE, nullptr);
-        glBindImageTexture(kImageUnitPictureLit, t.picture_lit.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
-                           GL_R8UI);
+        const gl::Texture2D& lit = ctx.history.picture_lit;
+        glClearTexImage(lit.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_BYTE, nullptr);
+        glBindImageTexture(kImageUnitPictureLit, lit.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R8UI);
     }
     ctx.empty_vao.bind();
     if (!sparse) {

@@ -14,7 +14,7 @@ constexpr double kMaxDtSeconds = 0.25;
 }  // namespace
 
 // Phosphor persistence (shaders/beam/phosphor.glsl): the composite reads this frame's beam image
-// and updates the picture (Targets::phosphor) in place, which is then the frame's picture
+// and updates the picture (FrameHistory::phosphor) in place, which is then the frame's picture
 // (held frames show it, tests read it). The glow fades alike (pass_bloom.cpp).
 PhosphorStep phosphor_step(const PassContext& ctx, double dt_seconds) {
     const BeamSettings& b = ctx.settings.beam;

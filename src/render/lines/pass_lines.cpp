@@ -79,7 +79,6 @@ void begin_line_target(const PassContext& ctx, const gl::Program& program, bool 
         Targets& t = ctx.targets;
         glClearTexImage(t.beam_tiles.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_BYTE, nullptr);
         bind_beam_tiles(t);
-        t.beam_tiles_valid = true;
     }
     if (!mask_mode && ctx.view_rows > 0 && ctx.view_rows < ctx.targets.height) {
         state.scissor_rows = ctx.view_rows;  // after the clear, which must cover every row
