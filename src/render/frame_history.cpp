@@ -4,10 +4,27 @@
 
 namespace bz::render {
 
+namespace {
+
+// The phosphor's images are allocated together, for any of them.
+bool names_phosphor_images(ResourceSet set) {
+    return set.has(Resource::phosphor) || set.has(Resource::picture_lit) || set.has(Resource::glow);
+}
+
+}  // namespace
+
+bool FrameHistory::has_images_for(ResourceSet needed) const {
+    return !names_phosphor_images(needed) || static_cast<bool>(phosphor);
+}
+
+bool FrameHistory::has_images_beyond(ResourceSet needed) const {
+    return static_cast<bool>(phosphor) && !names_phosphor_images(needed);
+}
+
 FrameHistory FrameHistory::make(int width, int height, int bloom_w, int bloom_h,
-                                const RenderSettings& s) {
+                                ResourceSet needed) {
     FrameHistory h;
-    if (s.beam.phosphor == PhosphorDecay::off) return h;
+    if (!names_phosphor_images(needed)) return h;
     const int lit_x = (width + kLitTileSize - 1) / kLitTileSize;
     const int lit_y = (height + kLitTileSize - 1) / kLitTileSize;
     h.phosphor = gl::Texture2D(width, height, GL_RGBA16F, gl::Filter::linear);

@@ -25,11 +25,14 @@ enum class HistoryCut { resize, style_change, settings_change, camera_cut, no_hi
 
 class FrameHistory {
   public:
-    // The phosphor's images and the glow's second bloom image, only when the phosphor is on
-    // (BeamSettings::phosphor), at `width` x `height` and the bloom resolution `bloom_w` x
-    // `bloom_h`. Everything starts black, with no tile lit.
-    static FrameHistory make(int width, int height, int bloom_w, int bloom_h,
-                             const RenderSettings& settings);
+    // The phosphor's images and the glow's second bloom image, when `needed` (a frame's pass
+    // list, frame_passes.h) names any of them, at `width` x `height` and the bloom resolution
+    // `bloom_w` x `bloom_h`. Everything starts black, with no tile lit.
+    static FrameHistory make(int width, int height, int bloom_w, int bloom_h, ResourceSet needed);
+    // Whether it has the images of every history resource `needed` names.
+    bool has_images_for(ResourceSet needed) const;
+    // Whether it has images that no resource of `needed` names.
+    bool has_images_beyond(ResourceSet needed) const;
 
     // What the history holds now: history resources (frame_resources.h) a frame wrote and no
     // cut has forgotten since.

@@ -75,19 +75,25 @@ struct Renderer::Impl {
     // list names it (ensure_targets), nothing kept.
     void remake(HistoryCut why) {
         targets = make_targets(width, height, settings, {});
-        const glm::ivec2 b = bloom_size(width, height, settings);
-        history = FrameHistory::make(width, height, b.x, b.y, settings);
+        history = FrameHistory{};
         history.forget(why);
     }
 
     // The targets a list needs, allocated from it: grown (keeping what is there) when it needs
     // more; after a style change, made afresh so that images only the old style used go.
+    // The history's images likewise: made (blank) when a list first needs them, and dropped
+    // after a style change (which forgot them) to one that does not.
     void ensure_targets(ResourceSet needed, bool style_changed) {
         if (style_changed && !needed.contains(targets.allocated)) {
             targets = make_targets(width, height, settings, needed);
         } else if (!targets.allocated.contains(needed)) {
             targets = grow_targets(std::move(targets), width, height, settings,
                                    targets.allocated | needed);
+        }
+        if (!history.has_images_for(needed) ||
+            (style_changed && history.has_images_beyond(needed))) {
+            const glm::ivec2 b = bloom_size(width, height, settings);
+            history = FrameHistory::make(width, height, b.x, b.y, needed);
         }
     }
 
@@ -433,6 +439,17 @@ gl::TimingMethod Renderer::timing_method() const {
 }
 std::size_t Renderer::gpu_mesh_uploads() const {
     return impl_->gpu_meshes.uploads();
+}
+ResourceSet Renderer::allocated_resources() const {
+    return impl_->targets.allocated;
+}
+std::size_t Renderer::allocated_bytes() const {
+    const FrameHistory& h = impl_->history;
+    return render::allocated_bytes(impl_->targets) + texture_bytes(h.phosphor) +
+           texture_bytes(h.picture_lit) + texture_bytes(h.glow);
+}
+ResourceSet Renderer::history_held() const {
+    return impl_->history.held();
 }
 const FrameStats& Renderer::stats() const {
     return impl_->stats;

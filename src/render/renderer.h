@@ -8,6 +8,7 @@
 
 #include "gl/pass_timer.h"
 #include "gl/texture.h"
+#include "render/frame_resources.h"
 #include "render/gpu_scene/triangle_culling.h"
 #include "render/lines/edge_culling.h"
 #include "render/settings.h"
@@ -90,6 +91,13 @@ class Renderer {
     // GPU meshes uploaded so far: one per model used, plus simplified ones for distance LOD.
     std::size_t gpu_mesh_uploads() const;
     const FrameStats& stats() const;
+    // The images the frames drawn so far had allocated (from their pass lists, frame_passes.h;
+    // a style change or a cut of the targets starts again), and the bytes they and the view's
+    // history hold.
+    ResourceSet allocated_resources() const;
+    std::size_t allocated_bytes() const;
+    // What the view's history holds now (frame_history.h).
+    ResourceSet history_held() const;
     int width() const;
     int height() const;
 
