@@ -317,9 +317,13 @@ void Game::tick(const TickCommand& command) {
     }
 }
 
+bool Game::shows_live_world() const {
+    return world_ && (screen_ == Screen::playing || screen_ == Screen::paused ||
+                      screen_ == Screen::game_over);
+}
+
 scene::FrameList Game::frame(double alpha, double aspect) const {
-    const bool live = world_ && (screen_ == Screen::playing || screen_ == Screen::paused ||
-                                 screen_ == Screen::game_over);
+    const bool live = shows_live_world();
     const World& shown = live ? *world_ : *demo_;
     const double a = screen_ == Screen::paused ? 1.0 : alpha;
     scene::FrameList f = shown.interpolated_frame(a, options_.fov_y_deg);

@@ -86,6 +86,9 @@ class Game {
 
     // What to draw, interpolated `alpha` of the way from the previous tick to the last.
     scene::FrameList frame(double alpha, double aspect) const;
+    // Whether frame() shows the game's own world (playing, paused, game over), not the demo's:
+    // when it switches, the camera cuts to another tank.
+    bool shows_live_world() const;
     const scene::MeshLibrary& meshes() const { return assets_->meshes(); }
     // The last tick's sounds.
     const SoundFrame& sounds() const { return sounds_; }

@@ -50,18 +50,22 @@ TEST(Game, AttractStartPauseResume) {
     EXPECT_EQ(g.screen(), Screen::attract);
     scene::FrameList f = g.frame(0.5, 16.0 / 9.0);
     EXPECT_FALSE(f.items.empty()) << "the demo plays behind the title";
+    EXPECT_FALSE(g.shows_live_world()) << "the demo's tank, not the player's";
     EXPECT_FALSE(f.hud.empty());
     EXPECT_EQ(g.sounds().engine, 0.0f);
 
     tap(g, &TickCommand::start);
     ASSERT_EQ(g.screen(), Screen::playing);
     ASSERT_NE(g.world(), nullptr);
+    // The camera cuts to the player's tank (the play session marks that frame a cut).
+    EXPECT_TRUE(g.shows_live_world());
     for (int i = 0; i < 30; ++i) g.tick(test::drive(1, 1));
     EXPECT_GT(g.sounds().engine, 0.5f);
     const std::uint64_t tick = g.world()->state().tick;
 
     tap(g, &TickCommand::pause);
     ASSERT_EQ(g.screen(), Screen::paused);
+    EXPECT_TRUE(g.shows_live_world()) << "paused: the same camera, no cut";
     for (int i = 0; i < 100; ++i) g.tick(test::drive(1, 1, i % 2 == 0));
     EXPECT_EQ(g.world()->state().tick, tick) << "nothing moves while paused";
     EXPECT_EQ(g.sounds().engine, 0.0f);

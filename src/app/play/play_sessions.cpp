@@ -162,8 +162,13 @@ class GameSession final : public PlaySession {
     }
 
     void update(const platform::FlyControls&, double) override {}
+    // A frame after a level reload, or whose camera cut between the demo's tank and the
+    // player's, has no past: the renderer forgets the phosphor trails (FrameList::cut).
     scene::FrameList frame(double alpha, double aspect) override {
-        return game_->frame(alpha, aspect);
+        scene::FrameList f = game_->frame(alpha, aspect);
+        const bool live = game_->shows_live_world();
+        f.cut = std::exchange(cut_, false) || live != std::exchange(shown_live_, live);
+        return f;
     }
     const scene::MeshLibrary& meshes() const override { return game_->meshes(); }
 
@@ -194,6 +199,7 @@ class GameSession final : public PlaySession {
         }
         // The game goes on in the edited level: score, lives, screen and the tank stay.
         const game::ReloadReport r = game_->reload_level(lvl);
+        cut_ = true;
         if (r.ended_recording) end_recording(*r.ended_recording);
         // Edited rules make another table (high scores are kept per level and rules).
         if (const game::LevelKey key = key_of(lvl); key != key_) {
@@ -302,6 +308,8 @@ class GameSession final : public PlaySession {
     std::vector<game::SoundEvent> sounds_;
     float engine_ = 0.0f;
     bool pause_ = false, start_ = false, back_ = false;
+    // The next frame cuts (a level reload); whether the last frame showed the live world.
+    bool cut_ = false, shown_live_ = false;
     bool replay_reported_ = false;
     bool save_failed_ = false;
     game::HighScoreBook book_;  // every level's table; the game shows key_'s
