@@ -21,9 +21,10 @@ bool FrameHistory::has_images_beyond(ResourceSet needed) const {
     return static_cast<bool>(phosphor) && !names_phosphor_images(needed);
 }
 
-FrameHistory FrameHistory::make(int width, int height, int bloom_w, int bloom_h,
-                                ResourceSet needed) {
+FrameHistory FrameHistory::make(int width, int height, int bloom_w, int bloom_h, ResourceSet needed,
+                                HistoryCut why) {
     FrameHistory h;
+    h.last_cut_ = why;
     if (!names_phosphor_images(needed)) return h;
     const int lit_x = (width + kLitTileSize - 1) / kLitTileSize;
     const int lit_y = (height + kLitTileSize - 1) / kLitTileSize;
@@ -37,11 +38,13 @@ FrameHistory FrameHistory::make(int width, int height, int bloom_w, int bloom_h,
     return h;
 }
 
-void FrameHistory::forget(HistoryCut) {
+void FrameHistory::forget(HistoryCut why) {
+    if (blank_ && held_.empty() && frame_writes_.empty()) return;  // nothing to forget
+    last_cut_ = why;
     held_ = {};
     frame_writes_ = {};
     picture_ = nullptr;
-    if (blank_) return;  // nothing drew into it since it was last cleared
+    if (blank_) return;  // nothing drew into its images since they were last cleared
     blank_ = true;
     if (phosphor) glClearTexImage(phosphor.id(), 0, GL_RGBA, GL_FLOAT, nullptr);
     if (picture_lit)

@@ -20,15 +20,18 @@
 
 namespace bz::render {
 
-// Why a view's history is forgotten (logged by nothing; named for the rules above and tests).
-enum class HistoryCut { resize, style_change, settings_change, camera_cut, no_history };
+// Why a view's history was last forgotten: the rules above, and no_past for a frame drawn
+// after one that left no beam picture (a filled style's).
+enum class HistoryCut { resize, style_change, settings_change, camera_cut, no_history, no_past };
 
 class FrameHistory {
   public:
     // The phosphor's images and the glow's second bloom image, when `needed` (a frame's pass
     // list, frame_passes.h) names any of them, at `width` x `height` and the bloom resolution
-    // `bloom_w` x `bloom_h`. Everything starts black, with no tile lit.
-    static FrameHistory make(int width, int height, int bloom_w, int bloom_h, ResourceSet needed);
+    // `bloom_w` x `bloom_h`. Everything starts black, with no tile lit; it holds nothing, as
+    // forgotten for `why`.
+    static FrameHistory make(int width, int height, int bloom_w, int bloom_h, ResourceSet needed,
+                             HistoryCut why);
     // Whether it has the images of every history resource `needed` names.
     bool has_images_for(ResourceSet needed) const;
     // Whether it has images that no resource of `needed` names.
@@ -43,6 +46,8 @@ class FrameHistory {
     ResourceSet frame_writes() const { return frame_writes_; }
     // Forgets everything (the rules above).
     void forget(HistoryCut why);
+    // The reason of the last forget() that forgot something (tests read it).
+    HistoryCut last_cut() const { return last_cut_; }
     // After a frame: it holds what that frame's passes wrote of it, `picture` (the lines
     // target or the phosphor picture; null for a frame without a beam picture) shown at
     // `time_s`.
@@ -70,6 +75,7 @@ class FrameHistory {
     ResourceSet frame_writes_;
     const gl::Texture2D* picture_ = nullptr;
     double time_s_ = 0.0;
+    HistoryCut last_cut_ = HistoryCut::resize;
     // The phosphor images hold nothing (cleared, or new): forget() need not clear them again.
     bool blank_ = true;
 };

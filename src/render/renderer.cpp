@@ -75,8 +75,7 @@ struct Renderer::Impl {
     // list names it (ensure_targets), nothing kept.
     void remake(HistoryCut why) {
         targets = make_targets(width, height, settings, {});
-        history = FrameHistory{};
-        history.forget(why);
+        history = FrameHistory::make(width, height, 1, 1, {}, why);
     }
 
     // The targets a list needs, allocated from it: grown (keeping what is there) when it needs
@@ -93,7 +92,7 @@ struct Renderer::Impl {
         if (!history.has_images_for(needed) ||
             (style_changed && history.has_images_beyond(needed))) {
             const glm::ivec2 b = bloom_size(width, height, settings);
-            history = FrameHistory::make(width, height, b.x, b.y, needed);
+            history = FrameHistory::make(width, height, b.x, b.y, needed, history.last_cut());
         }
     }
 
@@ -305,7 +304,7 @@ void Renderer::render(const scene::FrameList& frame, const scene::MeshLibrary& m
     // A picture without a past (the history holds none: new targets, a cut, a frame with no
     // beam picture): the phosphor and the glow start from black, so nothing an earlier frame
     // lit can linger in it.
-    if (!m.history.picture()) m.history.forget(HistoryCut::no_history);
+    if (!m.history.picture()) m.history.forget(HistoryCut::no_past);
     const gl::Texture2D* past = m.history.picture();
     FramePicture picture{
         &m.targets.lines, past ? frame.time_s - m.history.time_s() : 0.0, false, {}};
@@ -450,6 +449,9 @@ std::size_t Renderer::allocated_bytes() const {
 }
 ResourceSet Renderer::history_held() const {
     return impl_->history.held();
+}
+HistoryCut Renderer::history_last_cut() const {
+    return impl_->history.last_cut();
 }
 const FrameStats& Renderer::stats() const {
     return impl_->stats;

@@ -8,6 +8,7 @@
 
 #include "gl/pass_timer.h"
 #include "gl/texture.h"
+#include "render/frame_history.h"
 #include "render/frame_resources.h"
 #include "render/gpu_scene/triangle_culling.h"
 #include "render/lines/edge_culling.h"
@@ -96,8 +97,9 @@ class Renderer {
     // history hold.
     ResourceSet allocated_resources() const;
     std::size_t allocated_bytes() const;
-    // What the view's history holds now (frame_history.h).
+    // What the view's history holds now, and why it last forgot (frame_history.h).
     ResourceSet history_held() const;
+    HistoryCut history_last_cut() const;
     int width() const;
     int height() const;
 

@@ -97,9 +97,11 @@ TEST_F(FrameStateTest, TheHistoryIsForgottenByItsRules) {
     frame.cut = true;
     draw(Style::vector);
     frame.cut = false;
+    EXPECT_EQ(renderer->history_last_cut(), bz::render::HistoryCut::camera_cut);
     EXPECT_EQ(renderer->history_held(), kept);
     // A filled style writes no beam history: nothing held after its frame.
     draw(Style::toon);
+    EXPECT_EQ(renderer->history_last_cut(), bz::render::HistoryCut::style_change);
     EXPECT_TRUE(renderer->history_held().empty());
     // Back to a beam style: its first frame has no past, and its images are made again.
     draw(Style::vector);
@@ -108,6 +110,16 @@ TEST_F(FrameStateTest, TheHistoryIsForgottenByItsRules) {
     // Resize: new targets, nothing kept.
     renderer->resize(kWidth / 2, kHeight / 2);
     EXPECT_TRUE(renderer->history_held().empty());
+    // keep_history off (--edit): every frame forgets, and keeps nothing a later frame reads.
+    settings.keep_history = false;
+    renderer->set_settings(settings);
+    draw(Style::vector);
+    draw(Style::vector);
+    EXPECT_EQ(renderer->history_last_cut(), bz::render::HistoryCut::no_history);
+    settings.keep_history = true;
+    renderer->set_settings(settings);
+    renderer->resize(kWidth / 3, kHeight / 3);
+    EXPECT_EQ(renderer->history_last_cut(), bz::render::HistoryCut::resize);
     EXPECT_TRUE(renderer->allocated_resources().empty());
     draw(Style::vector);
     EXPECT_EQ(renderer->history_held(), kept);
