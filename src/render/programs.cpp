@@ -125,6 +125,10 @@ Programs load_programs(const RenderSettings& settings) {
     p.shrunk_depth = program({stage(GL_VERTEX_SHADER, "styles/fill.vert")}, {"SHRINK 1"});
     p.ink_composite = program({stage(GL_VERTEX_SHADER, "fullscreen.vert"),
                                stage(GL_FRAGMENT_SHADER, "styles/ink_composite.frag")});
+    // Over the screen tiles the HUD lit, grown by its halo (pass_ink_composite.cpp).
+    p.ink_composite_tiles = program({stage(GL_VERTEX_SHADER, "styles/hud_tiles.vert"),
+                                     stage(GL_FRAGMENT_SHADER, "styles/ink_composite.frag")},
+                                    {tile_size});
     const auto stroke = [&](const char* frag, std::vector<std::string> defines) {
         return program(
             {stage(GL_VERTEX_SHADER, "styles/stroke.vert"), stage(GL_FRAGMENT_SHADER, frag)},

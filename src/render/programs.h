@@ -41,6 +41,7 @@ struct Programs {
     gl::Program fill_paper;
     gl::Program shrunk_depth;
     gl::Program ink_composite;
+    gl::Program ink_composite_tiles;  // the same over the HUD's tiles
     // Strokes on the edge buffer: stroke.vert with each look's fragment stage.
     gl::Program outline;
     gl::Program sketch;

@@ -105,6 +105,7 @@ std::vector<std::pair<std::string, const bz::gl::Program*>> every_program(
         {"fill_paper", &p.fill_paper},
         {"shrunk_depth", &p.shrunk_depth},
         {"ink_composite", &p.ink_composite},
+        {"ink_composite_tiles", &p.ink_composite_tiles},
         {"outline", &p.outline},
         {"sketch", &p.sketch},
         {"sketch_mask", &p.sketch_mask},

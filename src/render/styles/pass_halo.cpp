@@ -35,6 +35,8 @@ void pass_halo(const PassContext& ctx) {
     gl::PipelineState apply_state;
     apply_state.blend = gl::Blend::alpha;
     gl::apply(apply_state);
+    // The canvas stays opaque: the composite copies it to the target as it is.
+    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
     const gl::Program& lay = ctx.programs.halo_apply;
     lay.use();
     set_spine_test_uniforms(lay, ctx);
