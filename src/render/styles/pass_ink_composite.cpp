@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cmath>
 
 #include "render/passes.h"
@@ -6,12 +7,19 @@ namespace bz::render {
 
 namespace {
 
-// The screen tiles (kScreenTileSize) past a HUD quad's own that the ink composite may change:
-// its paper halo samples the lines target up to halo_px away, bilinearly (one pixel more).
+// How far past a HUD quad every tile that holds a pixel within that distance of it is already
+// marked, in pixels: shaders/beam/beam_tiles.glsl marks, around points at most half a tile
+// apart along the line, every tile within half_width + half a tile + 1 px, so a pixel within
+// half_width + R of the line lies in a marked tile while R <= a quarter tile + 1 px.
+constexpr float kMarkSlackPx = static_cast<float>(kScreenTileSize) / 4.0f + 1.0f;
+
+// The screen tiles past the marked ones that the ink composite may change: its paper halo
+// samples the lines target up to halo_px away, bilinearly (one pixel more). 0 for the usual
+// halo of a few pixels; InkCompositeTilesTest holds the slack to what the marks give.
 int halo_reach_tiles(const HudTheme& hud) {
     if (!hud.ink) return 0;
-    const float reach_px = hud.halo_px + 1.0f;
-    return static_cast<int>(std::ceil(reach_px / static_cast<float>(kScreenTileSize)));
+    const float past_marks_px = std::max(0.0f, hud.halo_px + 1.0f - kMarkSlackPx);
+    return static_cast<int>(std::ceil(past_marks_px / static_cast<float>(kScreenTileSize)));
 }
 
 void set_theme_uniforms(const gl::Program& p, const PassContext& ctx) {
@@ -31,7 +39,7 @@ void set_theme_uniforms(const gl::Program& p, const PassContext& ctx) {
 // at 1280x720 when run on every pixel (docs/measurements/styles-sweep.md). So the canvas is
 // copied to the target whole (a blit), and the shader runs only over the screen tiles the
 // HUD pass marked (Targets::beam_tiles, cleared by pass_fill; beam lines on a filled style
-// mark theirs too, pass_lines), grown by the halo's reach.
+// mark theirs too, pass_lines), grown by the halo's reach past the marks' own slack.
 // RenderSettings::sparse_composite off runs it on every pixel: the same picture, to compare.
 void pass_ink_composite(const PassContext& ctx) {
     const int w = ctx.targets.width, h = ctx.targets.height;

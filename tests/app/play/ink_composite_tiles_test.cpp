@@ -67,6 +67,14 @@ void add_edge_lines(std::vector<bz::scene::HudLine>& hud) {
     hud.push_back({at(64, 400), at(64, 400), red, 1.0f});    // a dot on a tile corner
     hud.push_back({at(95, 300), at(97, 300), red, 0.05f});   // faint, at a tile's edge
     hud.push_back({at(300, 500), at(700, 650), red, 0.7f});  // diagonal across many tiles
+    // Short strokes from 10 px before to 9 px past a tile's edge (32 px tiles), across and
+    // along: their halo reaches into the next tile by every amount the marks must cover.
+    for (int i = 0; i < 20; ++i) {
+        const float x = static_cast<float>(64 * i + 32 + (i - 10));
+        hud.push_back({at(x, 660), at(x, 668), red, 1.0f});
+        const float y = static_cast<float>(32 * (i % 10) + 32 + (i - 10));
+        hud.push_back({at(900 + 16 * (i / 10), y), at(906 + 16 * (i / 10), y), red, 1.0f});
+    }
 }
 
 using InkCompositeTilesTest = bz::test::GlTest;
