@@ -49,6 +49,7 @@ struct Programs {
     gl::Program halo_glow;
     gl::Program halo;
     gl::Program halo_apply;
+    gl::Program halo_apply_tiles;  // the same over the tiles the halo marked
 };
 
 // Throws UserError naming file:line:col of every compile error. The bloom kernel is baked

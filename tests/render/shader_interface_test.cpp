@@ -112,6 +112,7 @@ std::vector<std::pair<std::string, const bz::gl::Program*>> every_program(
         {"halo_glow", &p.halo_glow},
         {"halo", &p.halo},
         {"halo_apply", &p.halo_apply},
+        {"halo_apply_tiles", &p.halo_apply_tiles},
     };
     return all;
 }

@@ -4,7 +4,8 @@
 // (RenderSettings::sparse_composite off): a real game frame at 1280x720 with the play HUD, a
 // notice and the frame-rate footer, in every filled style, and with the HUD in the tile
 // corners and screen edges, where a tile grown too little would cut a halo off. Frames go to
-// build/test-out/ink_tiles_<style>.png.
+// build/test-out/ink_tiles_<style>.png. The halo style's paper layer (pass_halo.cpp) runs
+// only over the tiles its halo quads marked, under the same switch: it is compared too.
 #include <gtest/gtest.h>
 
 #include <algorithm>

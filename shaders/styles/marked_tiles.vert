@@ -1,11 +1,11 @@
 #version 450 core
-// The ink composite's geometry (pass_ink_composite.cpp): the canvas is already on the target,
-// so only the pixels the HUD or its halo may change are shaded. One instance per screen tile:
-// a quad over every tile within u_reach tiles of one the HUD lit (its marks, beam_tiles.glsl),
+// The filled styles' passes that shade only where something was drawn (pass_ink_composite.cpp:
+// the HUD's ink and halo; pass_halo.cpp: the halo laid over the canvas). One instance per
+// screen tile: a quad over every tile within u_reach tiles of a marked one (beam_tiles.glsl),
 // a degenerate one, culled before rasterisation, over the rest.
 layout(binding = TEXTURE_UNIT_TILES) uniform usampler2D u_tiles;
 uniform ivec2 u_screen;
-uniform int u_reach;  // tiles: the halo's reach past the HUD's own quads
+uniform int u_reach;  // tiles: how far past the marked ones a pass may change pixels
 out vec2 v_uv;
 
 const ivec2 kCorners[6] = ivec2[](ivec2(0, 0), ivec2(1, 0), ivec2(0, 1), ivec2(0, 1), ivec2(1, 0), ivec2(1, 1));
