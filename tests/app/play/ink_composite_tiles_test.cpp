@@ -74,7 +74,8 @@ void add_edge_lines(std::vector<bz::scene::HudLine>& hud) {
         const float x = static_cast<float>(64 * i + 32 + (i - 10));
         hud.push_back({at(x, 660), at(x, 668), red, 1.0f});
         const float y = static_cast<float>(32 * (i % 10) + 32 + (i - 10));
-        hud.push_back({at(900 + 16 * (i / 10), y), at(906 + 16 * (i / 10), y), red, 1.0f});
+        const float x0 = static_cast<float>(900 + 16 * (i / 10));
+        hud.push_back({at(x0, y), at(x0 + 6.0f, y), red, 1.0f});
     }
 }
 
