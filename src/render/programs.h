@@ -41,6 +41,7 @@ struct Programs {
     gl::Program fill_paper;
     gl::Program shrunk_depth;
     gl::Program ink_composite;
+    gl::Program ink_composite_tiles;  // the same over the HUD's tiles
     // Strokes on the edge buffer: stroke.vert with each look's fragment stage.
     gl::Program outline;
     gl::Program sketch;
@@ -48,6 +49,7 @@ struct Programs {
     gl::Program halo_glow;
     gl::Program halo;
     gl::Program halo_apply;
+    gl::Program halo_apply_tiles;  // the same over the tiles the halo marked
 };
 
 // Throws UserError naming file:line:col of every compile error. The bloom kernel is baked

@@ -163,7 +163,8 @@ struct RenderSettings {
     // false: every frame starts without a past (phosphor and glow from black, no held frame),
     // so nothing trails whatever the beam look: the --edit viewer.
     bool keep_history = true;
-    // Composite only the screen tiles that bloom found lit (pass_tiles.cpp); false: every
+    // Composite only the screen tiles that bloom found lit (pass_tiles.cpp), and in the filled
+    // styles lay the HUD only over the tiles it lit (pass_ink_composite.cpp); false: every
     // pixel (the same picture, for comparing).
     bool sparse_composite = true;
 };

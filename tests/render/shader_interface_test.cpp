@@ -105,12 +105,14 @@ std::vector<std::pair<std::string, const bz::gl::Program*>> every_program(
         {"fill_paper", &p.fill_paper},
         {"shrunk_depth", &p.shrunk_depth},
         {"ink_composite", &p.ink_composite},
+        {"ink_composite_tiles", &p.ink_composite_tiles},
         {"outline", &p.outline},
         {"sketch", &p.sketch},
         {"sketch_mask", &p.sketch_mask},
         {"halo_glow", &p.halo_glow},
         {"halo", &p.halo},
         {"halo_apply", &p.halo_apply},
+        {"halo_apply_tiles", &p.halo_apply_tiles},
     };
     return all;
 }
