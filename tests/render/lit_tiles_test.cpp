@@ -137,6 +137,7 @@ TEST_F(LitTilesTest, GlowDilatesTheListByTheBloomsBilinearReachInBothLooks) {
         auto s = bz::render::preset("balanced");
         s.beam = bz::render::beam_look(look);
         s.beam.phosphor = bz::render::PhosphorDecay::off;
+        s.hud_glow = true;  // the analytic HUD lines stand for glowing beam lines
         bz::scene::MeshLibrary meshes;
         bz::render::Renderer r(s, kW, kH, bz::gl::TimingMethod::off);
         r.render(analytic_lines(0.0), meshes, bz::render::Renderer::kOffscreen);
