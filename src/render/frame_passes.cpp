@@ -152,11 +152,13 @@ std::vector<FramePass> frame_passes(const StyleDef& style, const RenderSettings&
             list.push_back({"prepass", pass_prepass});
             list.push_back({"lines", lines_counted});
         }
-        list.push_back({"hud", pass_hud});
-        if (style.bloom && settings.bloom_strength > 0.0f) {
-            list.push_back({"bloom", bloom});
-            if (settings.sparse_composite) list.push_back({"tiles", pass_tiles});
-        }
+        // The HUD after the bloom unless it glows: text and menus keep their contrast
+        // (pass_hud.cpp).
+        const bool bloom_on = style.bloom && settings.bloom_strength > 0.0f;
+        if (settings.hud_glow) list.push_back({"hud", pass_hud});
+        if (bloom_on) list.push_back({"bloom", bloom});
+        if (!settings.hud_glow) list.push_back({"hud", pass_hud});
+        if (bloom_on && settings.sparse_composite) list.push_back({"tiles", pass_tiles});
         list.push_back({"composite", composite});
         return list;
     }

@@ -76,6 +76,12 @@ Programs load_programs(const RenderSettings& settings) {
                 beam_tiles);
     // The passes that know where light is mark the composite's lit tiles (lit_tiles.glsl).
     const std::string lit_tile_size = "LIT_TILE_SIZE " + std::to_string(kLitTileSize);
+    // The HUD of the dark looks is drawn after the bloom (pass_hud.cpp): its lit fragments
+    // mark the composite's lit tiles.
+    p.hud_lit_tiles =
+        program({stage(GL_VERTEX_SHADER, "hud/hud.vert"), stage(GL_GEOMETRY_SHADER, "hud/hud.geom"),
+                 stage(GL_FRAGMENT_SHADER, "hud/hud.frag")},
+                {"LIT_TILES 1", lit_tile_size});
     p.bloom_down = program({stage(GL_VERTEX_SHADER, "fullscreen.vert"),
                             stage(GL_FRAGMENT_SHADER, "beam/bloom_down.frag")},
                            {"LIT_TILES 1", lit_tile_size});

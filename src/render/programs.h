@@ -17,6 +17,7 @@ struct Programs {
     gl::Program edge_quads;        // ... edge_quad.vert + lines.frag draw it
     gl::Program edge_quads_mask;   // ... with MASK_MODE
     gl::Program hud;
+    gl::Program hud_lit_tiles;  // ... marking the composite's lit tiles (drawn after the bloom)
     gl::Program bloom_down;
     gl::Program bloom_down_tiles;  // the first downsample under the beam's screen tiles only
     gl::Program bloom_blur;

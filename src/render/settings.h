@@ -167,6 +167,11 @@ struct RenderSettings {
     // styles lay the HUD only over the tiles it lit (pass_ink_composite.cpp); false: every
     // pixel (the same picture, for comparing).
     bool sparse_composite = true;
+    // true: the dark looks' HUD is drawn before the bloom and glows like the scene (and keeps
+    // the scene's beam width); false: after it, without glow, so that text keeps its contrast
+    // and menus leave no haze (render/beam/pass_hud.cpp). Tests that draw analytic screen
+    // lines as HUD lines to exercise the bloom set it.
+    bool hud_glow = false;
 };
 
 // "fast", "balanced" or "high"; throws UserError naming the valid ones otherwise.

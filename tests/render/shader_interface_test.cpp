@@ -84,6 +84,7 @@ std::vector<std::pair<std::string, const bz::gl::Program*>> every_program(
         {"edge_quads", &p.edge_quads},
         {"edge_quads_mask", &p.edge_quads_mask},
         {"hud", &p.hud},
+        {"hud_lit_tiles", &p.hud_lit_tiles},
         {"bloom_down", &p.bloom_down},
         {"bloom_down_tiles", &p.bloom_down_tiles},
         {"bloom_blur", &p.bloom_blur},
