@@ -10,6 +10,19 @@
 // LIT_TILE_SIZE (pixels) comes from render/targets.h.
 const int kLitTile = LIT_TILE_SIZE;
 
+// The list holds runs of lit tiles along a row (tile_list.comp), one quad each: on llvmpipe a
+// quad costs its setup and binning whatever its size, and a glow's tiles come in runs.
+// A run is packed in one word: first tile x (12 bits), y (12 bits), length - 1 (8 bits);
+// Renderer::read_lit_tiles unpacks the same way. A GL texture is at most 16384 pixels across,
+// 1024 tiles: x and y fit.
+const int kMaxTileRun = 256;
+uint encode_tile_run(ivec2 first, int length) {
+    return uint(first.x) | (uint(first.y) << 12) | (uint(length - 1) << 24);
+}
+ivec3 decode_tile_run(uint code) {  // x, y, length
+    return ivec3(int(code & 0xfffu), int((code >> 12) & 0xfffu), int(code >> 24) + 1);
+}
+
 #ifdef LIT_TILES
 layout(r8ui, binding = IMAGE_UNIT_LIT_TILES) uniform writeonly uimage2D u_lit_tiles;
 uniform bool u_mark_tiles;  // false: no mark image is bound (the every-pixel composite)

@@ -9,6 +9,10 @@ layout(triangle_strip, max_vertices = 4) out;
 in vec3 v_color[];
 in float v_intensity[];
 uniform vec2 u_viewport;
+// x: the least half-width (px), y: a gain. Drawn after the bloom on the dark looks, the HUD
+// gets no glow on its core; a wider, brighter beam keeps thin text and the radar legible
+// (pass_hud.cpp). (0, 1) leaves the beam as the scene's.
+uniform vec2 u_hud_beam;
 
 noperspective out vec2 g_pixel;
 flat out vec2 g_p0;
@@ -24,6 +28,8 @@ void main() {
     vec2 nrm = vec2(-dir.y, dir.x);
     // HUD keys start high so a HUD line never flickers in step with a scene line.
     BeamShape beam = beam_shape(v_intensity[0], len, 0x80000000u + uint(gl_PrimitiveIDIn));
+    beam.half_width = max(beam.half_width, u_hud_beam.x);
+    beam.gain *= u_hud_beam.y;
     float h = beam.half_width, r = beam_end_reach(h);  // lengthened ends: beam_ends.glsl
     mark_beam_segment(s0, s1, h, r);
     vec2 corners[4] = vec2[4](s0 - dir * r - nrm * h, s0 - dir * r + nrm * h,

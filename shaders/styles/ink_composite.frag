@@ -16,22 +16,25 @@ layout(location = 0) out vec4 o_color;
 
 const vec3 kLuminance = vec3(0.2126, 0.7152, 0.0722);
 
-float coverage(vec3 hud) {
-    return 1.0 - exp(-max(max(hud.r, hud.g), hud.b));
+float peak_of(vec2 uv) {
+    vec3 hud = textureLod(u_lines, uv, 0.0).rgb;
+    return max(max(hud.r, hud.g), hud.b);
 }
 
 // The halo: the HUD's strongest coverage on two rings around the pixel (bilinear taps).
+// Coverage rises with the peak, so the strongest coverage is that of the strongest peak: one
+// exp, not sixteen (on llvmpipe this shader runs on every pixel near the HUD).
 float halo_coverage(ivec2 p) {
     vec2 size = vec2(textureSize(u_lines, 0));
     vec2 c = (vec2(p) + 0.5) / size;
-    float h = 0.0;
+    float peak = 0.0;
     for (int i = 0; i < 8; ++i) {
         float a = float(i) * 0.78539816;
         vec2 d = vec2(cos(a), sin(a));
-        h = max(h, coverage(textureLod(u_lines, c + d * u_halo_px / size, 0.0).rgb));
-        h = max(h, coverage(textureLod(u_lines, c + d * 0.5 * u_halo_px / size, 0.0).rgb));
+        peak = max(peak, peak_of(c + d * u_halo_px / size));
+        peak = max(peak, peak_of(c + d * 0.5 * u_halo_px / size));
     }
-    return h;
+    return 1.0 - exp(-peak);
 }
 
 void main() {

@@ -47,6 +47,7 @@ flat out float g_significance; // sketch: how much the edge matters under the li
 uniform vec3 u_light_dir;      // view space, towards the light
 
 #include "../lines/edge_geometry.glsl"
+#include "../beam/beam_tiles.glsl"
 
 const int kCorner[6] = int[6](0, 1, 2, 2, 1, 3);
 
@@ -143,6 +144,10 @@ void main() {
     lo = up ? reach_in : reach_out;
     hi = up ? reach_out : reach_in;
     ext = max(u_inner_px, u_outer_px) + 1.0;
+#endif
+#ifdef HALO_GLOW
+    // The halo is laid over the tiles its quads may cover (pass_halo.cpp); once per quad.
+    if (uint(gl_VertexID) % EDGE_VERTICES == 0u) mark_beam_segment(s0, s1, max(lo, hi), ext);
 #endif
     int k = kCorner[uint(gl_VertexID) % EDGE_VERTICES];
     vec2 end = k < 2 ? s0 - dir * ext : s1 + dir * ext;

@@ -166,6 +166,8 @@ LineMethodProfile line_method_profile(const std::filesystem::path& cache, Calibr
     }
     p.source = "measured now";
     try {
+        // The cache folder (~/.cache/beamzone) may not exist yet.
+        if (cache.has_parent_path()) std::filesystem::create_directories(cache.parent_path());
         write_file_atomic(cache, updated_line_method_cache(text, p));
         p.source += ", kept in " + cache.string();
     } catch (const std::exception& e) {
@@ -178,7 +180,7 @@ LineMethodProfile user_line_method_profile(Calibration calibration) {
     std::filesystem::path cache;
     std::string no_folder;
     try {
-        cache = platform::pref_paths().dir / "line-methods.json";
+        cache = platform::pref_paths().line_methods;
     } catch (const UserError& e) {
         no_folder = e.what();
     }

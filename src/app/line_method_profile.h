@@ -1,6 +1,6 @@
 #pragma once
 // The machine's measured crossing between the geometry shader and the compute method
-// (render/auto_threshold.h), kept per machine in the preference folder (line-methods.json), so
+// (render/auto_threshold.h), kept per machine in the cache folder (line-methods.json), so
 // it is measured once, not at every start. The key names the GL renderer and version, the
 // processor threads llvmpipe may use (LP_NUM_THREADS) and beamzone's version: any of them
 // changing means measuring again.
@@ -29,13 +29,14 @@ enum class Calibration {
     kept_only,           // render: a one-off frame uses what is kept, else the built-in rule
 };
 
-// The current GL context's profile. `cache`: the kept measurements (the pref folder's
+// The current GL context's profile. `cache`: the kept measurements (the cache folder's
 // line-methods.json); a file that does not parse is reported in `source` and never
 // overwritten, and a failed write only loses the keeping.
 LineMethodProfile line_method_profile(const std::filesystem::path& cache, Calibration calibration);
 
-// line_method_profile with the user's preference folder's line-methods.json; without a usable
-// folder it measures (when asked) without keeping. Prints describe() to stderr when it measured.
+// line_method_profile with the user's cache folder's line-methods.json (platform::PrefPaths);
+// without a usable folder it measures (when asked) without keeping. Prints describe() to stderr
+// when it measured.
 LineMethodProfile user_line_method_profile(Calibration calibration);
 
 // The machine key: renderer, version, LP_NUM_THREADS and the processor count, beamzone version.

@@ -20,8 +20,37 @@ PrefPaths pref_paths_in(const std::filesystem::path& dir) {
     p.screenshots = dir / "screenshots";
     p.gamepad_db = dir / "gamecontrollerdb.txt";
     p.levels = dir / "levels";
+    p.line_methods = dir / "line-methods.json";
     return p;
 }
+
+namespace {
+
+std::string env_or_empty(const char* name) {
+    const char* v = std::getenv(name);
+    return v ? std::string(v) : std::string();
+}
+
+// The cache folder, or `fallback` when the environment names none. Not created here: a
+// cache that cannot be written is reported where it is written, and the game goes on.
+std::filesystem::path cache_dir(const std::filesystem::path& fallback, bool pref_from_env) {
+    if (std::string d = env_or_empty("BEAMZONE_CACHE_DIR"); !d.empty()) return d;
+    if (pref_from_env) return fallback;
+    // XDG: a relative XDG_CACHE_HOME is invalid and ignored.
+    if (std::string d = env_or_empty("XDG_CACHE_HOME"); !d.empty() && d.front() == '/')
+        return std::filesystem::path(d) / "beamzone";
+    if (std::string h = env_or_empty("HOME"); !h.empty() && h.front() == '/')
+        return std::filesystem::path(h) / ".cache" / "beamzone";
+    return fallback;
+}
+
+PrefPaths with_cache(PrefPaths p, bool pref_from_env) {
+    const std::filesystem::path cache = cache_dir(p.dir, pref_from_env);
+    p.line_methods = cache / "line-methods.json";
+    return p;
+}
+
+}  // namespace
 
 PrefPaths pref_paths() {
     if (const char* env = std::getenv("BEAMZONE_PREF_DIR"); env && *env) {
@@ -31,7 +60,7 @@ PrefPaths pref_paths() {
             throw UserError(std::string("cannot create BEAMZONE_PREF_DIR ") + env + ": " +
                             ec.message());
         }
-        return pref_paths_in(env);
+        return with_cache(pref_paths_in(env), true);
     }
     char* sdl = SDL_GetPrefPath("beamzone", "beamzone");  // creates the folder
     if (!sdl) {
@@ -40,7 +69,7 @@ PrefPaths pref_paths() {
     }
     const std::filesystem::path dir(sdl);
     SDL_free(sdl);
-    return pref_paths_in(dir);
+    return with_cache(pref_paths_in(dir), false);
 }
 
 }  // namespace bz::platform

@@ -148,26 +148,37 @@ using R = Resource;
 
 // The beam frame's tail: HUD, bloom, lit tiles and composite, reading the lines whichever
 // line pass drew them; `beam_tiles` says whether that pass marked the beam's tiles.
+// The HUD goes after the bloom unless it glows (RenderSettings::hud_glow), so that text and
+// menus keep their contrast (pass_hud.cpp); there it marks the composite's lit tiles.
 void beam_tail(std::vector<FramePass>& list, const StyleDef& style, const RenderSettings& settings,
                bool beam_tiles) {
     const ResourceSet tiles = beam_tiles ? ResourceSet{R::beam_tiles} : ResourceSet{};
-    list.push_back({"hud", pass_hud, ResourceSet{R::lines} | tiles, ResourceSet{R::lines} | tiles});
     const bool phosphor = settings.beam.phosphor != PhosphorDecay::off;
     const bool bloom = beam_blooms(style, settings);
     const bool sparse = bloom && settings.sparse_composite;
+    if (settings.hud_glow)
+        list.push_back(
+            {"hud", pass_hud, ResourceSet{R::lines} | tiles, ResourceSet{R::lines} | tiles});
     if (bloom) {
         ResourceSet writes{R::bloom_chain, R::bloom_out};
         if (settings.sparse_composite) writes.add(R::lit_tiles);
         if (phosphor) writes.add(R::glow);
         list.push_back({"bloom", bloom_pass, ResourceSet{R::lines} | tiles, writes,
                         phosphor ? ResourceSet{R::glow} : ResourceSet{}});
-        if (sparse)
-            list.push_back({"tiles",
-                            pass_tiles,
-                            {R::lit_tiles},
-                            {R::tile_list},
-                            phosphor ? ResourceSet{R::picture_lit} : ResourceSet{}});
     }
+    if (!settings.hud_glow) {
+        // After a bloom it adds its marks to the lit tiles the bloom marked, else to the
+        // screen tiles the line pass marked (which nothing reads after it).
+        const ResourceSet marks = sparse ? ResourceSet{R::lit_tiles} : tiles;
+        list.push_back(
+            {"hud", pass_hud, ResourceSet{R::lines} | marks, ResourceSet{R::lines} | marks});
+    }
+    if (sparse)
+        list.push_back({"tiles",
+                        pass_tiles,
+                        {R::lit_tiles},
+                        {R::tile_list},
+                        phosphor ? ResourceSet{R::picture_lit} : ResourceSet{}});
     ResourceSet reads{R::lines};
     if (bloom) reads.add(R::bloom_out);
     if (sparse) reads.add(R::tile_list);
@@ -233,12 +244,12 @@ std::vector<FramePass> frame_passes(const StyleDef& style, const RenderSettings&
         beam_tail(list, style, settings, beam_tiles);
         return list;
     }
-    // The fill clears the lines target, which holds only the HUD in a filled style.
-    list.push_back({"fill", pass_fill, {}, {R::canvas, R::depth, R::lines}});
+    // The fill clears the lines target, which holds only the HUD in a filled style, and the
+    // screen-tile marks, where the HUD marks its tiles for the ink composite.
+    list.push_back({"fill", pass_fill, {}, {R::canvas, R::depth, R::lines, R::beam_tiles}});
     // Strokes are drawn from the edge buffer: the edges pass appends every visible feature edge.
     if (style_needs_edge_buffer(style, settings))
         list.push_back({"edges", edges_counted, {}, {R::edges}});
-    bool beam_tiles = false;
     const ResourceSet strokes_read{R::depth, R::edges, R::canvas};
     switch (style.lines) {
         case LinePass::outline:
@@ -249,19 +260,20 @@ std::vector<FramePass> frame_passes(const StyleDef& style, const RenderSettings&
             break;
         case LinePass::halo:
             list.push_back({"shrunk", pass_shrunk_depth, {}, {R::shrunk_depth}});
+            // Its quads mark the screen tiles it lays the halo over, which it clears again.
             list.push_back({"halo",
                             pass_halo,
                             strokes_read | ResourceSet{R::shrunk_depth},
-                            {R::halo, R::canvas}});
+                            {R::halo, R::canvas, R::beam_tiles}});
             break;
         case LinePass::beam:
             list.push_back({"lines", lines_counted, {R::depth}, {R::lines, R::beam_tiles}});
-            beam_tiles = true;
             break;
     }
-    const ResourceSet tiles = beam_tiles ? ResourceSet{R::beam_tiles} : ResourceSet{};
-    list.push_back({"hud", pass_hud, ResourceSet{R::lines} | tiles, ResourceSet{R::lines} | tiles});
-    list.push_back({"composite", pass_ink_composite, {R::canvas, R::lines}, {R::target}});
+    list.push_back({"hud", pass_hud, {R::lines, R::beam_tiles}, {R::lines, R::beam_tiles}});
+    // A copy of the canvas, then the HUD's ink over the tiles the HUD marked.
+    list.push_back(
+        {"composite", pass_ink_composite, {R::canvas, R::lines, R::beam_tiles}, {R::target}});
     return list;
 }
 

@@ -164,7 +164,8 @@ void pass_image_outline(const PassContext& ctx, bool mask_mode);
 
 // Filled styles (render/styles/pass_*.cpp).
 // The style's fill into the canvas and the depth texture (in place of the prepass): paper
-// tone, then every object's triangles, both faces.
+// tone, then every object's triangles, both faces. Also clears the lines target and the
+// screen-tile marks (Targets::beam_tiles) for the HUD.
 void pass_fill(const PassContext& ctx);
 // The halo's depth mask: every occluder shrunk along its vertex normals.
 void pass_shrunk_depth(const PassContext& ctx);
@@ -173,8 +174,11 @@ void pass_outline(const PassContext& ctx);
 // Pencil strokes onto the canvas (sketch); mask_mode: their 1-pixel spines into targets.mask.
 void pass_sketch(const PassContext& ctx, bool mask_mode);
 // Soft halos (MAX blended off screen), laid over the canvas, then the silhouette strokes.
+// Reads depth and shrunk depth; writes halo and canvas; uses beam_tiles for the tiles its
+// halos cover and leaves them cleared.
 void pass_halo(const PassContext& ctx);
-// Canvas + HUD lines into the target (filled styles' composite).
+// Canvas + HUD lines into the target (filled styles' composite): reads canvas, lines and the
+// HUD's beam_tiles marks; a blit of the canvas, then the HUD's ink over the marked tiles.
 void pass_ink_composite(const PassContext& ctx);
 
 }  // namespace bz::render

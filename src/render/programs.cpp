@@ -76,6 +76,12 @@ Programs load_programs(const RenderSettings& settings) {
                 beam_tiles);
     // The passes that know where light is mark the composite's lit tiles (lit_tiles.glsl).
     const std::string lit_tile_size = "LIT_TILE_SIZE " + std::to_string(kLitTileSize);
+    // The HUD of the dark looks is drawn after the bloom (pass_hud.cpp): its lit fragments
+    // mark the composite's lit tiles.
+    p.hud_lit_tiles =
+        program({stage(GL_VERTEX_SHADER, "hud/hud.vert"), stage(GL_GEOMETRY_SHADER, "hud/hud.geom"),
+                 stage(GL_FRAGMENT_SHADER, "hud/hud.frag")},
+                {"LIT_TILES 1", lit_tile_size});
     p.bloom_down = program({stage(GL_VERTEX_SHADER, "fullscreen.vert"),
                             stage(GL_FRAGMENT_SHADER, "beam/bloom_down.frag")},
                            {"LIT_TILES 1", lit_tile_size});
@@ -125,6 +131,10 @@ Programs load_programs(const RenderSettings& settings) {
     p.shrunk_depth = program({stage(GL_VERTEX_SHADER, "styles/fill.vert")}, {"SHRINK 1"});
     p.ink_composite = program({stage(GL_VERTEX_SHADER, "fullscreen.vert"),
                                stage(GL_FRAGMENT_SHADER, "styles/ink_composite.frag")});
+    // Over the screen tiles the HUD lit, grown by its halo (pass_ink_composite.cpp).
+    p.ink_composite_tiles = program({stage(GL_VERTEX_SHADER, "styles/marked_tiles.vert"),
+                                     stage(GL_FRAGMENT_SHADER, "styles/ink_composite.frag")},
+                                    {tile_size});
     const auto stroke = [&](const char* frag, std::vector<std::string> defines) {
         return program(
             {stage(GL_VERTEX_SHADER, "styles/stroke.vert"), stage(GL_FRAGMENT_SHADER, frag)},
@@ -133,10 +143,15 @@ Programs load_programs(const RenderSettings& settings) {
     p.outline = stroke("styles/outline.frag", {"STROKE_OUTLINE 1"});
     p.sketch = stroke("styles/sketch.frag", {"STROKE_SKETCH 1"});
     p.sketch_mask = stroke("styles/sketch.frag", {"STROKE_SKETCH 1", "MASK_MODE 1"});
-    p.halo_glow = stroke("styles/halo.frag", {"STROKE_HALO 1", "HALO_GLOW 1"});
+    // The soft halo's quads mark the tiles they cover; the halo is laid over those alone.
+    p.halo_glow = stroke("styles/halo.frag", {"STROKE_HALO 1", "HALO_GLOW 1", "BEAM_TILES 1",
+                                              "TILE_SIZE " + std::to_string(kScreenTileSize)});
     p.halo = stroke("styles/halo.frag", {"STROKE_HALO 1"});
     p.halo_apply = program({stage(GL_VERTEX_SHADER, "fullscreen.vert"),
                             stage(GL_FRAGMENT_SHADER, "styles/halo_apply.frag")});
+    p.halo_apply_tiles = program({stage(GL_VERTEX_SHADER, "styles/marked_tiles.vert"),
+                                  stage(GL_FRAGMENT_SHADER, "styles/halo_apply.frag")},
+                                 {tile_size});
     return p;
 }
 

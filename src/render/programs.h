@@ -17,6 +17,7 @@ struct Programs {
     gl::Program edge_quads;        // ... edge_quad.vert + lines.frag draw it
     gl::Program edge_quads_mask;   // ... with MASK_MODE
     gl::Program hud;
+    gl::Program hud_lit_tiles;  // ... marking the composite's lit tiles (drawn after the bloom)
     gl::Program bloom_down;
     gl::Program bloom_down_tiles;  // the first downsample under the beam's screen tiles only
     gl::Program bloom_blur;
@@ -41,6 +42,7 @@ struct Programs {
     gl::Program fill_paper;
     gl::Program shrunk_depth;
     gl::Program ink_composite;
+    gl::Program ink_composite_tiles;  // the same over the HUD's tiles
     // Strokes on the edge buffer: stroke.vert with each look's fragment stage.
     gl::Program outline;
     gl::Program sketch;
@@ -48,6 +50,7 @@ struct Programs {
     gl::Program halo_glow;
     gl::Program halo;
     gl::Program halo_apply;
+    gl::Program halo_apply_tiles;  // the same over the tiles the halo marked
 };
 
 // Throws UserError naming file:line:col of every compile error. The bloom kernel is baked

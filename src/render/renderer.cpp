@@ -382,8 +382,11 @@ std::vector<glm::ivec2> Renderer::read_lit_tiles() {
     const std::size_t count = std::min<std::size_t>(words[1], capacity);  // the instance count
     std::vector<glm::ivec2> tiles;
     for (std::size_t i = 0; i < count; ++i) {
+        // A run along a row, packed as shaders/beam/lit_tiles.glsl's encode_tile_run.
         const GLuint code = words[4 + i];
-        tiles.emplace_back(static_cast<int>(code & 0xffffu), static_cast<int>(code >> 16));
+        const int x = static_cast<int>(code & 0xfffu), y = static_cast<int>((code >> 12) & 0xfffu);
+        const int length = static_cast<int>(code >> 24) + 1;
+        for (int k = 0; k < length; ++k) tiles.emplace_back(x + k, y);
     }
     std::sort(tiles.begin(), tiles.end(),
               [](glm::ivec2 a, glm::ivec2 b) { return a.y != b.y ? a.y < b.y : a.x < b.x; });

@@ -163,9 +163,15 @@ struct RenderSettings {
     // false: every frame starts without a past (phosphor and glow from black, no held frame),
     // so nothing trails whatever the beam look: the --edit viewer.
     bool keep_history = true;
-    // Composite only the screen tiles that bloom found lit (pass_tiles.cpp); false: every
+    // Composite only the screen tiles that bloom found lit (pass_tiles.cpp), and in the filled
+    // styles lay the HUD only over the tiles it lit (pass_ink_composite.cpp); false: every
     // pixel (the same picture, for comparing).
     bool sparse_composite = true;
+    // true: the dark looks' HUD is drawn before the bloom and glows like the scene (and keeps
+    // the scene's beam width); false: after it, without glow, so that text keeps its contrast
+    // and menus leave no haze (render/beam/pass_hud.cpp). Tests that draw analytic screen
+    // lines as HUD lines to exercise the bloom set it.
+    bool hud_glow = false;
 };
 
 // "fast", "balanced" or "high"; throws UserError naming the valid ones otherwise.

@@ -30,11 +30,13 @@ bz::scene::HudLine line(glm::vec2 a, glm::vec2 b, float intensity) {
     return {a, b, glm::vec3(0.0f, 1.0f, 0.0f), intensity};
 }
 
-// A beam with every effect off: constant half-width 3 px, GL_MAX, no bloom.
+// A beam with every effect off: constant half-width 3 px, GL_MAX, no bloom. The HUD lines
+// this file draws stand for beam lines: they keep the scene's beam (RenderSettings::hud_glow).
 bz::render::RenderSettings plain() {
     bz::render::RenderSettings s = bz::render::preset("balanced");
     s.line_half_width_px = 3.0f;
     s.bloom_strength = 0.0f;
+    s.hud_glow = true;
     return s;
 }
 

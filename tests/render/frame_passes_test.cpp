@@ -71,9 +71,9 @@ struct Row {
     const char* mask;   // mask_passes
 };
 
-constexpr const char* kBeamCompute = "prepass edges visibility lines hud bloom tiles composite";
-constexpr const char* kBeamGs = "prepass lines hud bloom tiles composite";
-constexpr const char* kBeamOutline = "prepass outline hud bloom tiles composite";
+constexpr const char* kBeamCompute = "prepass edges visibility lines bloom hud tiles composite";
+constexpr const char* kBeamGs = "prepass lines bloom hud tiles composite";
+constexpr const char* kBeamOutline = "prepass outline bloom hud tiles composite";
 constexpr const char* kMaskEdges = "prepass edges visibility lines";
 constexpr const char* kMaskLines = "prepass lines";
 constexpr const char* kMaskOutline = "prepass outline";
@@ -202,7 +202,8 @@ TEST(FramePassesTest, ListsNameOnlyTheImagesTheirStyleUses) {
                 EXPECT_EQ(all.has(Resource::halo), style.lines == bz::render::LinePass::halo);
                 EXPECT_EQ(all.has(Resource::shrunk_depth),
                           style.lines == bz::render::LinePass::halo);
-                EXPECT_FALSE(all.has(Resource::beam_tiles));
+                // The HUD marks its tiles for the ink composite.
+                EXPECT_TRUE(all.has(Resource::beam_tiles));
             }
         }
     }
@@ -215,8 +216,14 @@ TEST(FramePassesTest, TheBeamTailFollowsBloomSparseCompositeAndPhosphor) {
         for (const std::string& beam : bz::render::beam_look_names()) {
             RenderSettings s = settings_for(method, beam);
             SCOPED_TRACE(std::string(bz::render::line_method_name(method)) + " / " + beam);
-            s.sparse_composite = false;
+            // A glowing HUD (tests that draw beam lines as HUD lines) goes before the bloom.
+            s.hud_glow = true;
             auto list = bz::render::frame_passes(vector, s);
+            EXPECT_LT(names(list).find("hud"), names(list).find("bloom")) << names(list);
+            EXPECT_EQ(check_order(list, bz::render::writes_of(list)), "");
+            s.hud_glow = false;
+            s.sparse_composite = false;
+            list = bz::render::frame_passes(vector, s);
             EXPECT_EQ(names(list).find("tiles"), std::string::npos) << names(list);
             EXPECT_EQ(check_order(list, bz::render::writes_of(list)), "");
             EXPECT_FALSE(bz::render::resources_of(list).has(Resource::tile_list));

@@ -72,7 +72,6 @@ TEST_F(FrameStateTest, EachStyleAllocatesOnlyWhatItsPassesUse) {
             } else {
                 EXPECT_FALSE(held.has(Resource::bloom_chain));
                 EXPECT_FALSE(held.has(Resource::bloom_out));
-                EXPECT_FALSE(held.has(Resource::beam_tiles));
             }
             const std::size_t bytes = renderer->allocated_bytes();
             EXPECT_LT(bytes, before);

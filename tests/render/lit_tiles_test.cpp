@@ -137,6 +137,7 @@ TEST_F(LitTilesTest, GlowDilatesTheListByTheBloomsBilinearReachInBothLooks) {
         auto s = bz::render::preset("balanced");
         s.beam = bz::render::beam_look(look);
         s.beam.phosphor = bz::render::PhosphorDecay::off;
+        s.hud_glow = true;  // the analytic HUD lines stand for glowing beam lines
         bz::scene::MeshLibrary meshes;
         bz::render::Renderer r(s, kW, kH, bz::gl::TimingMethod::off);
         r.render(analytic_lines(0.0), meshes, bz::render::Renderer::kOffscreen);
@@ -189,4 +190,34 @@ TEST_F(LitTilesTest, TheEveryPixelCompositeListsNoTiles) {
     bz::render::Renderer r(s, kW, kH, bz::gl::TimingMethod::off);
     r.render(analytic_lines(0.0), meshes, bz::render::Renderer::kOffscreen);
     EXPECT_TRUE(r.read_lit_tiles().empty());
+}
+
+// The list holds runs of lit tiles along each row (lit_tiles.glsl's encode_tile_run), at most
+// kMaxTileRun (256) tiles each: a line across a screen 258 tiles wide is listed as a 256-tile
+// run and a 2-tile one, and unpacks to exactly the tiles it lights; a gap splits a run.
+TEST_F(LitTilesTest, RunsLongerThanTheirLimitSplitAndGapsEndThem) {
+    constexpr int w = 258 * kT, h = 2 * kT;  // divisible by the bloom's 4
+    const auto px = [](float x, float y) {
+        return glm::vec2((x + 0.5f - w * 0.5f) / (h * 0.5f), (y + 0.5f - h * 0.5f) / (h * 0.5f));
+    };
+    bz::scene::FrameList f;
+    const glm::vec3 green{0.1f, 1.0f, 0.1f};
+    f.hud.push_back({px(4, 8), px(w - 5, 8), green, 1.0f});                 // row 0, every tile
+    f.hud.push_back({px(4, kT + 8), px(3 * kT - 5, kT + 8), green, 1.0f});  // row 1, tiles 0-2
+    f.hud.push_back({px(10 * kT + 4, kT + 8), px(11 * kT - 5, kT + 8), green, 1.0f});  // tile 10
+    auto s = bz::render::preset("balanced");
+    s.beam.bloom_threshold = 1e6f;  // bloom runs, but nothing glows
+    s.beam.bloom_knee = 0.0f;
+    bz::scene::MeshLibrary meshes;
+    bz::render::Renderer r(s, w, h, bz::gl::TimingMethod::off);
+    r.render(f, meshes, bz::render::Renderer::kOffscreen);
+    Tiles expected;
+    for (int x = 0; x < 258; ++x) expected.insert({x, 0});
+    for (int x = 0; x < 3; ++x) expected.insert({x, 1});
+    expected.insert({10, 1});
+    Tiles got;
+    for (const glm::ivec2 t : r.read_lit_tiles()) {
+        EXPECT_TRUE(got.insert({t.x, t.y}).second) << "tile listed twice: " << t.x << "," << t.y;
+    }
+    EXPECT_EQ(got, expected);
 }

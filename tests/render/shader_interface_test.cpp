@@ -84,6 +84,7 @@ std::vector<std::pair<std::string, const bz::gl::Program*>> every_program(
         {"edge_quads", &p.edge_quads},
         {"edge_quads_mask", &p.edge_quads_mask},
         {"hud", &p.hud},
+        {"hud_lit_tiles", &p.hud_lit_tiles},
         {"bloom_down", &p.bloom_down},
         {"bloom_down_tiles", &p.bloom_down_tiles},
         {"bloom_blur", &p.bloom_blur},
@@ -105,12 +106,14 @@ std::vector<std::pair<std::string, const bz::gl::Program*>> every_program(
         {"fill_paper", &p.fill_paper},
         {"shrunk_depth", &p.shrunk_depth},
         {"ink_composite", &p.ink_composite},
+        {"ink_composite_tiles", &p.ink_composite_tiles},
         {"outline", &p.outline},
         {"sketch", &p.sketch},
         {"sketch_mask", &p.sketch_mask},
         {"halo_glow", &p.halo_glow},
         {"halo", &p.halo},
         {"halo_apply", &p.halo_apply},
+        {"halo_apply_tiles", &p.halo_apply_tiles},
     };
     return all;
 }

@@ -231,6 +231,7 @@ TEST_F(SparseCompositeTest, GlowBesideALineThatWentOutFadesWithThePhosphor) {
         auto s = bz::render::preset("balanced");
         s.beam = bz::render::beam_look("mame");
         s.beam.persistence_ms = 100.0f;
+        s.hud_glow = true;  // the HUD line stands for a glowing beam line
         if (!phosphor) s.beam.phosphor = bz::render::PhosphorDecay::off;
         bz::render::Renderer r(s, kW, kH, bz::gl::TimingMethod::off);
         r.render(lit, meshes, bz::render::Renderer::kOffscreen);

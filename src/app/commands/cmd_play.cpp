@@ -149,7 +149,7 @@ struct Play {
         auto choose = [&look](const level::Level* current) { return choose_look(look, current); };
         // LineMethod::automatic's crossing, measured once per machine and kept.
         const LineMethodProfile line_methods =
-            line_method_profile(paths.dir / "line-methods.json", Calibration::measure_if_missing);
+            line_method_profile(paths.line_methods, Calibration::measure_if_missing);
         log.info(line_methods.describe());
         auto make_renderer = [threshold = line_methods.threshold()](const render::RenderSettings& r,
                                                                     int w, int h) {

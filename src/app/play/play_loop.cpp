@@ -553,7 +553,12 @@ class Loop {
         clock_.stamp(frame);
         if (!menus_.keeps_game_hud()) frame.hud.clear();
         for (scene::DrawItem& item : frame.items) item.intensity *= menus_.scene_intensity();
-        menus_.draw(frame.hud, p_.font, aspect, static_cast<std::uint64_t>(result_.frames));
+        // A menu's rows reach the notice strip at large text: its notices take the footer.
+        p_.overlay.set_notice_place(menus_.open() ? PlayOverlay::NoticePlace::footer
+                                                  : PlayOverlay::NoticePlace::strip);
+        menus_.draw(
+            frame.hud, p_.font, aspect, static_cast<std::uint64_t>(result_.frames),
+            p_.overlay.notice_in_footer() ? menu::FooterLine::overlay : menu::FooterLine::hints);
         p_.overlay.set_footer(p_.settings.show_fps ? frame_stats_.readout() : std::string());
         // A menu over the screen shows its own one-line footer instead of the screen's.
         p_.overlay.set_footer_top(menus_.keeps_game_hud() ? session_.footer_top()

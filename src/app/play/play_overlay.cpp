@@ -140,10 +140,20 @@ void PlayOverlay::draw(std::vector<scene::HudLine>& out, double aspect) const {
                    scene::TextAlign::left, l.title ? 1.2f : 1.0f);
     }
 
+    if (notice_in_footer()) {
+        // One line, centred as the menu's hints are; a long one gets smaller to fit.
+        const Notice& n = notices_.back();
+        const float fade = static_cast<float>(std::clamp(n.seconds_left / 0.5, 0.0, 1.0));
+        const hud::Box f = hud::footer_box(a);
+        float h = std::min(kNoticeHeight * scale_, f.height() / kTextBand);
+        if (const float w = font_.width(n.text, h); w > f.width()) h *= f.width() / w;
+        font_.draw(out, n.text, {0.0f, f.min.y + h * kBaselineLift}, h, kNoticeColor,
+                   scene::TextAlign::center, fade);
+    }
     const hud::Box nbox = hud::notice_box(a, scale_, footer_top_);
     const float nh = kNoticeHeight * scale_;
     y = nbox.min.y + nh * kBaselineLift;
-    for (auto it = notices_.rbegin(); it != notices_.rend(); ++it) {
+    for (auto it = notices_.rbegin(); it != notices_.rend() && !notice_in_footer(); ++it) {
         const float fade = static_cast<float>(std::clamp(it->seconds_left / 0.5, 0.0, 1.0));
         const auto lines = wrap(it->text, nh, nbox.width());
         for (auto l = lines.rbegin(); l != lines.rend(); ++l) {  // drawn bottom-up

@@ -36,6 +36,16 @@ class PlayOverlay {
     // The top of the screen's footer (HUD units): the readout and the notices stack above it.
     // The --edit footer is taller than the one-line footer of the other screens.
     void set_footer_top(float top) { footer_top_ = top; }
+    // Where notices go. A menu's rows reach down to the readout's strip at a large text size,
+    // so the notice strip would cross its last rows: while a menu is open the newest notice
+    // takes the footer line instead, in place of the page's key hints, for as long as it shows.
+    enum class NoticePlace : std::uint8_t { strip, footer };
+    void set_notice_place(NoticePlace place) { notice_place_ = place; }
+    // Whether the footer line is the newest notice's this frame (the menu then leaves out its
+    // key hints).
+    bool notice_in_footer() const {
+        return notice_place_ == NoticePlace::footer && !notices_.empty();
+    }
 
     // The player's text size (the Comfort page's ui_scale, 1 to 2): every line is this much
     // taller, wrapped and clipped to the same regions, so larger text never leaves them.
@@ -72,6 +82,7 @@ class PlayOverlay {
     std::string footer_;
     float scale_ = 1.0f;
     float footer_top_ = -0.88f;  // game::hud::kFooterTop
+    NoticePlace notice_place_ = NoticePlace::strip;
 };
 
 }  // namespace bz::app

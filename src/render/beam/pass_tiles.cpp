@@ -19,9 +19,11 @@ void bind_lit_tile_marks(const gl::Program& program, const Targets& targets, boo
 // The list of tiles the sparse composite shades (shaders/beam/tile_list.comp).
 // Reads: Targets::lit_tiles (marked this frame by the bloom's first downsample and last step),
 // with the phosphor FrameHistory::picture_lit (marked by last frame's composite).
-// Writes: Targets::tile_list, the indirect draw command and the tiles after it.
-// One invocation per tile reading one mark or two: it reads no image's texels, so it costs the
-// same on any frame, a few thousand invocations at 1280x720.
+// Writes: Targets::tile_list, the indirect draw command and the runs of lit tiles after it
+// (one quad each for the composite: on llvmpipe a 16x16 quad cost about as much to set up as
+// to shade, see docs/measurements/lit-tiles.md).
+// One invocation per row reading one mark or two per tile: it reads no image's texels, so it
+// costs the same on any frame, 45 invocations at 1280x720.
 void pass_tiles(const PassContext& ctx) {
     Targets& t = ctx.targets;
     if (!t.lit_tiles) return;
@@ -37,8 +39,8 @@ void pass_tiles(const PassContext& ctx) {
     t.lit_tiles.bind(kTextureUnitMarks);
     if (phosphor) ctx.history.picture_lit.bind(kTextureUnitPictureLit);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTileListBinding, t.tile_list.id());
-    const GLuint tiles = static_cast<GLuint>(t.lit_tiles.width() * t.lit_tiles.height());
-    glDispatchCompute((tiles + 63) / 64, 1, 1);
+    const GLuint rows = static_cast<GLuint>(t.lit_tiles.height());  // one invocation per row
+    glDispatchCompute((rows + 63) / 64, 1, 1);
     // The composite reads the list as its draw command and in its vertex stage.
     glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
 }

@@ -27,6 +27,9 @@ void pass_fill(const PassContext& ctx) {
     ctx.targets.lines_fbo.bind();
     glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
     glClear(GL_COLOR_BUFFER_BIT);
+    // The HUD marks the screen tiles it lights there (beam_tiles.glsl); the ink composite
+    // shades only those and the halo's reach around them (pass_ink_composite.cpp).
+    glClearTexImage(ctx.targets.beam_tiles.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_BYTE, nullptr);
 
     ctx.targets.canvas_depth_fbo.bind();
     const gl::PipelineState state = depth_writing_state(ctx, true);

@@ -29,20 +29,39 @@ void pass_halo(const PassContext& ctx) {
     begin_strokes(ctx, glow, StrokeVisibility::depth_test);
     glow.set("u_strokes", h.strokes_per_edge);
     ctx.style_textures.profile.bind(kTextureUnitProfile);
+    // Its quads mark the screen tiles they cover (beam_tiles.glsl), in the HUD's marks, which
+    // start clean again below: on llvmpipe laying the halo over every pixel cost ~11 of the
+    // pass's ~17 ms at 1280x720 (docs/measurements/styles-sweep.md).
+    glClearTexImage(ctx.targets.beam_tiles.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_BYTE, nullptr);
+    bind_beam_tiles(ctx.targets);
     draw_edge_strokes(ctx);
 
     ctx.targets.canvas_fbo.bind();
     gl::PipelineState apply_state;
     apply_state.blend = gl::Blend::alpha;
     gl::apply(apply_state);
-    const gl::Program& lay = ctx.programs.halo_apply;
+    // The canvas stays opaque: the composite copies it to the target as it is.
+    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
+    // Only where a halo quad was drawn (RenderSettings::sparse_composite off: every pixel,
+    // the same picture).
+    const bool sparse = ctx.settings.sparse_composite;
+    const gl::Program& lay = sparse ? ctx.programs.halo_apply_tiles : ctx.programs.halo_apply;
     lay.use();
     set_spine_test_uniforms(lay, ctx);
     lay.set("u_paper", ctx.style.background);
     ctx.targets.depth.bind(kTextureUnitDepth);
     ctx.targets.halo.bind(kTextureUnitHalo);
     ctx.empty_vao.bind();
-    glDrawArrays(GL_TRIANGLES, 0, 3);
+    if (sparse) {
+        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);  // the marks were image stores
+        lay.set("u_reach", 0);                          // the marks hold every pixel of the quads
+        draw_tile_quads(lay, ctx.targets.beam_tiles,
+                        glm::ivec2(ctx.targets.width, ctx.targets.height));
+    } else {
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+    }
+    // The HUD marks its own tiles there next (pass_ink_composite.cpp reads them).
+    glClearTexImage(ctx.targets.beam_tiles.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_BYTE, nullptr);
 
     ctx.targets.canvas_shrunk_fbo.bind();
     gl::apply(halo_state(ctx, gl::Blend::min));

@@ -151,7 +151,7 @@ std::optional<std::size_t> row_at(const Placement& placement, const Page& page, 
 }
 
 void draw(std::vector<scene::HudLine>& out, const scene::VectorFont& font, const Page& page,
-          std::size_t selected, double aspect, std::uint64_t tick, float scale) {
+          std::size_t selected, double aspect, std::uint64_t tick, float scale, FooterLine footer) {
     const float a = static_cast<float>(aspect);
     const Placement pl = place(font, page, selected, aspect, scale);
     const Layout& l = pl.layout;
@@ -221,7 +221,7 @@ void draw(std::vector<scene::HudLine>& out, const scene::VectorFont& font, const
         ly -= line_h * 1.6f;
     }
 
-    if (!page.hint.empty()) {
+    if (footer == FooterLine::hints && !page.hint.empty()) {
         const hud::Box f = hud::footer_box(a);
         // Long hints shrink to the footer's width rather than run off the screen.
         float hint_h = kHintHeight * scale;

@@ -86,9 +86,14 @@ Placement place(const scene::VectorFont& font, const Page& page, std::size_t sel
 // The selectable row under `at` (HUD units), if any.
 std::optional<std::size_t> row_at(const Placement& placement, const Page& page, glm::vec2 at);
 
+// Who draws the footer line: the page's key hints, or the play overlay (a notice, which
+// takes the hints' place while it shows).
+enum class FooterLine : std::uint8_t { hints, overlay };
+
 // Appends the page's lines (HUD units). `tick` blinks the selection marker; `scale` is the
 // player's text size.
 void draw(std::vector<scene::HudLine>& out, const scene::VectorFont& font, const Page& page,
-          std::size_t selected, double aspect, std::uint64_t tick, float scale = 1.0f);
+          std::size_t selected, double aspect, std::uint64_t tick, float scale = 1.0f,
+          FooterLine footer = FooterLine::hints);
 
 }  // namespace bz::app::menu

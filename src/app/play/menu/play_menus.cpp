@@ -771,10 +771,10 @@ bool PlayMenus::keeps_game_hud() const {
 }
 
 void PlayMenus::draw(std::vector<scene::HudLine>& out, const scene::VectorFont& font, double aspect,
-                     std::uint64_t tick) const {
+                     std::uint64_t tick, FooterLine footer) const {
     if (!open() || stack_.empty()) return;
     menu::draw(out, font, page(), selected(), aspect, tick,
-               env_.settings ? env_.settings->ui_scale : 1.0f);
+               env_.settings ? env_.settings->ui_scale : 1.0f, footer);
 }
 
 }  // namespace bz::app::menu

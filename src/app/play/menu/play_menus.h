@@ -89,7 +89,7 @@ class PlayMenus {
     Page page() const;  // the page shown now, as data
     std::size_t selected() const { return stack_.empty() ? 0 : stack_.back().selected; }
     void draw(std::vector<scene::HudLine>& out, const scene::VectorFont& font, double aspect,
-              std::uint64_t tick) const;
+              std::uint64_t tick, FooterLine footer = FooterLine::hints) const;
 
     Env& env() { return env_; }
 

@@ -10,6 +10,7 @@
 #include "app/play/menu/level_list.h"
 #include "app/play/menu/menu_page.h"
 #include "app/play/menu/play_menus.h"
+#include "app/play/play_overlay.h"
 #include "game/hud/hud_layout.h"
 #include "support/scratch_dir.h"
 
@@ -117,6 +118,84 @@ TEST(MenuBounds, PauseShowsEveryRowAndNoRowReachesTheReadout) {
                 // The title stays under the HUD band and above the first row.
                 EXPECT_LT(pl.layout.title_y + 0.09f * scale, game::hud::kBandBottom + 0.3f);
                 EXPECT_GT(pl.layout.title_y, pl.layout.rows_top);
+            }
+        }
+    }
+}
+
+}  // namespace
+}  // namespace bz::app::menu
+
+namespace bz::app::menu {
+namespace {
+
+struct YRange {
+    float lo = 1e9f, hi = -1e9f;
+};
+YRange y_range(const std::vector<scene::HudLine>& lines) {
+    YRange r;
+    for (const scene::HudLine& l : lines) {
+        r.lo = std::min({r.lo, l.a.y, l.b.y});
+        r.hi = std::max({r.hi, l.a.y, l.b.y});
+    }
+    return r;
+}
+
+// Seen in the screenshots: a notice ("screenshot ...") in the notice strip crossed the title
+// menu's last row at 2x, since a menu's rows reach down to the readout's strip. While a menu
+// is open the newest notice takes the footer line in place of the key hints: on every page's
+// first screen, at every text size and screen shape, the notice lies in the footer, below
+// every stroke of the menu, and the menu leaves the footer to it.
+TEST(MenuBounds, ANoticeOverAMenuTakesTheFooterAndCrossesNoRow) {
+    platform::Settings settings;
+    game::HighScoreTable scores = game::HighScoreTable::defaults();
+    Env env;
+    env.settings = &settings;
+    env.presets = {"fast", "balanced", "high"};
+    env.high_scores = &scores;
+    for (const Context context : {Context::title, Context::paused}) {
+        for (const float scale : {1.0f, 1.5f, 2.0f}) {
+            for (const double aspect : {4.0 / 3.0, 16.0 / 9.0, 21.0 / 9.0}) {
+                settings.ui_scale = scale;
+                PlayMenus menus(env);
+                menus.set_context(context);
+                PlayOverlay overlay(font());
+                overlay.set_text_scale(scale);
+                overlay.set_footer("60 FPS  16.7 MS  WORST 18.0 MS");
+                overlay.notify("screenshot beamzone-20261127-101500-000.png");
+                overlay.set_notice_place(PlayOverlay::NoticePlace::footer);
+                ASSERT_TRUE(overlay.notice_in_footer());
+
+                std::vector<scene::HudLine> menu_lines, overlay_lines;
+                menus.draw(menu_lines, font(), aspect, 0, FooterLine::overlay);
+                overlay.draw(overlay_lines, aspect);
+                const auto a = static_cast<float>(aspect);
+                const game::hud::Box footer = game::hud::footer_box(a);
+                const game::hud::Box readout = game::hud::readout_box(a, scale);
+                std::vector<scene::HudLine> notice;
+                for (const scene::HudLine& l : overlay_lines) {
+                    if (readout.contains(l.a) && readout.contains(l.b)) continue;
+                    EXPECT_TRUE(footer.contains(l.a) && footer.contains(l.b))
+                        << "notice outside the footer at " << scale << ", " << aspect;
+                    notice.push_back(l);
+                }
+                ASSERT_FALSE(notice.empty());
+                const YRange m = y_range(menu_lines);
+                EXPECT_GT(m.lo, footer.max.y) << "the menu draws in the footer at " << scale;
+                EXPECT_LT(y_range(notice).hi, m.lo);
+                EXPECT_EQ(first_outside(notice, aspect), "");
+
+                // The strip the notice left: at 2x it would have crossed the menu's rows,
+                // which is why the footer takes it.
+                if (scale == 2.0f) {
+                    PlayOverlay strip(font());
+                    strip.set_text_scale(scale);
+                    strip.notify("screenshot beamzone-20261127-101500-000.png");
+                    std::vector<scene::HudLine> in_strip;
+                    strip.draw(in_strip, aspect);
+                    EXPECT_GT(y_range(in_strip).hi, m.lo) << "the strip no longer reaches the "
+                                                             "rows: the footer rule may go";
+                }
             }
         }
     }
