@@ -22,6 +22,7 @@
 #include "render/renderer.h"
 #include "scene/style_table.h"
 #include "support/gl_test.h"
+#include "support/hud_frames.h"
 #include "support/tree_paths.h"
 
 namespace {
@@ -40,29 +41,7 @@ float luminance(const std::vector<std::uint8_t>& rgba, std::size_t i) {
 
 // Each pixel's distance to the nearest HUD line (capped at 8 px).
 std::vector<float> hud_distance(const std::vector<bz::scene::HudLine>& hud, float min_intensity) {
-    std::vector<float> d(static_cast<std::size_t>(kW) * kH, 8.0f);
-    auto px = [](glm::vec2 u) {
-        return glm::vec2(kW * 0.5f + u.x * kH * 0.5f, kH * 0.5f - u.y * kH * 0.5f);
-    };
-    for (const bz::scene::HudLine& l : hud) {
-        if (l.intensity < min_intensity) continue;
-        const glm::vec2 a = px(l.a), b = px(l.b);
-        const int x0 = std::max(0, static_cast<int>(std::min(a.x, b.x)) - 8);
-        const int x1 = std::min(kW - 1, static_cast<int>(std::max(a.x, b.x)) + 8);
-        const int y0 = std::max(0, static_cast<int>(std::min(a.y, b.y)) - 8);
-        const int y1 = std::min(kH - 1, static_cast<int>(std::max(a.y, b.y)) + 8);
-        const glm::vec2 ab = b - a;
-        const float len2 = std::max(glm::dot(ab, ab), 1e-6f);
-        for (int y = y0; y <= y1; ++y) {
-            for (int x = x0; x <= x1; ++x) {
-                const glm::vec2 p(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f);
-                const float t = std::clamp(glm::dot(p - a, ab) / len2, 0.0f, 1.0f);
-                float& v = d[static_cast<std::size_t>(y) * kW + x];
-                v = std::min(v, glm::length(p - (a + t * ab)));
-            }
-        }
-    }
-    return d;
+    return bz::test::hud_line_distance(hud, kW, kH, 8.0f, min_intensity);
 }
 
 struct Contrast {
@@ -114,11 +93,8 @@ using HudContrastTest = bz::test::GlTest;
 
 TEST_F(HudContrastTest, HudAndNoticesReachWcagContrastInEveryStyle) {
     const bz::scene::VectorFont font = bz::scene::VectorFont::load_default();
-    bz::game::GameOptions options;
-    options.seed = 5;
-    options.attract = false;  // straight into play
-    bz::game::Game game(bz::game::default_level(), options, &font);
-    for (int i = 0; i < 90; ++i) game.tick(bz::game::TickCommand{});
+    const auto game_ptr = bz::test::game_in_play(font);
+    bz::game::Game& game = *game_ptr;
     ASSERT_EQ(game.screen(), bz::game::Screen::playing);
 
     const auto out = bz::test::binary_dir() / "test-out";

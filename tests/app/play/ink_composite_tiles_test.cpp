@@ -19,6 +19,7 @@
 #include "render/renderer.h"
 #include "scene/style_table.h"
 #include "support/gl_test.h"
+#include "support/hud_frames.h"
 #include "support/tree_paths.h"
 
 namespace {
@@ -83,11 +84,8 @@ using InkCompositeTilesTest = bz::test::GlTest;
 
 TEST_F(InkCompositeTilesTest, EveryFilledStyleWithTheHudMatchesTheEveryPixelComposite) {
     const bz::scene::VectorFont font = bz::scene::VectorFont::load_default();
-    bz::game::GameOptions options;
-    options.seed = 5;
-    options.attract = false;  // straight into play
-    bz::game::Game game(bz::game::default_level(), options, &font);
-    for (int i = 0; i < 90; ++i) game.tick(bz::game::TickCommand{});
+    const auto game_ptr = bz::test::game_in_play(font);
+    bz::game::Game& game = *game_ptr;
     ASSERT_EQ(game.screen(), bz::game::Screen::playing);
     bz::app::PlayOverlay overlay(font);
     overlay.notify("style halo");

@@ -17,6 +17,7 @@
 #include "game/game.h"
 #include "render/renderer.h"
 #include "support/gl_test.h"
+#include "support/hud_frames.h"
 #include "support/tree_paths.h"
 
 namespace bz::app::menu {
@@ -28,28 +29,9 @@ constexpr float kClearPx = 8.0f;
 
 // Whether each pixel lies within kClearPx of any of `hud`'s lines.
 std::vector<bool> near_lines(const std::vector<scene::HudLine>& hud) {
-    std::vector<bool> near(static_cast<std::size_t>(kW) * kH, false);
-    const auto px = [](glm::vec2 u) {
-        return glm::vec2(kW * 0.5f + u.x * kH * 0.5f, kH * 0.5f - u.y * kH * 0.5f);
-    };
-    const int r = static_cast<int>(kClearPx) + 1;
-    for (const scene::HudLine& l : hud) {
-        const glm::vec2 a = px(l.a), b = px(l.b);
-        const int x0 = std::max(0, static_cast<int>(std::min(a.x, b.x)) - r);
-        const int x1 = std::min(kW - 1, static_cast<int>(std::max(a.x, b.x)) + r);
-        const int y0 = std::max(0, static_cast<int>(std::min(a.y, b.y)) - r);
-        const int y1 = std::min(kH - 1, static_cast<int>(std::max(a.y, b.y)) + r);
-        const glm::vec2 ab = b - a;
-        const float len2 = std::max(glm::dot(ab, ab), 1e-6f);
-        for (int y = y0; y <= y1; ++y) {
-            for (int x = x0; x <= x1; ++x) {
-                const glm::vec2 p(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f);
-                const float t = std::clamp(glm::dot(p - a, ab) / len2, 0.0f, 1.0f);
-                if (glm::length(p - (a + t * ab)) <= kClearPx)
-                    near[static_cast<std::size_t>(y) * kW + x] = true;
-            }
-        }
-    }
+    const std::vector<float> d = test::hud_line_distance(hud, kW, kH, kClearPx + 1.0f);
+    std::vector<bool> near(d.size());
+    for (std::size_t i = 0; i < d.size(); ++i) near[i] = d[i] <= kClearPx;
     return near;
 }
 
