@@ -28,14 +28,16 @@ const uint EDGE_CLIPPED_START = 1u << 9;
 const uint EDGE_CLIPPED_END = 1u << 10;
 
 // The DrawArraysIndirectCommand of the quad draw; vertex_count doubles as the append counter
-// (EDGE_VERTICES per record). Then the spine-sample append counter (render::EdgeDrawCommand).
+// (EDGE_VERTICES per record). Then the spine-sample append counter and the count of work items
+// hierarchical-Z culling skipped (render::EdgeDrawCommand).
 // A shader declares the block as `buffer Command { EDGE_COMMAND_MEMBERS; };`.
 #define EDGE_COMMAND_MEMBERS \
     uint vertex_count;       \
     uint instance_count;     \
     uint first_vertex;       \
     uint base_instance;      \
-    uint samples_used
+    uint samples_used;       \
+    uint hidden_items
 const uint EDGE_VERTICES = 6u;
 
 // The binding points (EDGE_LIST_BINDING, EDGE_RECORDS_BINDING, ...) are #defines injected from

@@ -52,6 +52,14 @@ uniform mat4 u_proj;
 uniform vec2 u_viewport;
 uniform float u_near;
 uniform float u_far;
+// Hierarchical-Z culling (src/render/lines/hiz_culling.h): the farthest surface's inverse view
+// depth per fine and per coarse tile, and where each item's bounds record lies in `work`.
+layout(binding = TEXTURE_UNIT_DEPTH_TILES) uniform sampler2D u_depth_tiles;
+layout(binding = TEXTURE_UNIT_DEPTH_TILES_COARSE) uniform sampler2D u_depth_tiles_coarse;
+uniform bool u_hiz;
+uniform uint u_bounds_offset;  // an item's record is work[u_bounds_offset + its index]
+uniform float u_hiz_rel;       // the spine test's tolerances, with room to spare
+uniform float u_hiz_abs;
 
 #include "edge_geometry.glsl"
 
@@ -98,8 +106,32 @@ bool faces_eye_object(uint inst, float det_sign, vec3 n, vec3 to_eye, vec3 pa, u
     return faces_eye(face_normal(a, b, c), a);
 }
 
+// Whether every tile under the item's rectangle holds a surface nearer than the nearest point
+// of its bounding sphere, by more than the spine test would forgive: then no spine sample of
+// any of its edges can pass. Every invocation of the group reads the same record and tiles,
+// so the whole group returns together.
+bool hidden_by_prepass(uint item_index) {
+    uvec4 b = work[u_bounds_offset + item_index];
+    if (b.w == 0u) return false;
+    ivec2 lo = ivec2(b.x & 0xFFFFu, b.x >> 16), hi = ivec2(b.y & 0xFFFFu, b.y >> 16);
+    float limit = uintBitsToFloat(b.z) * (1.0 + u_hiz_rel) + u_hiz_abs;
+    for (int y = lo.y; y <= hi.y; ++y) {
+        for (int x = lo.x; x <= hi.x; ++x) {
+            float farthest = b.w == 1u ? texelFetch(u_depth_tiles, ivec2(x, y), 0).r
+                                       : texelFetch(u_depth_tiles_coarse, ivec2(x, y), 0).r;
+            if (!(farthest > limit)) return false;
+        }
+    }
+    return true;
+}
+
 void main() {
-    uvec4 item = work[u_work_base + gl_WorkGroupID.x];
+    uint item_index = u_work_base + gl_WorkGroupID.x;
+    if (u_hiz && hidden_by_prepass(item_index)) {
+        if (gl_LocalInvocationID.x == 0u) atomicAdd(hidden_items, 1u);
+        return;
+    }
+    uvec4 item = work[item_index];
     if (gl_LocalInvocationID.x >= item.z) return;
     uint e = item.y + gl_LocalInvocationID.x;
     uint inst = item.x;

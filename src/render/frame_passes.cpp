@@ -233,7 +233,13 @@ std::vector<FramePass> frame_passes(const StyleDef& style, const RenderSettings&
             // spine test once per spine sample of each, and the quads draw the count the edges
             // pass appended (indirect dispatch and draw, no read-back).
             list.push_back({"prepass", pass_prepass, {}, {R::depth}});
-            list.push_back({"edges", edges_sized, {}, {R::edges}});
+            // Hierarchical-Z: the edges pass skips the clusters the prepass hides wholly.
+            ResourceSet edges_read;
+            if (settings.hiz_culling) {
+                list.push_back({"hiz", pass_depth_tiles, {R::depth}, {R::depth_tiles}});
+                edges_read.add(R::depth_tiles);
+            }
+            list.push_back({"edges", edges_sized, edges_read, {R::edges}});
             list.push_back({"visibility", pass_spine_visibility, {R::depth, R::edges}, {R::edges}});
             list.push_back(
                 {"lines", edge_quads_counted, {R::depth, R::edges}, {R::lines, R::beam_tiles}});

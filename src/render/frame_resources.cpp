@@ -30,6 +30,8 @@ std::string_view resource_name(Resource r) {
             return "halo";
         case Resource::mask:
             return "mask";
+        case Resource::depth_tiles:
+            return "depth_tiles";
         case Resource::target:
             return "target";
         case Resource::phosphor:

@@ -23,6 +23,7 @@ enum class Resource : std::uint8_t {
     shrunk_depth,  // Targets::shrunk_depth: the halo's depth mask
     halo,          // Targets::halo: the halo's off-screen soft halos
     mask,          // Targets::mask: the 1-pixel accuracy mask
+    depth_tiles,   // Targets::depth_tiles(_coarse): hierarchical-Z culling's farthest depths
     target,        // the frame's destination: the window or Targets::output
     // History (FrameHistory): kept from one frame to the next.
     phosphor,     // the phosphor picture, updated in place by the composite

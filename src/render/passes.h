@@ -108,10 +108,18 @@ void bind_beam_tiles(const Targets& targets);
 // The uniforms of the stages that project and clip edges to the window (u_proj, u_viewport,
 // u_near, u_far: lines.geom, edges.comp, edge_quad.*, spine_visibility.comp, stroke.vert).
 void set_edge_projection_uniforms(const gl::Program& program, const PassContext& ctx);
+// The spine test's absolute tolerance in inverse view depth (the depth buffer's step).
+float spine_tolerance_abs(const PassContext& ctx);
 // The uniforms shaders/lines/spine_test.glsl declares: tolerances, depth convention, view rays.
 void set_spine_test_uniforms(const gl::Program& program, const PassContext& ctx);
 // Both: the programs that find or draw edges and test their spines.
 void set_line_uniforms(const gl::Program& program, const PassContext& ctx);
+// Whether this frame's edges pass tests its clusters against the depth tiles
+// (lines/hiz_culling.h): with occlusion, RenderSettings::hiz_culling, and enough edges
+// submitted for the tiles to pay (pass_depth_tiles.cpp).
+bool hiz_culls(const PassContext& ctx);
+// After the prepass: the depth tiles of hierarchical-Z culling, when hiz_culls.
+void pass_depth_tiles(const PassContext& ctx);
 // Fills the edge buffer from every batch's edge list (edges.comp): the strokes of the filled
 // styles and LineMethod::compute read it.
 void pass_edges(const PassContext& ctx);

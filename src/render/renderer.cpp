@@ -459,6 +459,9 @@ HistoryCut Renderer::history_last_cut() const {
 const FrameStats& Renderer::stats() const {
     return impl_->stats;
 }
+std::size_t Renderer::hiz_hidden_clusters() const {
+    return impl_->edges.counts().hidden_items;
+}
 int Renderer::width() const {
     return impl_->width;
 }

@@ -92,6 +92,9 @@ class Renderer {
     // GPU meshes uploaded so far: one per model used, plus simplified ones for distance LOD.
     std::size_t gpu_mesh_uploads() const;
     const FrameStats& stats() const;
+    // The edge clusters hierarchical-Z culling skipped in the last frame's edges pass
+    // (lines/hiz_culling.h). Reads the GPU's count now: a stall, for reports and tests.
+    std::size_t hiz_hidden_clusters() const;
     // The images the frames drawn so far had allocated (from their pass lists, frame_passes.h;
     // a style change or a cut of the targets starts again), and the bytes they and the view's
     // history hold.

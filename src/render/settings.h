@@ -141,6 +141,10 @@ struct RenderSettings {
     // closed mesh seen from outside only those not wholly facing away (triangle_culling.h);
     // false: whole meshes (the same picture, for comparing).
     bool cluster_culling = true;
+    // LineMethod::compute with occlusion: skip the edge clusters the prepass hides wholly
+    // (lines/hiz_culling.h) when the frame has enough edges for it to pay; false: test every
+    // cluster the CPU kept (the same picture, for comparing).
+    bool hiz_culling = true;
     bool lod = true;           // raise the crease threshold / use simplified meshes far away
     bool count_edges = false;  // count emitted feature edges (costs a query per frame)
     LineMethod method = kDefaultLineMethod;

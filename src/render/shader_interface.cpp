@@ -2,6 +2,7 @@
 
 #include "render/gpu_scene/mesh_cache.h"
 #include "render/lines/edge_buffer.h"
+#include "render/lines/hiz_culling.h"
 
 namespace bz::render {
 
@@ -57,10 +58,15 @@ std::vector<std::string> build_defines() {
         define("TEXTURE_UNIT_OFFSET", kTextureUnitOffset),
         define("TEXTURE_UNIT_HALO", kTextureUnitHalo),
         define("TEXTURE_UNIT_NOISE", kTextureUnitNoise),
+        define("TEXTURE_UNIT_DEPTH_TILES", kTextureUnitDepthTiles),
+        define("TEXTURE_UNIT_DEPTH_TILES_COARSE", kTextureUnitDepthTilesCoarse),
         define("IMAGE_UNIT_PICTURE", kImageUnitPicture),
         define("IMAGE_UNIT_PICTURE_LIT", kImageUnitPictureLit),
         define("IMAGE_UNIT_LIT_TILES", kImageUnitLitTiles),
         define("IMAGE_UNIT_BEAM_TILES", kImageUnitBeamTiles),
+        define("IMAGE_UNIT_DEPTH_TILES", kImageUnitDepthTiles),
+        define("DEPTH_TILE_SIZE", static_cast<unsigned>(kDepthTileSize)),
+        define("COARSE_DEPTH_TILES", static_cast<unsigned>(kCoarseDepthTiles)),
     };
 }
 

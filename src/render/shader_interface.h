@@ -59,12 +59,15 @@ inline constexpr unsigned kTextureUnitProfile = 1;     // stroke profile (halo)
 inline constexpr unsigned kTextureUnitOffset = 2;      // smooth offsets (halo)
 inline constexpr unsigned kTextureUnitHalo = 3;        // the halo buffer
 inline constexpr unsigned kTextureUnitNoise = 1;       // uniform noise (sketch)
+inline constexpr unsigned kTextureUnitDepthTiles = 1;  // hierarchical-Z: the fine depth tiles
+inline constexpr unsigned kTextureUnitDepthTilesCoarse = 2;  // ... and the coarse ones
 
 // Image units.
 inline constexpr unsigned kImageUnitPicture = 0;     // the phosphor picture (composite)
 inline constexpr unsigned kImageUnitPictureLit = 1;  // its lit-tile marks (composite)
 inline constexpr unsigned kImageUnitLitTiles = 2;    // lit_tiles.glsl
 inline constexpr unsigned kImageUnitBeamTiles = 3;   // beam_tiles.glsl
+inline constexpr unsigned kImageUnitDepthTiles = 0;  // depth_tiles.comp's output
 
 // Every constant above and the edge buffer's bindings as "NAME value" for gl::Program: the
 // instance indices as uint literals ("6u"), since the shaders index with uints; the rest plain.

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "render/lines/hiz_culling.h"
+
 namespace bz::render {
 
 glm::ivec2 bloom_size(int width, int height, const RenderSettings& s) {
@@ -99,6 +101,17 @@ void make_images(Targets& t, Targets& old, const RenderSettings& s, ResourceSet 
         if (!wants(r) || format == kNoFormat) return;
         t.*member = kept(r) ? std::move(old.*member) : gl::Texture2D(width, height, format, filter);
     };
+    if (wants(Resource::depth_tiles)) {
+        if (kept(Resource::depth_tiles)) {
+            t.depth_tiles = std::move(old.depth_tiles);
+            t.depth_tiles_coarse = std::move(old.depth_tiles_coarse);
+        } else {
+            const DepthTileGrid grid = depth_tile_grid(width, height);
+            t.depth_tiles = gl::Texture2D(grid.fine.x, grid.fine.y, GL_R32F, gl::Filter::nearest);
+            t.depth_tiles_coarse =
+                gl::Texture2D(grid.coarse.x, grid.coarse.y, GL_R32F, gl::Filter::nearest);
+        }
+    }
     image(Resource::mask, &Targets::mask, GL_R8, gl::Filter::nearest);
     image(Resource::target, &Targets::output, GL_RGBA8, gl::Filter::nearest);
     image(Resource::canvas, &Targets::canvas, GL_RGBA8, gl::Filter::nearest);
@@ -184,7 +197,8 @@ std::size_t allocated_bytes(const Targets& t) {
     std::size_t bytes = 0;
     for (const gl::Texture2D* tex :
          {&t.depth, &t.lines, &t.bloom_a, &t.bloom_b, &t.bloom_out, &t.mask, &t.output, &t.normals,
-          &t.canvas, &t.shrunk_depth, &t.halo, &t.lit_tiles, &t.beam_tiles})
+          &t.canvas, &t.shrunk_depth, &t.halo, &t.lit_tiles, &t.beam_tiles, &t.depth_tiles,
+          &t.depth_tiles_coarse})
         bytes += texture_bytes(*tex);
     for (const gl::Texture2D& level : t.bloom_mips) bytes += texture_bytes(level);
     if (t.lit_tiles) bytes += t.tile_list.size();

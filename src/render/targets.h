@@ -67,6 +67,10 @@ struct Targets {
     gl::Texture2D beam_tiles;
     // The bloom's first level.
     gl::Framebuffer first_down_fbo;
+    // Hierarchical-Z culling (lines/hiz_culling.h): per fine and per coarse tile, the inverse
+    // view depth of the farthest surface the prepass left (R32F).
+    gl::Texture2D depth_tiles;
+    gl::Texture2D depth_tiles_coarse;
 };
 
 // The bloom resolution's size of a `width` x `height` frame.

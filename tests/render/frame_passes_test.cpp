@@ -71,7 +71,7 @@ struct Row {
     const char* mask;   // mask_passes
 };
 
-constexpr const char* kBeamCompute = "prepass edges visibility lines bloom hud tiles composite";
+constexpr const char* kBeamCompute = "prepass hiz edges visibility lines bloom hud tiles composite";
 constexpr const char* kBeamGs = "prepass lines bloom hud tiles composite";
 constexpr const char* kBeamOutline = "prepass outline bloom hud tiles composite";
 constexpr const char* kMaskEdges = "prepass edges visibility lines";

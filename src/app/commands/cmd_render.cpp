@@ -46,10 +46,10 @@ void print_timings(const render::Renderer& r,
     const render::EdgeCullStats& c = s.edge_culling;
     if (c.clusters > 0) {
         std::fprintf(stdout,
-                     "edge clusters %zu: %zu outside the view, %zu facing away, %zu one way; "
-                     "edges tested %zu of %zu\n",
-                     c.clusters, c.outside_frustum, c.facing_away, c.one_way, c.edges_dispatched,
-                     c.edges);
+                     "edge clusters %zu: %zu outside the view, %zu facing away, %zu one way, "
+                     "%zu hidden by the prepass; edges tested %zu of %zu\n",
+                     c.clusters, c.outside_frustum, c.facing_away, c.one_way,
+                     r.hiz_hidden_clusters(), c.edges_dispatched, c.edges);
     }
     const render::TriangleCullStats& t = s.triangle_culling;
     if (t.clusters > 0) {
@@ -122,6 +122,7 @@ int cmd_render(Args args) {
     settings.cubic_smoothing = o.smoothing;
     settings.one_sided_outlines = o.one_sided;
     settings.cluster_culling = o.cluster_culling;
+    settings.hiz_culling = o.hiz_culling;
     // A one-off frame measures nothing: it uses the machine's kept crossing, if any.
     const LineMethodProfile line_methods = user_line_method_profile(Calibration::kept_only);
     settings.auto_compute_from_triangles = line_methods.threshold();

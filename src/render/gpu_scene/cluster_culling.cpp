@@ -64,14 +64,19 @@ InstanceClusters::InstanceClusters(const glm::mat4& model_view)
     eye_sign_ = eye.w;
 }
 
+ViewSphere InstanceClusters::view_sphere(const geo::ClusterBounds& k) const {
+    return {.center = glm::dvec3(model_view_ * glm::dvec4(glm::dvec3(k.center), 1.0)),
+            .radius = static_cast<double>(k.radius) * scale_ * (1.0 + 1e-6)};
+}
+
 bool InstanceClusters::outside(const geo::ClusterBounds& k, const ViewVolume& volume) const {
-    const glm::dvec3 c(model_view_ * glm::dvec4(glm::dvec3(k.center), 1.0));
-    return volume.outside(c, static_cast<double>(k.radius) * scale_ * (1.0 + 1e-6));
+    const ViewSphere s = view_sphere(k);
+    return volume.outside(s.center, s.radius);
 }
 
 bool InstanceClusters::inside(const geo::ClusterBounds& k, const ViewVolume& volume) const {
-    const glm::dvec3 c(model_view_ * glm::dvec4(glm::dvec3(k.center), 1.0));
-    return volume.contains(c, static_cast<double>(k.radius) * scale_ * (1.0 + 1e-6));
+    const ViewSphere s = view_sphere(k);
+    return volume.contains(s.center, s.radius);
 }
 
 // For a face with unit normal u through p: dot(u, e - p) = dot(u, e - c) + dot(u, c - p), the

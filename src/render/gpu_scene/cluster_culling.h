@@ -35,10 +35,18 @@ class ViewVolume {
 
 enum class ClusterFacing { mixed, all_front, all_back };
 
+// A sphere in view space.
+struct ViewSphere {
+    glm::dvec3 center{0.0};
+    double radius = 0.0;
+};
+
 // One instance's view of its clusters.
 class InstanceClusters {
   public:
     explicit InstanceClusters(const glm::mat4& model_view);
+    // The cluster's bounding sphere in view space (widened for rounding, as the tests use it).
+    ViewSphere view_sphere(const geo::ClusterBounds& k) const;
     bool outside(const geo::ClusterBounds& k, const ViewVolume& volume) const;
     // Whether the sphere lies wholly inside: then none of the clusters it holds is outside.
     bool inside(const geo::ClusterBounds& k, const ViewVolume& volume) const;

@@ -82,6 +82,7 @@ struct EdgeDrawCommand {
     std::uint32_t first_vertex = 0;
     std::uint32_t base_instance = 0;
     std::uint32_t samples_used = 0;  // spine samples asked for, including any past capacity
+    std::uint32_t hidden_items = 0;  // work items hierarchical-Z culling skipped (hiz_culling.h)
 };
 inline constexpr std::uint32_t kVerticesPerEdge = 6;  // two triangles per quad
 

@@ -11,8 +11,8 @@ constexpr double kGuard = 2.0;
 
 void append_edge_work(const geo::ClusteredEdges& clusters, const glm::mat4& model_view,
                       float cos_crease, bool skip_back_faces, const CullView& view,
-                      std::uint32_t instance, std::vector<EdgeWorkItem>& work,
-                      EdgeCullStats& stats) {
+                      std::uint32_t instance, std::vector<EdgeWorkItem>& work, EdgeCullStats& stats,
+                      const HizView* hiz, std::vector<HizBounds>* bounds) {
     const ViewVolume guard(view.proj, view.near, view.far, kGuard);
     const InstanceClusters instance_view(model_view);
     // An instance wholly inside the view needs no test per cluster.
@@ -42,7 +42,12 @@ void append_edge_work(const geo::ClusteredEdges& clusters, const glm::mat4& mode
         }
         if (count == 0) continue;
         stats.edges_dispatched += count;
+        ++stats.items;
         work.push_back(EdgeWorkItem(instance, k.first, count, 0u));
+        if (hiz && bounds) {
+            const ViewSphere sphere = instance_view.view_sphere(k);
+            bounds->push_back(hiz_bounds(*hiz, sphere.center, sphere.radius));
+        }
     }
 }
 

@@ -15,6 +15,7 @@
 
 #include "geometry/derived/edge_clusters.h"
 #include "render/gpu_scene/cluster_culling.h"
+#include "render/lines/hiz_culling.h"
 
 namespace bz::render {
 
@@ -29,6 +30,7 @@ struct EdgeCullStats {
     std::size_t one_way = 0;           // only the crease and boundary candidates tested
     std::size_t edges = 0;             // edges of the clusters looked at
     std::size_t edges_dispatched = 0;  // edges given to edges.comp
+    std::size_t items = 0;             // work items (clusters or their prefixes) given to it
     EdgeCullStats& operator+=(const EdgeCullStats& o) {
         clusters += o.clusters;
         outside_frustum += o.outside_frustum;
@@ -36,6 +38,7 @@ struct EdgeCullStats {
         one_way += o.one_way;
         edges += o.edges;
         edges_dispatched += o.edges_dispatched;
+        items += o.items;
         return *this;
     }
 };
@@ -48,10 +51,11 @@ struct CullView {
     float far = 1000.0f;
 };
 
-// Appends the work items of one instance's clusters to `work`.
+// Appends the work items of one instance's clusters to `work`; with `hiz`, also each item's
+// hierarchical-Z bounds record to `bounds` (hiz_culling.h), one per item.
 void append_edge_work(const geo::ClusteredEdges& clusters, const glm::mat4& model_view,
                       float cos_crease, bool skip_back_faces, const CullView& view,
-                      std::uint32_t instance, std::vector<EdgeWorkItem>& work,
-                      EdgeCullStats& stats);
+                      std::uint32_t instance, std::vector<EdgeWorkItem>& work, EdgeCullStats& stats,
+                      const HizView* hiz = nullptr, std::vector<HizBounds>* bounds = nullptr);
 
 }  // namespace bz::render

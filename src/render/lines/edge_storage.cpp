@@ -68,7 +68,7 @@ EdgeDrawCommand EdgeStorage::read_now() const {
 
 EdgeStorage::FillCounts EdgeStorage::counts() const {
     const EdgeDrawCommand cmd = read_now();
-    return {cmd.vertex_count / kVerticesPerEdge, cmd.samples_used};
+    return {cmd.vertex_count / kVerticesPerEdge, cmd.samples_used, cmd.hidden_items};
 }
 
 void EdgeStorage::keep_count() {

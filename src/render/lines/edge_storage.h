@@ -29,6 +29,7 @@ class EdgeStorage {
     struct FillCounts {
         std::size_t records = 0;
         std::size_t samples = 0;
+        std::size_t hidden_items = 0;  // work items hierarchical-Z culling skipped
     };
     FillCounts counts() const;
     // After a fill: the counters of that fill are copied aside, to be read a frame later

@@ -5,6 +5,7 @@
 #include "core/parallel_chunks.h"
 #include "render/gpu_scene/cluster_culling.h"
 #include "render/lines/edge_culling.h"
+#include "render/lines/hiz_culling.h"
 #include "render/passes.h"
 
 namespace bz::render {
@@ -29,6 +30,12 @@ void pass_edges(const PassContext& ctx) {
     for (const InstanceData& d : instances)
         work.push_back(glm::floatBitsToUint(object_space_eye(d.model_view)));
     const CullView view{.proj = ctx.cam.proj, .near = ctx.cam.near, .far = ctx.cam.far};
+    // Hierarchical-Z: the depth tiles pass ran before this one and found the frame worth it.
+    const bool hiz = frame_wrote(ctx, Resource::depth_tiles) && hiz_culls(ctx);
+    const HizView hiz_view{.proj = ctx.cam.proj,
+                           .near = ctx.cam.near,
+                           .width = ctx.targets.width,
+                           .height = ctx.targets.height};
     EdgeCullStats cull;
     struct Dispatch {
         const Batch* batch;
@@ -62,6 +69,7 @@ void pass_edges(const PassContext& ctx) {
     const std::size_t threads = clusters >= kCullPairsPerThread ? worker_threads() : 1;
     const std::size_t chunks = chunk_count(jobs.size(), 1, threads);
     std::vector<std::vector<EdgeWorkItem>> chunk_work(chunks);
+    std::vector<std::vector<HizBounds>> chunk_bounds(chunks);
     std::vector<EdgeCullStats> chunk_stats(chunks);
     std::vector<std::size_t> job_items(jobs.size());
     parallel_chunks(jobs.size(), 1, threads, [&](std::size_t j, std::size_t c) {
@@ -69,7 +77,8 @@ void pass_edges(const PassContext& ctx) {
         const std::size_t before = chunk_work[c].size();
         append_edge_work(job.mesh->edge_clusters, instances[job.instance].model_view,
                          instances[job.instance].params.x, job.skip_back_faces, view, job.instance,
-                         chunk_work[c], chunk_stats[c]);
+                         chunk_work[c], chunk_stats[c], hiz ? &hiz_view : nullptr,
+                         &chunk_bounds[c]);
         job_items[j] = chunk_work[c].size() - before;
     });
     for (std::size_t c = 0; c < chunks; ++c) {
@@ -100,6 +109,14 @@ void pass_edges(const PassContext& ctx) {
         glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
         return;
     }
+    // With hierarchical-Z, each entry's bounds record follows the whole list (the eyes' are
+    // never read).
+    const auto bounds_offset = static_cast<GLuint>(work.size());
+    if (hiz) {
+        work.resize(work.size() + instances.size(), kNoHizTest);
+        for (const std::vector<HizBounds>& b : chunk_bounds)
+            work.insert(work.end(), b.begin(), b.end());
+    }
     ctx.edges.set_work(work);
 
     const gl::Program& program = ctx.programs.edges;
@@ -114,6 +131,20 @@ void pass_edges(const PassContext& ctx) {
     // A fragment in the viewport lies within its beam's half-width of its spine point: cover that.
     program.set("u_sample_margin", 16.0f);
     program.set("u_sample_spacing", ctx.settings.spine_sample_spacing_px);
+    program.set("u_hiz", hiz ? 1 : 0);
+    program.set("u_bounds_offset", bounds_offset);
+    if (hiz) {
+        // Four times the spine test's relative tolerances and at least 1 %: a sphere that
+        // close behind the tiles' farthest surface is tested edge by edge.
+        const auto& s = ctx.settings;
+        program.set("u_hiz_rel", std::max(0.01f, 4.0f * (s.plane_tolerance_rel + s.depth_bias)));
+        program.set("u_hiz_abs", 4.0f * spine_tolerance_abs(ctx));
+        glBindTextureUnit(kTextureUnitDepthTiles, ctx.targets.depth_tiles.id());
+        glBindTextureUnit(kTextureUnitDepthTilesCoarse, ctx.targets.depth_tiles_coarse.id());
+    } else {
+        program.set("u_hiz_rel", 0.0f);
+        program.set("u_hiz_abs", 0.0f);
+    }
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kInstancesBinding, ctx.instances.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEdgeRecordsBinding, ctx.edges.records().id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEdgeCommandBinding, ctx.edges.command().id());

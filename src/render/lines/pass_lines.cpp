@@ -5,22 +5,26 @@
 
 namespace bz::render {
 
+float spine_tolerance_abs(const PassContext& ctx) {
+    const double inv_b = 1.0 / static_cast<double>(ctx.cam.proj_b);
+    // Stored depth -> inverse depth is (ndc + a) * inv_b. A 24-bit buffer rounds ndc to steps
+    // of 2^-23; allow four (rounding plus the float interpolation before it). Float depth's
+    // step is relative and covered by plane_tolerance_rel, except for the rounding of the
+    // constant a, which is an absolute error.
+    const double step =
+        ctx.settings.depth == DepthFormat::conventional_d24 ? std::ldexp(1.0, -21) : 0.0;
+    return static_cast<float>((step + 1e-6 * std::abs(static_cast<double>(ctx.cam.proj_a))) *
+                              std::abs(inv_b));
+}
+
 namespace {
 
 // The spine test's tolerances: how far the prepass may sit from the exact plane of the edge's
 // face, in inverse view depth.
 void set_spine_tolerances(const gl::Program& p, const PassContext& ctx) {
     const auto& s = ctx.settings;
-    const double inv_b = 1.0 / static_cast<double>(ctx.cam.proj_b);
-    // Stored depth -> inverse depth is (ndc + a) * inv_b. A 24-bit buffer rounds ndc to steps
-    // of 2^-23; allow four (rounding plus the float interpolation before it). Float depth's
-    // step is relative and covered by plane_tolerance_rel, except for the rounding of the
-    // constant a, which is an absolute error.
-    const double step = s.depth == DepthFormat::conventional_d24 ? std::ldexp(1.0, -21) : 0.0;
-    const double tol_abs =
-        (step + 1e-6 * std::abs(static_cast<double>(ctx.cam.proj_a))) * std::abs(inv_b);
     p.set("u_tol_rel", s.plane_tolerance_rel);
-    p.set("u_tol_abs", static_cast<float>(tol_abs));
+    p.set("u_tol_abs", spine_tolerance_abs(ctx));
     p.set("u_tol_px", s.plane_tolerance_px);
     p.set("u_fallback_rel", s.depth_bias);
 }
