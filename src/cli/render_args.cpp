@@ -19,7 +19,7 @@ const std::string& render_usage() {
             "                       [--color r,g,b] [--out frame.png]\n"
             "                       [--mask mask.png] [--repeat N] [--copies N] [--beam "
             "classic|mame]\n"
-            "                       [--lit-share] [--no-cluster-culling] [--no-hiz-culling]\n"
+            "                       [--lit-share] [--no-cluster-culling] [--hiz-culling]\n"
             "                       [--svg lines.svg]\n"
             "                       [--overwrite]\n"
             "Renders a model file (or builtin:cube, builtin:sphere, builtin:grid) headless to PNG. "
@@ -39,9 +39,8 @@ const std::string& render_usage() {
             "--beam picks the vector beam's look (default mame, as `play` and `bench`).\n"
             "--no-cluster-culling draws whole meshes in the depth prepass and the fills (the same\n"
             "picture; for timing what culling triangle clusters saves).\n"
-            "--no-hiz-culling tests every edge cluster even where the depth prepass hides it "
-            "whole\n"
-            "(the same picture; for timing what hierarchical-Z culling saves).\n"
+            "--hiz-culling skips the edge clusters the depth prepass hides whole (hierarchical-Z;\n"
+            "the same picture; off by default, as it did not pay where measured).\n"
             "--lit-share prints the share of the picture's pixels whose brightest channel is "
             "above\n"
             "1/255 (the haze figure; tools/haze measures Bernardoni 2018's hallway with it).\n"
@@ -82,8 +81,8 @@ RenderOptions parse_render_args(Args args) {
             o.lit_share = true;
         else if (a == "--no-cluster-culling")
             o.cluster_culling = false;
-        else if (a == "--no-hiz-culling")
-            o.hiz_culling = false;
+        else if (a == "--hiz-culling")
+            o.hiz_culling = true;
         else if (a == "--overwrite")
             o.overwrite = true;
         else if (a == "--style") {

@@ -30,7 +30,7 @@ struct RenderOptions {
     std::string beam{render::kDefaultBeamLook};
     bool lit_share = false;
     bool cluster_culling = true;  // --no-cluster-culling: whole meshes in prepass and fills
-    bool hiz_culling = true;      // --no-hiz-culling: no edge cluster skipped by the prepass
+    bool hiz_culling = false;     // --hiz-culling: skip edge clusters the prepass hides
     bool overwrite = false;       // may replace an existing file that is not a PNG
 };
 

@@ -142,9 +142,10 @@ struct RenderSettings {
     // false: whole meshes (the same picture, for comparing).
     bool cluster_culling = true;
     // LineMethod::compute with occlusion: skip the edge clusters the prepass hides wholly
-    // (lines/hiz_culling.h) when the frame has enough edges for it to pay; false: test every
-    // cluster the CPU kept (the same picture, for comparing).
-    bool hiz_culling = true;
+    // (lines/hiz_culling.h) when the frame has enough edges for it to pay. The same picture
+    // either way. Off by default: measured, it cost more than it saved on the H100 and gained
+    // nothing clear on llvmpipe in the scenes here (docs/measurements/hiz-culling.md).
+    bool hiz_culling = false;
     bool lod = true;           // raise the crease threshold / use simplified meshes far away
     bool count_edges = false;  // count emitted feature edges (costs a query per frame)
     LineMethod method = kDefaultLineMethod;

@@ -71,7 +71,7 @@ struct Row {
     const char* mask;   // mask_passes
 };
 
-constexpr const char* kBeamCompute = "prepass hiz edges visibility lines bloom hud tiles composite";
+constexpr const char* kBeamCompute = "prepass edges visibility lines bloom hud tiles composite";
 constexpr const char* kBeamGs = "prepass lines bloom hud tiles composite";
 constexpr const char* kBeamOutline = "prepass outline bloom hud tiles composite";
 constexpr const char* kMaskEdges = "prepass edges visibility lines";
@@ -258,3 +258,22 @@ TEST(FramePassesTest, OnlyALinePassThatMarksTilesFeedsTheSparseDownsample) {
 }
 
 }  // namespace
+
+// Hierarchical-Z culling (RenderSettings::hiz_culling) adds its depth tiles between the
+// prepass and the edges pass of the compute list, and only there.
+TEST(FramePassesTest, HierarchicalZPutsItsTilesBetweenPrepassAndEdges) {
+    const auto& vector = bz::render::style_def(Style::vector);
+    for (LineMethod method : kMethods) {
+        RenderSettings s = settings_for(method, "classic");
+        s.hiz_culling = true;
+        const auto list = bz::render::frame_passes(vector, s);
+        SCOPED_TRACE(bz::render::line_method_name(method));
+        EXPECT_EQ(check_order(list, bz::render::writes_of(list)), "");
+        if (method == LineMethod::compute) {
+            EXPECT_EQ(names(list), "prepass hiz edges visibility lines bloom hud tiles composite");
+        } else {
+            EXPECT_EQ(names(list).find("hiz"), std::string::npos) << names(list);
+            EXPECT_FALSE(bz::render::resources_of(list).has(Resource::depth_tiles));
+        }
+    }
+}

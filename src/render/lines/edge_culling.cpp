@@ -15,6 +15,9 @@ void append_edge_work(const geo::ClusteredEdges& clusters, const glm::mat4& mode
                       const HizView* hiz, std::vector<HizBounds>* bounds) {
     const ViewVolume guard(view.proj, view.near, view.far, kGuard);
     const InstanceClusters instance_view(model_view);
+    // Sphere radii in view space for hierarchical-Z, widened past float rounding.
+    const float radius_scale =
+        hiz ? static_cast<float>(instance_view.axis_scale() * (1.0 + 1e-5)) : 0.0f;
     // An instance wholly inside the view needs no test per cluster.
     const bool inside = instance_view.inside(clusters.all, guard);
     for (const geo::EdgeCluster& k : clusters.clusters) {
@@ -45,8 +48,8 @@ void append_edge_work(const geo::ClusteredEdges& clusters, const glm::mat4& mode
         ++stats.items;
         work.push_back(EdgeWorkItem(instance, k.first, count, 0u));
         if (hiz && bounds) {
-            const ViewSphere sphere = instance_view.view_sphere(k);
-            bounds->push_back(hiz_bounds(*hiz, sphere.center, sphere.radius));
+            const glm::vec3 c(model_view * glm::vec4(k.center, 1.0f));
+            bounds->push_back(hiz_bounds(*hiz, c, k.radius * radius_scale));
         }
     }
 }

@@ -9,7 +9,7 @@ namespace {
 
 // Pixels added around a sphere's rectangle: the spine test reads the texel under a sample and
 // its four neighbours (stored_inv_depth_at), and samples sit up to 0.75 px off the spine.
-constexpr double kRectMargin = 2.0;
+constexpr float kRectMargin = 2.0f;
 
 std::uint32_t pack(int x, int y) {
     return static_cast<std::uint32_t>(x) | (static_cast<std::uint32_t>(y) << 16);
@@ -25,44 +25,48 @@ DepthTileGrid depth_tile_grid(int width, int height) {
     return {fine, coarse};
 }
 
-HizBounds hiz_bounds(const HizView& view, const glm::dvec3& center, double radius) {
-    // The nearest point of the sphere must lie beyond the near plane: then so does the whole
-    // box around it, and each corner projects to a finite point.
-    const double nearest = -(center.z + radius);
-    if (!(nearest > static_cast<double>(view.near)) || !std::isfinite(nearest) || view.width <= 0 ||
-        view.height <= 0)
-        return kNoHizTest;
-    const glm::dmat4 proj(view.proj);
-    glm::dvec2 lo(INFINITY), hi(-INFINITY);
-    // The projection of the box around the sphere is the hull of its corners' projections.
-    for (int corner = 0; corner < 8; ++corner) {
-        const glm::dvec3 p =
-            center + radius * glm::dvec3((corner & 1) ? 1.0 : -1.0, (corner & 2) ? 1.0 : -1.0,
-                                         (corner & 4) ? 1.0 : -1.0);
-        const glm::dvec4 clip = proj * glm::dvec4(p, 1.0);
-        if (!(clip.w > 0.0)) return kNoHizTest;
-        const glm::dvec2 ndc = glm::dvec2(clip) / clip.w;
-        const glm::dvec2 px = (ndc * 0.5 + 0.5) * glm::dvec2(view.width, view.height);
-        lo = glm::min(lo, px);
-        hi = glm::max(hi, px);
-    }
-    lo -= kRectMargin;
-    hi += kRectMargin;
+HizView::HizView(const glm::mat4& proj, float near_plane, int w, int h)
+    : fx(proj[0][0]),
+      sx(proj[2][0]),
+      fy(proj[1][1]),
+      sy(proj[2][1]),
+      near(near_plane),
+      width(w),
+      height(h) {
+    // Clip x, y and w of a perspective projection take nothing else of the point.
+    usable = proj[0][1] == 0.0f && proj[1][0] == 0.0f && proj[3][0] == 0.0f && proj[3][1] == 0.0f &&
+             proj[0][3] == 0.0f && proj[1][3] == 0.0f && proj[2][3] == -1.0f &&
+             proj[3][3] == 0.0f && fx > 0.0f && fy > 0.0f && w > 0 && h > 0 && near_plane > 0.0f;
+}
+
+HizBounds hiz_bounds(const HizView& view, const glm::vec3& center, float radius) {
+    // Every point of the box around the sphere lies at a view depth d in [dn, df] (beyond
+    // the near plane) and at x in [cx - r, cx + r]: its window x, (fx x / d - sx), is
+    // extreme at a corner, so two divisions per side bound it.
+    const float dn = -(center.z + radius), df = -(center.z - radius);
+    if (!view.usable || !(dn > view.near) || !std::isfinite(df)) return kNoHizTest;
+    const auto span = [&](float c, float f, float s, int size) {
+        const float lo = std::min((c - radius) / dn, (c - radius) / df);
+        const float hi = std::max((c + radius) / dn, (c + radius) / df);
+        const float half = 0.5f * static_cast<float>(size);
+        return glm::vec2((f * lo - s) * half + half, (f * hi - s) * half + half);
+    };
+    const glm::vec2 x = span(center.x, view.fx, view.sx, view.width);
+    const glm::vec2 y = span(center.y, view.fy, view.sy, view.height);
+    const glm::vec2 lo = glm::vec2(x.x, y.x) - kRectMargin;
+    const glm::vec2 hi = glm::vec2(x.y, y.y) + kRectMargin;
+    const auto w = static_cast<float>(view.width), h = static_cast<float>(view.height);
     // Wholly off screen: the frustum test's business (its guard band keeps such clusters).
-    if (!(hi.x >= 0.0 && hi.y >= 0.0 && lo.x < view.width && lo.y < view.height)) return kNoHizTest;
+    if (!(hi.x >= 0.0f && hi.y >= 0.0f && lo.x < w && lo.y < h)) return kNoHizTest;
     // Clamped to the screen: the spine test clamps its texel reads the same way.
-    const glm::ivec2 max_px(view.width - 1, view.height - 1);
-    const glm::ivec2 a =
-        glm::clamp(glm::ivec2(glm::floor(glm::max(lo, glm::dvec2(0.0)))), glm::ivec2(0), max_px);
-    const glm::ivec2 b =
-        glm::clamp(glm::ivec2(glm::floor(glm::min(hi, glm::dvec2(max_px)))), glm::ivec2(0), max_px);
+    const glm::ivec2 a(std::max(lo.x, 0.0f), std::max(lo.y, 0.0f));
+    const glm::ivec2 b(std::min(hi.x, w - 1.0f), std::min(hi.y, h - 1.0f));
     for (int level = 0; level < 2; ++level) {
         const int tile = kDepthTileSize * (level == 0 ? 1 : kCoarseDepthTiles);
         const glm::ivec2 t0 = a / tile, t1 = b / tile;
         const glm::ivec2 n = t1 - t0 + 1;
         if (n.x * n.y > kMaxHizTiles) continue;
-        const auto inv = static_cast<float>(1.0 / nearest);
-        return HizBounds(pack(t0.x, t0.y), pack(t1.x, t1.y), glm::floatBitsToUint(inv),
+        return HizBounds(pack(t0.x, t0.y), pack(t1.x, t1.y), glm::floatBitsToUint(1.0f / dn),
                          static_cast<std::uint32_t>(level + 1));
     }
     return kNoHizTest;

@@ -28,9 +28,13 @@ struct DepthTileGrid {
 };
 DepthTileGrid depth_tile_grid(int width, int height);
 
-// What bounds records need of the view.
+// What bounds records need of the view: a perspective projection whose clip x and y are
+// (fx x + sx z, fy y + sy z) over w = -z (glm::perspective, glm::frustum; reversed-Z or not),
+// the near plane and the screen size. Any other projection gets no test.
 struct HizView {
-    glm::mat4 proj{1.0f};  // a perspective projection (the spine test's assumption)
+    HizView(const glm::mat4& proj, float near, int width, int height);
+    bool usable = false;
+    float fx = 1.0f, sx = 0.0f, fy = 1.0f, sy = 0.0f;
     float near = 0.1f;
     int width = 0, height = 0;  // pixels
 };
@@ -41,7 +45,9 @@ struct HizView {
 using HizBounds = glm::uvec4;
 inline constexpr HizBounds kNoHizTest{0u};
 
-// The record of a view-space sphere.
-HizBounds hiz_bounds(const HizView& view, const glm::dvec3& center, double radius);
+// The record of a view-space sphere. In float: one per cluster per frame, on the CPU, so it
+// must cost next to nothing; its margins (two pixels, and the shader's depth slack) are far
+// above float rounding.
+HizBounds hiz_bounds(const HizView& view, const glm::vec3& center, float radius);
 
 }  // namespace bz::render

@@ -32,10 +32,7 @@ void pass_edges(const PassContext& ctx) {
     const CullView view{.proj = ctx.cam.proj, .near = ctx.cam.near, .far = ctx.cam.far};
     // Hierarchical-Z: the depth tiles pass ran before this one and found the frame worth it.
     const bool hiz = frame_wrote(ctx, Resource::depth_tiles) && hiz_culls(ctx);
-    const HizView hiz_view{.proj = ctx.cam.proj,
-                           .near = ctx.cam.near,
-                           .width = ctx.targets.width,
-                           .height = ctx.targets.height};
+    const HizView hiz_view(ctx.cam.proj, ctx.cam.near, ctx.targets.width, ctx.targets.height);
     EdgeCullStats cull;
     struct Dispatch {
         const Batch* batch;

@@ -17,12 +17,9 @@ namespace bz::test {
 namespace {
 
 render::HizView view_of(int width = 320, int height = 240) {
-    render::HizView v;
-    v.proj = glm::perspective(glm::radians(50.0f), float(width) / float(height), 0.1f, 100.0f);
-    v.near = 0.1f;
-    v.width = width;
-    v.height = height;
-    return v;
+    return render::HizView(
+        glm::perspective(glm::radians(50.0f), float(width) / float(height), 0.1f, 100.0f), 0.1f,
+        width, height);
 }
 
 glm::ivec4 rect_of(const render::HizBounds& b) {
@@ -31,7 +28,7 @@ glm::ivec4 rect_of(const render::HizBounds& b) {
 
 TEST(HizBounds, ASmallSphereAheadCoversItsProjectionOnTheFineTiles) {
     const render::HizView v = view_of();
-    const render::HizBounds b = render::hiz_bounds(v, glm::dvec3(0.0, 0.0, -10.0), 0.2);
+    const render::HizBounds b = render::hiz_bounds(v, glm::vec3(0.0f, 0.0f, -10.0f), 0.2f);
     ASSERT_EQ(b.w, 1u) << "fine level";
     // The centre projects to the middle of the screen: pixel (160, 120), fine tile (10, 7).
     const glm::ivec4 r = rect_of(b);
@@ -45,24 +42,24 @@ TEST(HizBounds, ASmallSphereAheadCoversItsProjectionOnTheFineTiles) {
 
 TEST(HizBounds, ALargeSphereTakesTheCoarseTilesAndAHugeOneNoTest) {
     const render::HizView v = view_of(1920, 1080);
-    const render::HizBounds mid = render::hiz_bounds(v, glm::dvec3(0.0, 0.0, -10.0), 1.5);
+    const render::HizBounds mid = render::hiz_bounds(v, glm::vec3(0.0, 0.0, -10.0), 1.5f);
     EXPECT_EQ(mid.w, 2u) << "more than 64 fine tiles: the coarse level";
-    const render::HizBounds huge = render::hiz_bounds(v, glm::dvec3(0.0, 0.0, -10.0), 8.0);
+    const render::HizBounds huge = render::hiz_bounds(v, glm::vec3(0.0, 0.0, -10.0), 8.0f);
     EXPECT_EQ(huge.w, 0u) << "more than 64 coarse tiles: untested";
 }
 
 TEST(HizBounds, NoTestAcrossTheNearPlaneBehindTheEyeOrOffScreen) {
     const render::HizView v = view_of();
-    EXPECT_EQ(render::hiz_bounds(v, glm::dvec3(0.0, 0.0, -0.15), 0.1).w, 0u);
-    EXPECT_EQ(render::hiz_bounds(v, glm::dvec3(0.0, 0.0, 5.0), 1.0).w, 0u);
-    EXPECT_EQ(render::hiz_bounds(v, glm::dvec3(100.0, 0.0, -10.0), 0.5).w, 0u);
+    EXPECT_EQ(render::hiz_bounds(v, glm::vec3(0.0, 0.0, -0.15), 0.1f).w, 0u);
+    EXPECT_EQ(render::hiz_bounds(v, glm::vec3(0.0, 0.0, 5.0), 1.0f).w, 0u);
+    EXPECT_EQ(render::hiz_bounds(v, glm::vec3(100.0, 0.0, -10.0), 0.5f).w, 0u);
 }
 
 TEST(HizBounds, ASphereAcrossTheScreenEdgeIsClampedToIt) {
     const render::HizView v = view_of();
     // Half off the right edge: x = tan(25 deg) * 4/3 * 10 is the edge at depth 10.
     const double edge = std::tan(glm::radians(25.0)) * (4.0 / 3.0) * 10.0;
-    const render::HizBounds b = render::hiz_bounds(v, glm::dvec3(edge, 0.0, -10.0), 0.2);
+    const render::HizBounds b = render::hiz_bounds(v, glm::vec3(edge, 0.0, -10.0), 0.2f);
     ASSERT_EQ(b.w, 1u);
     EXPECT_EQ(rect_of(b).z, (320 - 1) / render::kDepthTileSize);
 }
@@ -77,8 +74,8 @@ class HizCullingTest : public RenderTest {
         frame.items.clear();
         sphere_ = add_mesh("sphere", geo::uv_sphere(1.0f, 48, 96));
         wall_ = add_mesh("wall", geo::grid(3, 3, 1.0f, 3));
-        frame.camera.eye = glm::dvec3(0.0, 0.0, 6.0);
-        frame.camera.target = glm::dvec3(0.0);
+        frame.camera.eye = glm::vec3(0.0, 0.0, 6.0);
+        frame.camera.target = glm::vec3(0.0);
     }
     // A 3 x 3 wall (the grid stood up to face +z) at z = 2 centred at x, and the unit sphere
     // at the origin (or at x = sphere_x); the eye at z = 6.
