@@ -13,6 +13,7 @@ uniform vec2 u_viewport;
 // gets no glow on its core; a wider, brighter beam keeps thin text and the radar legible
 // (pass_hud.cpp). (0, 1) leaves the beam as the scene's.
 uniform vec2 u_hud_beam;
+uniform float u_ink_halo_px;  // the ink theme's paper halo past the beam (hud.frag)
 
 noperspective out vec2 g_pixel;
 flat out vec2 g_p0;
@@ -32,8 +33,10 @@ void main() {
     beam.gain *= u_hud_beam.y;
     float h = beam.half_width, r = beam_end_reach(h);  // lengthened ends: beam_ends.glsl
     mark_beam_segment(s0, s1, h, r);
-    vec2 corners[4] = vec2[4](s0 - dir * r - nrm * h, s0 - dir * r + nrm * h,
-                              s1 + dir * r - nrm * h, s1 + dir * r + nrm * h);
+    // The quad reaches the halo too (the ink composite's reach covers it past the marks).
+    float qh = h + u_ink_halo_px, qr = r + u_ink_halo_px;
+    vec2 corners[4] = vec2[4](s0 - dir * qr - nrm * qh, s0 - dir * qr + nrm * qh,
+                              s1 + dir * qr - nrm * qh, s1 + dir * qr + nrm * qh);
     for (int k = 0; k < 4; ++k) {
         g_pixel = corners[k];
         g_p0 = s0;

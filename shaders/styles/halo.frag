@@ -62,10 +62,15 @@ void main() {
     o_color = vec4(strength, line_inv, 0.0, 1.0);
 #else
     float ink = 0.0;
+    // The offsets move a stroke by at most kMaxOffsetPx (style_textures.cpp: offsets within
+    // [-1, 1], times 1.2): past that no stroke reaches the fragment, and its texture taps are
+    // skipped (a fifth of the quad's fragments, which stroke.vert sizes with a margin).
+    const float kMaxOffsetPx = 1.2;
+    bool in_reach = out_d >= -u_inner_px - kMaxOffsetPx && out_d <= u_outer_px + kMaxOffsetPx;
     if (g_kind == KIND_SILHOUETTE || g_kind == 2u) {
-        for (int k = 0; k < u_strokes; ++k) {
+        for (int k = 0; k < u_strokes && in_reach; ++k) {
             vec2 o = texture(u_offset, g_pixel / 97.0 + vec2(0.37, 0.61) * float(k)).rg;
-            float x = (out_d + o.x * 1.2 + u_inner_px) / (u_inner_px + u_outer_px);
+            float x = (out_d + o.x * kMaxOffsetPx + u_inner_px) / (u_inner_px + u_outer_px);
             if (x < 0.0 || x > 1.0) continue;
             float row = (float(k % 4) + 0.5) / 4.0;
             ink = max(ink, texture(u_profile, vec2(x, row)).r * mix(0.6, 1.0, o.y * 0.5 + 0.5));

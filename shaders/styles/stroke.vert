@@ -138,16 +138,37 @@ void main() {
         // |h10| and |h11| peak at 4/27 of the chord.
         bulge = (abs(g_slopes.x) + abs(g_slopes.y)) * len * (4.0 / 27.0);
     }
-    float reach_out = u_outer_px + (kind == EDGE_SILHOUETTE ? u_halo_px : 0.0) + bulge + 2.0;
+#ifdef HALO_GLOW
+    // The glow lies outside the smoothed silhouette only (halo.frag), which bends inward by at
+    // most the bulge; other edges cast none, so their quads are empty and mark no tile (the
+    // halo's paper layer runs over the marked tiles, pass_halo.cpp).
+    if (kind != EDGE_SILHOUETTE) {
+        gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
+        return;
+    }
+    float reach_out = u_outer_px + u_halo_px + bulge + 2.0;
+    float reach_in = bulge + 2.0;
+#else
+    // The ink reaches u_outer_px + 1.2 px (its offsets) from the curve, measured across it:
+    // along nrm that is up to sqrt(1 + slope^2) further, and the slope is at most
+    // |slope0| + |slope1|. Reaching out as far as the halo cost the ink pass ~3x its area.
+    float steepest = abs(g_slopes.x) + abs(g_slopes.y);
+    float reach_out = (u_outer_px + 2.0) * sqrt(1.0 + steepest * steepest) + bulge;
     float reach_in = u_inner_px + bulge + 2.0;
+#endif
     bool up = kind != EDGE_SILHOUETTE || dot(outward, nrm) > 0.0;
     lo = up ? reach_in : reach_out;
     hi = up ? reach_out : reach_in;
     ext = max(u_inner_px, u_outer_px) + 1.0;
 #endif
 #ifdef HALO_GLOW
-    // The halo is laid over the tiles its quads may cover (pass_halo.cpp); once per quad.
-    if (uint(gl_VertexID) % EDGE_VERTICES == 0u) mark_beam_segment(s0, s1, max(lo, hi), ext);
+    // The halo is laid over the tiles its quads may cover (pass_halo.cpp); once per quad. The
+    // quad spans -lo .. +hi across the edge, mostly outward: the band around its middle, not
+    // max(lo, hi) to both sides (a fifth fewer tiles along a long silhouette).
+    if (uint(gl_VertexID) % EDGE_VERTICES == 0u) {
+        vec2 middle = nrm * (0.5 * (hi - lo));
+        mark_beam_segment(s0 + middle, s1 + middle, 0.5 * (lo + hi), ext);
+    }
 #endif
     int k = kCorner[uint(gl_VertexID) % EDGE_VERTICES];
     vec2 end = k < 2 ? s0 - dir * ext : s1 + dir * ext;

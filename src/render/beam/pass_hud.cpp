@@ -40,6 +40,9 @@ void pass_hud(const PassContext& ctx) {
     gl::PipelineState state;
     state.blend = ctx.settings.beam.blend == BeamBlend::additive ? gl::Blend::add : gl::Blend::max;
     gl::apply(state);
+    // The ink theme's halo is in alpha (shaders/hud/hud.frag): the strongest line's, not a sum.
+    if (ctx.style.hud.ink)
+        glBlendEquationSeparate(state.blend == gl::Blend::add ? GL_FUNC_ADD : GL_MAX, GL_MAX);
     const bool after_bloom = ctx.picture && ctx.picture->bloom;
     const bool mark_lit = after_bloom && t.lit_tiles && ctx.settings.sparse_composite;
     const gl::Program& p = mark_lit ? ctx.programs.hud_lit_tiles : ctx.programs.hud;
@@ -51,6 +54,7 @@ void pass_hud(const PassContext& ctx) {
     // (RenderSettings::hud_glow: before it, as the scene's lines).
     const bool without_glow = !ctx.style.hud.ink && !ctx.settings.hud_glow;
     p.set("u_hud_beam", without_glow ? hud_beam_without_glow(t.height) : glm::vec2(0.0f, 1.0f));
+    p.set("u_ink_halo_px", ctx.style.hud.ink ? std::max(ctx.style.hud.halo_px, 0.0f) : 0.0f);
     if (mark_lit) {
         bind_lit_tile_marks(p, t, true);
     } else if (frame_wrote(ctx, Resource::beam_tiles)) {

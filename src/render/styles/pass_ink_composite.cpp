@@ -13,12 +13,12 @@ namespace {
 // half_width + R of the line lies in a marked tile while R <= a quarter tile + 1 px.
 constexpr float kMarkSlackPx = static_cast<float>(kScreenTileSize) / 4.0f + 1.0f;
 
-// The screen tiles past the marked ones that the ink composite may change: its paper halo
-// samples the lines target up to halo_px away, bilinearly (one pixel more). 0 for the usual
-// halo of a few pixels; InkCompositeTilesTest holds the slack to what the marks give.
+// The screen tiles past the marked ones that the ink composite may change: the HUD pass
+// writes its paper halo up to halo_px past each line's beam (shaders/hud/hud.frag). 0 for
+// the usual halo of a few pixels; InkCompositeTilesTest holds the slack to what the marks give.
 int halo_reach_tiles(const HudTheme& hud) {
     if (!hud.ink) return 0;
-    const float past_marks_px = std::max(0.0f, hud.halo_px + 1.0f - kMarkSlackPx);
+    const float past_marks_px = std::max(0.0f, hud.halo_px - kMarkSlackPx);
     return static_cast<int>(std::ceil(past_marks_px / static_cast<float>(kScreenTileSize)));
 }
 
@@ -27,7 +27,6 @@ void set_theme_uniforms(const gl::Program& p, const PassContext& ctx) {
     const HudTheme& hud = ctx.style.hud;
     p.set("u_ink", hud.ink);
     p.set("u_ink_luminance", hud.ink_luminance);
-    p.set("u_halo_px", hud.halo_px);
     p.set("u_paper", ctx.style.background);
 }
 
@@ -35,11 +34,11 @@ void set_theme_uniforms(const gl::Program& p, const PassContext& ctx) {
 
 // Filled styles: the canvas is the picture; the HUD lines are laid over it in the style's
 // HUD theme (shaders/styles/ink_composite.frag). Where neither the HUD nor its halo reaches,
-// that shader returns the canvas unchanged, and on llvmpipe its halo taps cost ~40 ms a frame
-// at 1280x720 when run on every pixel (docs/measurements/styles-sweep.md). So the canvas is
-// copied to the target whole (a blit), and the shader runs only over the screen tiles the
-// HUD pass marked (Targets::beam_tiles, cleared by pass_fill; beam lines on a filled style
-// mark theirs too, pass_lines), grown by the halo's reach past the marks' own slack.
+// that shader returns the canvas unchanged, and on llvmpipe it cost ~40 ms a frame at
+// 1280x720 when run on every pixel with its halo's 16 taps (docs/measurements/styles-sweep.md). So
+// the canvas is copied to the target whole (a blit), and the shader runs only over the screen tiles
+// the HUD pass marked (Targets::beam_tiles, cleared by pass_fill; beam lines on a filled style mark
+// theirs too, pass_lines), grown by the halo's reach past the marks' own slack.
 // RenderSettings::sparse_composite off runs it on every pixel: the same picture, to compare.
 void pass_ink_composite(const PassContext& ctx) {
     const int w = ctx.targets.width, h = ctx.targets.height;
