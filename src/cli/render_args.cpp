@@ -19,7 +19,8 @@ const std::string& render_usage() {
             "                       [--color r,g,b] [--out frame.png]\n"
             "                       [--mask mask.png] [--repeat N] [--copies N] [--beam "
             "classic|mame]\n"
-            "                       [--lit-share] [--no-cluster-culling] [--svg lines.svg]\n"
+            "                       [--lit-share] [--no-cluster-culling] [--material-lines]\n"
+            "                       [--svg lines.svg]\n"
             "                       [--overwrite]\n"
             "Renders a model file (or builtin:cube, builtin:sphere, builtin:grid) headless to PNG. "
             "Without "
@@ -38,6 +39,8 @@ const std::string& render_usage() {
             "--beam picks the vector beam's look (default mame, as `play` and `bench`).\n"
             "--no-cluster-culling draws whole meshes in the depth prepass and the fills (the same\n"
             "picture; for timing what culling triangle clusters saves).\n"
+            "--material-lines draws the edges between faces of different materials as lines too\n"
+            "(a model whose parts have their own materials; a level's [render] material_lines).\n"
             "--lit-share prints the share of the picture's pixels whose brightest channel is "
             "above\n"
             "1/255 (the haze figure; tools/haze measures Bernardoni 2018's hallway with it).\n"
@@ -78,6 +81,8 @@ RenderOptions parse_render_args(Args args) {
             o.lit_share = true;
         else if (a == "--no-cluster-culling")
             o.cluster_culling = false;
+        else if (a == "--material-lines")
+            o.material_lines = true;
         else if (a == "--overwrite")
             o.overwrite = true;
         else if (a == "--style") {

@@ -30,6 +30,7 @@ struct RenderOptions {
     std::string beam{render::kDefaultBeamLook};
     bool lit_share = false;
     bool cluster_culling = true;  // --no-cluster-culling: whole meshes in prepass and fills
+    bool material_lines = false;  // --material-lines: edges between materials are lines too
     bool overwrite = false;       // may replace an existing file that is not a PNG
 };
 
