@@ -235,6 +235,7 @@ int run(const BenchOptions& o) {
         if (ec) throw UserError(so.masks_dir.string() + ": cannot create: " + ec.message());
         so.rounds = o.rounds;
         so.auto_compute_from_triangles = profile.threshold();
+        so.material_lines = settings.material_lines;
         const SweepResult result =
             run_sweep(frames, scene.meshes(), o.size.x, o.size.y, timing, so);
         meta.load_after = load_average();
