@@ -20,7 +20,7 @@ struct MeshEdge {
     uint opp_a;       // face A's third vertex
     uint opp_b;       // face B's third vertex, 0xFFFFFFFF without face B
     float cos_dihedral;
-    uint flags;       // 0 interior, 1 boundary, 2 non-manifold, 3 inconsistent
+    uint flags;       // 0 interior, 1 boundary, 2 non-manifold, 3 inconsistent; | 16 material
     uint face_a;      // face A's triangle, into face_normals
     uint face_b;      // face B's triangle, 0xFFFFFFFF without face B
     uint id;          // stable id for per-edge seeds (the list's order before clustering)
@@ -48,6 +48,9 @@ uniform float u_sample_margin;  // pixels around the viewport that spine samples
 uniform float u_sample_spacing; // pixels between spine samples
 uniform uint u_mesh_id;
 uniform bool u_skip_back_faces;
+// Draw material boundaries (MeshEdge flag 16, geo::kEdgeMaterialBoundary) as lines; set only
+// for a mesh that has them.
+uniform bool u_material_lines;
 uniform mat4 u_proj;
 uniform vec2 u_viewport;
 uniform float u_near;
@@ -64,6 +67,7 @@ uniform float u_hiz_abs;
 #include "edge_geometry.glsl"
 
 const uint kNoVertex = 0xFFFFFFFFu;
+const uint kEdgeMaterialBoundary = 16u;  // geo::kEdgeMaterialBoundary
 
 vec3 position(uint v) { return vec3(positions[3u * v], positions[3u * v + 1u], positions[3u * v + 2u]); }
 vec3 vertex_normal(uint v) {
@@ -163,7 +167,14 @@ void main() {
             kind = EDGE_SILHOUETTE;
         } else {
             if (!front_a && u_skip_back_faces) return;
-            if (!(me.cos_dihedral < instance_params(inst).x)) return;
+            float cos_crease = instance_params(inst).x;
+            if (!(me.cos_dihedral < cos_crease)) {
+                // Not a crease: still a line as a material boundary, with the geometry
+                // shader's rule (none for an object past the creases' distance LOD).
+                if (!(u_material_lines && cos_crease >= -1.0 &&
+                      (me.flags & kEdgeMaterialBoundary) != 0u)) return;
+                flags |= EDGE_MATERIAL;
+            }
             kind = EDGE_CREASE;  // a < b: the face that walks low -> high, as the geometry shader
         }
     }

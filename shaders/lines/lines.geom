@@ -1,5 +1,6 @@
 #version 450 core
-// Finds silhouette, crease and boundary edges of each triangle (GL_TRIANGLES_ADJACENCY:
+// Finds silhouette, crease and boundary edges (and material boundaries, when asked) of each
+// triangle (GL_TRIANGLES_ADJACENCY:
 // triangle 0-2-4, neighbour vertices 1, 3, 5) and extrudes each visible edge into a
 // screen-space quad of constant pixel half-width, extended at both ends for round caps.
 #include "../beam/beam_width.glsl"
@@ -16,6 +17,11 @@ in VertexData {
 // Cosine of the dihedral angle of each triangle edge, precomputed from object-space normals
 // on the CPU (view-independent); 2.0 on edges without a usable neighbour.
 layout(std430, binding = EDGE_COSINES_BINDING) readonly buffer EdgeCosines { float edge_cos[]; };
+// Per triangle, bit e set where edge e is a material boundary (geo::AdjacencyMesh::
+// material_edges, view-independent like the cosines). Read only when u_material_lines is set,
+// which the renderer sets only for a mesh that has material boundaries.
+layout(std430, binding = EDGE_MATERIALS_BINDING) readonly buffer EdgeMaterials { uint edge_materials[]; };
+uniform bool u_material_lines;
 
 // The frame's per-instance data (render::InstanceData): colour (rgb * intensity) and
 // parameters (x: cos(crease angle), z: intensity).
@@ -88,6 +94,9 @@ void main() {
     vec3 face = plane_of(n_view, p0);
     float cos_crease = instance_params(v_in[0].instance).x;
     int base = gl_PrimitiveIDIn * 3;
+    // Material boundaries follow the creases' distance LOD: an object too small for any crease
+    // (cos_crease below -1) draws none.
+    uint material_bits = u_material_lines && cos_crease >= -1.0 ? edge_materials[gl_PrimitiveIDIn] : 0u;
 
     for (int e = 0; e < u_edges_to_test; ++e) {
         int i0 = 2 * e, iadj = 2 * e + 1, i1 = (2 * e + 2) % 6, iopp = (2 * e + 4) % 6;
@@ -102,8 +111,10 @@ void main() {
             if (front && !neighbour_front) {
                 kind = 1;  // silhouette, emitted by the front face
             } else if (front == neighbour_front && v_in[i0].vertex_id < v_in[i1].vertex_id &&
-                       edge_cos[base + e] < cos_crease) {
-                kind = 0;  // crease, emitted once: by the face that sees the edge low -> high
+                       (edge_cos[base + e] < cos_crease || (material_bits & (1u << e)) != 0u)) {
+                // crease or material boundary, emitted once: by the face that sees the edge
+                // low -> high
+                kind = 0;
                 other = plane_of(n_nb, q);
             }
         }

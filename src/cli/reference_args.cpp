@@ -7,7 +7,8 @@ namespace bz::app {
 const char* const kReferenceUsage =
     "usage: beamzone reference INPUT [--eye x,y,z] [--target x,y,z] [--up x,y,z] [--fov DEG]\n"
     "                          [--near N] [--far F] [--size WxH] [--style NAME]\n"
-    "                          [--crease DEG] [--mask ref.png] [--svg lines.svg] [--overwrite]\n"
+    "                          [--crease DEG] [--material-lines] [--mask ref.png]\n"
+    "                          [--svg lines.svg] [--overwrite]\n"
     "       beamzone reference --level LEVEL.toml --time SECONDS [--size WxH] [--mask ref.png]\n"
     "                          [--svg lines.svg]\n"
     "Computes the exact line mask on the CPU in double precision: the geometry shader's\n"
@@ -17,6 +18,8 @@ const char* const kReferenceUsage =
     "--level puts the camera on the level's benchmark path at --time (the frame 'bench'\n"
     "renders at that simulated time, at the game's 45 degree field of view).\n"
     "--crease sets the crease angle (default 60, the renderer's).\n"
+    "--material-lines: edges between faces of different materials are lines too (as 'render\n"
+    "--material-lines'); a level's [render] material_lines = true turns them on too.\n"
     "--svg also writes the same visible lines as SVG (see 'render --svg').\n";
 
 ReferenceOptions parse_reference_args(Args args) {
@@ -35,6 +38,8 @@ ReferenceOptions parse_reference_args(Args args) {
             o.mask = cur.value(a);
         } else if (a == "--svg") {
             o.svg = cur.value(a);
+        } else if (a == "--material-lines") {
+            o.material_lines = true;
         } else if (a == "--overwrite") {
             o.overwrite = true;
         } else if (a == "--style") {

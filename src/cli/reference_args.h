@@ -18,6 +18,7 @@ struct ReferenceOptions {
     std::optional<double> time;
     scene::Style style = scene::Style::vector;
     double crease = 60.0;
+    bool material_lines = false;  // --material-lines: edges between materials are lines too
     std::string mask = "reference.png";
     std::string svg;         // also the visible lines as SVG
     bool overwrite = false;  // --mask may replace an existing file that is not a PNG

@@ -20,6 +20,7 @@ const std::string& render_usage() {
             "                       [--mask mask.png] [--repeat N] [--copies N] [--beam "
             "classic|mame]\n"
             "                       [--lit-share] [--no-cluster-culling] [--hiz-culling]\n"
+            "                       [--material-lines]\n"
             "                       [--svg lines.svg]\n"
             "                       [--overwrite]\n"
             "Renders a model file (or builtin:cube, builtin:sphere, builtin:grid) headless to PNG. "
@@ -41,6 +42,8 @@ const std::string& render_usage() {
             "picture; for timing what culling triangle clusters saves).\n"
             "--hiz-culling skips the edge clusters the depth prepass hides whole (hierarchical-Z;\n"
             "the same picture; off by default, as it did not pay where measured).\n"
+            "--material-lines draws the edges between faces of different materials as lines too\n"
+            "(a model whose parts have their own materials; a level's [render] material_lines).\n"
             "--lit-share prints the share of the picture's pixels whose brightest channel is "
             "above\n"
             "1/255 (the haze figure; tools/haze measures Bernardoni 2018's hallway with it).\n"
@@ -83,6 +86,8 @@ RenderOptions parse_render_args(Args args) {
             o.cluster_culling = false;
         else if (a == "--hiz-culling")
             o.hiz_culling = true;
+        else if (a == "--material-lines")
+            o.material_lines = true;
         else if (a == "--overwrite")
             o.overwrite = true;
         else if (a == "--style") {

@@ -12,6 +12,9 @@ namespace bz::geo {
 struct TriMesh {
     std::vector<glm::vec3> positions;
     std::vector<std::uint32_t> indices;  // 3 per triangle, counter-clockwise = front
+    // Per triangle, its material (an importer's material index); empty: one material for all.
+    // Faces of different materials meet at material boundaries (material_edges.h).
+    std::vector<std::uint32_t> face_materials;
     std::size_t triangle_count() const { return indices.size() / 3; }
 };
 
@@ -41,7 +44,12 @@ struct AdjacencyMesh {
     std::vector<std::uint32_t> triangles;  // 3 per triangle, into positions
     std::vector<std::uint32_t> adjacency;  // 6 per triangle
     std::vector<EdgeKind> edge_kinds;      // 3 per triangle
+    // 3 per triangle: 1 where the edge is interior and the face across it has another
+    // material (material_edges.h); empty when the mesh has one material. View-independent,
+    // found once by build_line_mesh; drawn only when a level or command asks (material_lines).
+    std::vector<std::uint8_t> material_edges;
     std::size_t triangle_count() const { return triangles.size() / 3; }
+    bool has_material_edges() const { return !material_edges.empty(); }
 };
 
 // What cleaning and adjacency building found, for logs and tests.

@@ -93,6 +93,9 @@ struct RenderSettings {
     std::optional<bool> overlay;
     std::optional<bool> hold_41hz;
     std::optional<std::string> line_method;  // "compute" or "geometry_shader"; none: the preset's
+    // Edges between faces of different materials (imported models' parts) drawn as lines;
+    // unset: off (render::RenderSettings::material_lines).
+    std::optional<bool> material_lines;
     // Whether the file set style / preset (else the defaults above): `play` lets a level's
     // own choice win over the player's settings file, but not a default.
     bool style_given = false;

@@ -39,6 +39,7 @@ FrameInstances frame_instances(const scene::FrameList& frame, const scene::MeshL
         inst.model_view = view * item.model;
         inst.occluder = item.occluder;
         inst.cos_crease = std::cos(glm::radians(o.crease_angle_deg));
+        inst.material_lines = o.material_lines;
         if (o.mirror_lod_creases) {
             // Same projected radius as build_batches computes.
             const geo::Bounds& b = meshes.bounds(item.mesh);
@@ -53,6 +54,8 @@ FrameInstances frame_instances(const scene::FrameList& frame, const scene::MeshL
             const double depth = std::max(-centre.z, c.near);
             const double radius_px = radius * cot / depth * height * 0.5;
             inst.cos_crease = static_cast<double>(lod_cos_crease(lod_settings, radius_px));
+            // Far objects get the one-material simplified mesh (material_lines_for).
+            if (lod_level(lod_settings, radius_px) > 0) inst.material_lines = false;
         }
         instances.push_back(inst);
         out.item_of.push_back(static_cast<std::uint32_t>(i));

@@ -16,6 +16,9 @@ struct ReferenceFrameOptions {
     // Mirror the renderer's distance LOD crease threshold (lod_cos_crease) instead of using
     // the full-detail crease angle everywhere. Off for the exact reference.
     bool mirror_lod_creases = false;
+    // Material boundaries are lines too (RenderSettings::material_lines); with
+    // mirror_lod_creases, only on objects the renderer draws at full detail (material_lines_for).
+    bool material_lines = false;
     geo::ReferenceOptions sampling;
 };
 

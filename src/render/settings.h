@@ -131,6 +131,10 @@ struct RenderSettings {
     // fragment instead. 1 px scored the same F1 as every fragment (bench --accuracy).
     float spine_sample_spacing_px = 1.0f;
     float crease_angle_deg = 60.0f;
+    // Draw the edges between faces of different materials (geo::AdjacencyMesh::material_edges)
+    // as lines, like creases. Off by default: a model's materials often split flat surfaces
+    // for textures the vector look never shows; a level turns it on ([render] material_lines).
+    bool material_lines = false;
     BloomResolution bloom_resolution = BloomResolution::half;
     int bloom_taps = 9;           // linear-sampled taps per direction (odd)
     float bloom_sigma_px = 4.0f;  // Gaussian sigma, in pixels of the bloom target

@@ -31,6 +31,7 @@ std::vector<std::string> build_defines() {
         define("ATTRIB_PARAMS", kAttribParams),
         define("ATTRIB_NORMAL", kAttribNormal),
         define("EDGE_COSINES_BINDING", kEdgeCosinesBinding),
+        define("EDGE_MATERIALS_BINDING", kEdgeMaterialsBinding),
         define("INSTANCES_BINDING", kInstancesBinding),
         define("TILE_LIST_BINDING", kTileListBinding),
         define("EDGE_LIST_BINDING", kEdgeListBinding),

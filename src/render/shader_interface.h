@@ -41,6 +41,7 @@ inline constexpr unsigned kVertexBufferNormals = 2;
 inline constexpr unsigned kEdgeCosinesBinding = 0;  // lines.geom: 3 crease cosines per triangle
 inline constexpr unsigned kInstancesBinding = 1;    // the frame's InstanceData
 inline constexpr unsigned kTileListBinding = 6;  // the composite's lit-tile list (tile_list.comp)
+inline constexpr unsigned kEdgeMaterialsBinding = 11;  // lines.geom: material boundary bits
 
 // Texture units, one per sampler role.
 inline constexpr unsigned kTextureUnitDepth = 0;       // the prepass depth (spine test, outlines)

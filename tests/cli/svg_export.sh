@@ -41,6 +41,21 @@ for m in PLY/Wuson.ply OBJ/spider.obj glTF/CesiumMilkTruck/CesiumMilkTruck.gltf 
   score "$name" 320 240
 done
 
+# Material lines: a cube whose faces come in three materials, one face split along its
+# diagonal; the edges between materials go to a group of their own and still match the
+# reference that draws them too. Without --material-lines that group stays empty.
+cube_mat=$models/OBJ/cube_usemtl.obj
+expect 0 "" render "$cube_mat" --size 320x240 --material-lines --out "$work/m.png" \
+  --svg "$work/material.svg"
+expect 0 "" reference "$cube_mat" --size 320x240 --material-lines --mask "$work/material-ref.png"
+score material 320 240
+grep -A1 '<g id="material"' "$work/material.svg" | grep -q '<path' ||
+  fail "material SVG has no path in its material group"
+expect 0 "" render "$cube_mat" --size 320x240 --out "$work/m.png" --svg "$work/plain.svg"
+if grep -A1 '<g id="material"' "$work/plain.svg" | grep -q '<path'; then
+  fail "material lines drawn without --material-lines"
+fi
+
 # Another view, another style: the x-ray style hides nothing, in the SVG as in the mask.
 expect 0 "" render builtin:sphere --size 200x150 --eye 0,1,4 --style vector-xray \
   --out "$work/x.png" --svg "$work/xray.svg"

@@ -230,7 +230,8 @@ bz::geo::TriMesh rectangle(double x0, double x1, double row, double rows, double
     const float y = static_cast<float>((kH * 0.5 - row - 0.5) * s),
                 h = static_cast<float>(rows * 0.5 * s);
     const float zf = static_cast<float>(z);
-    return {{{l, y - h, zf}, {r, y - h, zf}, {r, y + h, zf}, {l, y + h, zf}}, {0, 1, 2, 0, 2, 3}};
+    return {
+        {{l, y - h, zf}, {r, y - h, zf}, {r, y + h, zf}, {l, y + h, zf}}, {0, 1, 2, 0, 2, 3}, {}};
 }
 
 // Where along row `y` the brightness first and last reaches half of the row's peak, with

@@ -57,6 +57,9 @@ struct SweepOptions {
     bool progress = true;
     // The machine's measured LineMethod::automatic crossing (app/line_method_profile.h).
     std::optional<std::size_t> auto_compute_from_triangles;
+    // The level's [render] material_lines: every row but the material-lines ones (which turn
+    // them on) draws them as the level asks, and is scored against a reference that does too.
+    bool material_lines = false;
 };
 
 struct SweepResult {

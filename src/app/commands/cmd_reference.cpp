@@ -41,6 +41,7 @@ int run(const ReferenceOptions& o) {
     const double aspect = static_cast<double>(size.x) / size.y;
     render::ReferenceFrameOptions ro;
     ro.crease_angle_deg = o.crease;
+    ro.material_lines = o.material_lines;
     geo::ReferenceStats stats;
     std::vector<std::uint8_t> mask;
     std::string svg_log;
@@ -57,6 +58,8 @@ int run(const ReferenceOptions& o) {
                 std::fprintf(stderr, "%s\n", level::format(d).c_str());
             return 1;
         }
+        // The level's own switch draws them as the game would.
+        if (loaded.level->render.material_lines.value_or(false)) ro.material_lines = true;
         BenchScene scene(std::move(*loaded.level), std::nullopt);
         const scene::FrameList frame = level_frame(scene, *o.time, aspect);
         mask = render::reference_frame_mask(frame, scene.meshes(), size.x, size.y, ro, &stats);

@@ -123,6 +123,7 @@ int cmd_render(Args args) {
     settings.one_sided_outlines = o.one_sided;
     settings.cluster_culling = o.cluster_culling;
     settings.hiz_culling = o.hiz_culling;
+    settings.material_lines = o.material_lines;
     // A one-off frame measures nothing: it uses the machine's kept crossing, if any.
     const LineMethodProfile line_methods = user_line_method_profile(Calibration::kept_only);
     settings.auto_compute_from_triangles = line_methods.threshold();
@@ -148,9 +149,12 @@ int cmd_render(Args args) {
         write_png(o.mask,
                   Image{o.camera.size.x, o.camera.size.y, 1, renderer.render_mask(frame, meshes)});
     if (!o.svg.empty()) {
+        render::FrameSvgOptions svg;
+        svg.reference.crease_angle_deg = settings.crease_angle_deg;
+        svg.reference.material_lines = settings.material_lines;
         std::fprintf(
             stdout, "%s\n",
-            export_frame_svg(o.svg, frame, meshes, o.camera.size.x, o.camera.size.y).c_str());
+            export_frame_svg(o.svg, frame, meshes, o.camera.size.x, o.camera.size.y, svg).c_str());
     }
     print_timings(renderer, timings);
     if (context->debug().error_count() > 0) {

@@ -105,6 +105,11 @@ PlayLook choose_look(const LookSources& s, const level::Level* level) {
         look.render.bloom_strength = static_cast<float>(*lv->bloom_strength);
         look.summary += ", bloom strength " + number(*lv->bloom_strength) + " (level)";
     }
+    if (lv->material_lines) {
+        look.render.material_lines = *lv->material_lines;
+        look.summary +=
+            std::string(", material lines ") + (*lv->material_lines ? "on" : "off") + " (level)";
+    }
     return look;
 }
 

@@ -60,6 +60,7 @@ std::vector<std::uint32_t> meshlet_of_triangles(const AdjacencyMesh& mesh) {
 
 float crease_key(const MeshEdge& e) {
     if (e.face_b == kNoVertex || e.opp_b == kNoVertex) return kAlwaysFeatureKey;
+    if (e.flags & kEdgeMaterialBoundary) return kMaterialKey;
     if (std::isnan(e.cos_dihedral)) return 2.0f;
     return e.cos_dihedral >= 1.0f ? kFlatKey : e.cos_dihedral;
 }

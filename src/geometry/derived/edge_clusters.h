@@ -27,6 +27,11 @@ inline constexpr std::uint32_t kMaxClusterEdges = 64;
 // feature at every view) sorts first.
 inline constexpr float kAlwaysFeatureKey = -3.0f;
 
+// The crease key of a material boundary (kEdgeMaterialBoundary): below every threshold the
+// crease test uses, so it is always tested (edges.comp draws it when material lines are on,
+// else only when it is a crease or a silhouette), even between coplanar faces.
+inline constexpr float kMaterialKey = -2.5f;
+
 // The crease key of an edge between coplanar faces (its cos_dihedral rounds to 1): never a
 // crease, and a silhouette only when the eye lies in the faces' plane (within the float
 // rounding of their normals), where the edge lies along the plane's own outline. It sorts last
@@ -44,7 +49,8 @@ struct EdgeCluster : ClusterBounds {
 struct ClusteredEdges {
     std::vector<MeshEdge> edges;  // every edge of the list, cluster by cluster
     // Per edge, what the crease test compares with the instance's cos(crease angle): the
-    // edge's cos_dihedral, kAlwaysFeatureKey without face B, kFlatKey between coplanar faces,
+    // edge's cos_dihedral, kAlwaysFeatureKey without face B, kMaterialKey for a material
+    // boundary, kFlatKey between coplanar faces,
     // 2 where the cosine is not a number. Ascending inside each cluster.
     std::vector<float> crease_keys;
     std::vector<EdgeCluster> clusters;

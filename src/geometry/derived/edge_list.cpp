@@ -44,6 +44,8 @@ std::vector<MeshEdge> build_edge_list(const AdjacencyMesh& mesh) {
                 const auto b_side = high_to_low.find(key(m.b, m.a));
                 // Always found: build_line_mesh marks an edge interior only with its twin.
                 if (b_side != high_to_low.end()) m.face_b = b_side->second;
+                if (mesh.has_material_edges() && mesh.material_edges[slot])
+                    m.flags |= kEdgeMaterialBoundary;
             } else {
                 m.flags = static_cast<std::uint32_t>(kind);
             }

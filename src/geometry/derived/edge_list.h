@@ -23,6 +23,9 @@ inline constexpr std::uint32_t kEdgeInterior = 0u;
 inline constexpr std::uint32_t kEdgeBoundary = 1u;
 inline constexpr std::uint32_t kEdgeNonManifold = 2u;
 inline constexpr std::uint32_t kEdgeInconsistent = 3u;
+inline constexpr std::uint32_t kEdgeKindMask = 0xFu;  // the kinds above; flag bits follow
+// An interior edge between faces of different materials (AdjacencyMesh::material_edges).
+inline constexpr std::uint32_t kEdgeMaterialBoundary = 1u << 4;
 
 // 36 bytes, the std430 layout of shaders/lines/edges.comp's MeshEdge.
 struct MeshEdge {
@@ -30,7 +33,8 @@ struct MeshEdge {
     std::uint32_t opp_a = 0;          // face A's third vertex
     std::uint32_t opp_b = kNoVertex;  // face B's third vertex; kNoVertex when there is no face B
     float cos_dihedral = 2.0f;        // unit normals' dot (double, object space); 2 without face B
-    std::uint32_t flags = kEdgeInterior;  // kEdge* (the EdgeKind of the triangle edge)
+    std::uint32_t flags = kEdgeInterior;  // kEdge* (the EdgeKind of the triangle edge), and
+                                          // kEdgeMaterialBoundary
     std::uint32_t face_a = 0;             // face A's triangle (index into face_normals)
     std::uint32_t face_b = kNoVertex;     // face B's triangle; kNoVertex without face B
     // The edge's place in build_edge_list's order: stable however the list is regrouped

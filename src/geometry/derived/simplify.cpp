@@ -19,7 +19,8 @@ std::optional<AdjacencyMesh> simplify_line_mesh(const AdjacencyMesh& mesh,
     if (n == 0 || static_cast<double>(n / 3) > static_cast<double>(tris) * o.min_gain)
         return std::nullopt;
     out.resize(n);
-    TriMesh reduced{mesh.positions, std::move(out)};
+    // meshoptimizer merges faces across material boundaries: a simplified mesh has one material.
+    TriMesh reduced{mesh.positions, std::move(out), {}};
     AdjacencyMesh result = build_line_mesh(reduced);
     if (result.triangle_count() == 0) return std::nullopt;
     return result;

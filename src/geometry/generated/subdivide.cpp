@@ -36,7 +36,7 @@ TriMesh split(const TriMesh& in) {
 AdjacencyMesh subdivide_flat(const AdjacencyMesh& mesh, int levels) {
     if (levels < 0 || levels > 6)
         throw std::invalid_argument("subdivide_flat: levels must be in [0, 6]");
-    TriMesh m{mesh.positions, mesh.triangles};
+    TriMesh m{mesh.positions, mesh.triangles, {}};
     for (int i = 0; i < levels; ++i) m = split(m);
     return build_line_mesh(m);
 }

@@ -122,6 +122,9 @@ struct Walk {
                     fail_import(path, "vertex index out of range");
                 out.indices.push_back(base + face.mIndices[k]);
             }
+            // Each aiMesh has one material; a model's meshes become one object, so faces from
+            // different meshes keep theirs apart for material boundaries.
+            out.face_materials.push_back(mesh.mMaterialIndex);
         }
     }
 

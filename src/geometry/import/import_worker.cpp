@@ -45,7 +45,7 @@ enum class Frame : char { mesh = 'M', error = 'E', out_of_memory = 'O' };
 struct FrameHeader {
     char kind = 0;
     std::uint64_t a = 0;  // mesh: positions; error: message bytes
-    std::uint64_t b = 0;  // mesh: indices
+    std::uint64_t b = 0;  // mesh: indices (then b / 3 face materials)
 };
 constexpr std::size_t kHeaderBytes = 1 + 8 + 8;
 // How often the parent looks at the child's resident memory.
@@ -113,6 +113,10 @@ void cap_child_memory(std::uint64_t bytes) {
         send_header(out, Frame::mesh, mesh.positions.size(), mesh.indices.size());
         write_all(out, mesh.positions.data(), mesh.positions.size() * sizeof(glm::vec3));
         write_all(out, mesh.indices.data(), mesh.indices.size() * sizeof(std::uint32_t));
+        // One material per triangle follows the indices (zeros when the mesh has none).
+        std::vector<std::uint32_t> materials = mesh.face_materials;
+        materials.resize(mesh.triangle_count(), 0);
+        write_all(out, materials.data(), materials.size() * sizeof(std::uint32_t));
     } catch (const UserError& e) {
         send_text(out, Frame::error, e.what());
     } catch (const std::bad_alloc&) {
@@ -219,6 +223,9 @@ class Receiver {
                 mesh_.indices.resize(b);
                 add(reinterpret_cast<char*>(mesh_.positions.data()), a * sizeof(glm::vec3));
                 add(reinterpret_cast<char*>(mesh_.indices.data()), b * sizeof(std::uint32_t));
+                mesh_.face_materials.resize(b / 3);
+                add(reinterpret_cast<char*>(mesh_.face_materials.data()),
+                    b / 3 * sizeof(std::uint32_t));
                 return true;
             case Frame::error:
             case Frame::out_of_memory:

@@ -10,8 +10,10 @@ namespace bz::geo {
 
 // Drops triangles that repeat a vertex or whose area is exactly zero (cross product computed
 // in double, so only truly collinear corners count). Returns how many were dropped.
+// `face_tags` (one per triangle, e.g. its material), when given, is kept in step.
 std::size_t remove_degenerate(const std::vector<glm::vec3>& positions,
-                              std::vector<std::uint32_t>& triangles);
+                              std::vector<std::uint32_t>& triangles,
+                              std::vector<std::uint32_t>* face_tags = nullptr);
 
 struct CoincidentCounts {
     std::size_t duplicates = 0;  // same vertices, same winding: all but the first dropped
@@ -23,9 +25,11 @@ struct CoincidentCounts {
 // with more of the settled faces across its edges; faces settled this way vote for the twins
 // next to them, so a twin-faced region takes the winding of the single-sided surface it
 // touches. A region with no such surface keeps the first face of its first pair and spreads
-// that winding. Expected O(n).
+// that winding. Expected O(n). `face_tags` (one per triangle), when given, is kept in step:
+// a kept face keeps its own tag.
 CoincidentCounts remove_coincident_faces(std::vector<std::uint32_t>& triangles,
-                                         std::size_t vertex_count);
+                                         std::size_t vertex_count,
+                                         std::vector<std::uint32_t>* face_tags = nullptr);
 
 // Drops vertices no triangle uses and renumbers the rest in order of first use.
 void compact_vertices(std::vector<glm::vec3>& positions, std::vector<std::uint32_t>& triangles);

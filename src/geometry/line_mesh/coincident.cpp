@@ -60,20 +60,24 @@ class FaceTable {
     int shift_;
 };
 
-void erase_dropped(std::vector<std::uint32_t>& tri, const std::vector<std::uint8_t>& dropped) {
+void erase_dropped(std::vector<std::uint32_t>& tri, const std::vector<std::uint8_t>& dropped,
+                   std::vector<std::uint32_t>* tags) {
     std::size_t kept = 0;
     for (std::size_t f = 0; f < dropped.size(); ++f) {
         if (dropped[f]) continue;
+        if (tags) (*tags)[kept / 3] = (*tags)[f];
         for (std::size_t k = 0; k < 3; ++k) tri[kept + k] = tri[3 * f + k];
         kept += 3;
     }
     tri.resize(kept);
+    if (tags) tags->resize(kept / 3);
 }
 
 }  // namespace
 
 CoincidentCounts remove_coincident_faces(std::vector<std::uint32_t>& triangles,
-                                         std::size_t vertex_count) {
+                                         std::size_t vertex_count,
+                                         std::vector<std::uint32_t>* face_tags) {
     const std::size_t faces = triangles.size() / 3;
     std::vector<std::uint8_t> dropped(faces, 0);
     std::vector<detail::TwinPair> pairs;
@@ -92,7 +96,7 @@ CoincidentCounts remove_coincident_faces(std::vector<std::uint32_t>& triangles,
         if (reverse != kUnsetIndex) pairs.push_back({reverse, static_cast<std::uint32_t>(f)});
     }
     counts.twins = detail::resolve_twins(triangles, vertex_count, pairs, dropped);
-    if (counts.duplicates + counts.twins > 0) erase_dropped(triangles, dropped);
+    if (counts.duplicates + counts.twins > 0) erase_dropped(triangles, dropped, face_tags);
     return counts;
 }
 

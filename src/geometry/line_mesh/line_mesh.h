@@ -9,8 +9,10 @@ namespace bz::geo {
 // face of each back-to-back twin pair (see clean.h), drops unused vertices, then builds
 // adjacency (see adjacency.h). Positions keep their order of first use by the indices, and
 // triangles keep their input order, so the same input always gives the same output.
-// The report's edge counts count distinct edges, not triangle edges.
-// Throws std::invalid_argument on an index out of range.
+// The report's edge counts count distinct edges, not triangle edges. The mesh's face materials,
+// when it has them, mark the material boundaries (AdjacencyMesh::material_edges).
+// Throws std::invalid_argument on an index out of range or a material count that is not the
+// triangle count.
 AdjacencyMesh build_line_mesh(const TriMesh& mesh, MeshReport* report = nullptr);
 
 }  // namespace bz::geo

@@ -9,7 +9,8 @@
 //  - An edge whose neighbour slot marks it non-interior (a_i == v_i) is always a feature edge.
 //  - Otherwise, with neighbour U = (v_i, a_i, v_{i+1}): a silhouette iff T is front and U is
 //    not; nothing if their facing differs the other way; else a crease iff the object-space unit
-//    normals have dot < cos_crease (emitted once, by the face that sees the edge low -> high).
+//    normals have dot < cos_crease (emitted once, by the face that sees the edge low -> high);
+//    failing that, with material_lines, a material boundary when the faces' materials differ.
 //  - A point of an edge is visible iff the segment eye -> point hits no occluder triangle,
 //    other than the faces on that edge, whose hit lies at or beyond the near plane and before
 //    the point by more than a relative epsilon.
@@ -29,6 +30,10 @@ struct ReferenceInstance {
     glm::dmat4 model_view{1.0};  // object -> view space: eye at the origin, looking down -z, y up
     double cos_crease = 0.5;     // cos(60 deg), the renderer's default
     bool occluder = true;        // hides what lies behind it (DrawItem::occluder)
+    // Edges between faces of different materials (AdjacencyMesh::material_edges) are lines
+    // too, where they are no crease, as long as cos_crease >= -1 (an instance past the
+    // creases' distance LOD draws none).
+    bool material_lines = false;
 };
 
 struct ReferenceView {
@@ -53,8 +58,10 @@ struct ReferenceOptions {
 // lie in front of it (at least 1: a hidden point is behind something), capped here.
 inline constexpr int kMaxOcclusionLevel = 3;
 
-// The kinds of feature line, as the geometry shader classifies them.
-enum class LineKind : std::uint8_t { crease, silhouette, boundary };
+// The kinds of feature line, as the geometry shader classifies them. `material` is an edge
+// between faces of different materials that is neither a silhouette nor a crease (drawn with
+// ReferenceInstance::material_lines; the GPU draws it as a crease flagged material).
+enum class LineKind : std::uint8_t { crease, silhouette, boundary, material };
 
 // One visible stretch of a feature edge, split at its exact visibility changes: window
 // coordinates in pixels (OpenGL's: origin at the bottom-left, y up), on or just beyond the

@@ -39,6 +39,8 @@ void find_feature_edges(const ReferenceInstance& inst, std::uint32_t instance_in
     // A non-interior edge is emitted by every face on it; one copy is enough for a mask.
     std::unordered_set<std::uint64_t> open_edges;
     const std::size_t tris = m.triangle_count();
+    // The shaders' rule: material boundaries when asked, except past the creases' LOD.
+    const bool materials = inst.material_lines && m.has_material_edges() && inst.cos_crease >= -1.0;
     for (std::size_t t = 0; t < tris; ++t) {
         const std::uint32_t* adj = &m.adjacency[t * 6];
         const glm::dvec3 n_view = face_normal(vp[adj[0]], vp[adj[2]], vp[adj[4]]);
@@ -65,6 +67,9 @@ void find_feature_edges(const ReferenceInstance& inst, std::uint32_t instance_in
                 unit(face_normal(object_pos(m, v0), object_pos(m, va), object_pos(m, v1)));
             if (glm::dot(n_obj, m_obj) < inst.cos_crease) {
                 fe.kind = FeatureKind::crease;
+                out.push_back(fe);
+            } else if (materials && m.material_edges[t * 3 + static_cast<std::size_t>(e)]) {
+                fe.kind = FeatureKind::material;
                 out.push_back(fe);
             }
         }

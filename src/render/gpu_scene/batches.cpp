@@ -46,6 +46,10 @@ int lod_level(const RenderSettings& s, double radius_px) {
     return s.lod && radius_px < kFarRadiusPx ? 1 : 0;
 }
 
+bool material_lines_for(const RenderSettings& s, const Batch& batch, const GpuMesh& mesh) {
+    return s.material_lines && mesh.has_material_edges && batch.lod == 0;
+}
+
 float lod_cos_crease(const RenderSettings& s, double radius_px) {
     double angle = s.crease_angle_deg;
     if (s.lod) {

@@ -39,4 +39,9 @@ float lod_cos_crease(const RenderSettings& settings, double radius_px);
 // The mesh detail an object gets at that projected radius: 0 full, 1 simplified.
 int lod_level(const RenderSettings& settings, double radius_px);
 
+// Whether a batch draws its mesh's material boundaries: when the settings ask, the mesh has
+// some, and the batch is at full detail (a simplified mesh has one material, so far objects
+// draw none whichever mesh they get; the reference mirrors this rule).
+bool material_lines_for(const RenderSettings& settings, const Batch& batch, const GpuMesh& mesh);
+
 }  // namespace bz::render

@@ -26,6 +26,15 @@ void instance_attributes(gl::VertexArray& vao, const gl::Buffer& instances, bool
     }
 }
 
+// The geometry shader's per-triangle material boundary bits; one zero word without any.
+std::vector<std::uint32_t> material_edge_bits(const geo::AdjacencyMesh& mesh) {
+    if (!mesh.has_material_edges()) return {0u};
+    std::vector<std::uint32_t> bits(mesh.triangle_count(), 0u);
+    for (std::size_t h = 0; h < mesh.material_edges.size(); ++h)
+        if (mesh.material_edges[h]) bits[h / 3] |= 1u << (h % 3);
+    return bits;
+}
+
 }  // namespace
 
 const GpuMesh& MeshCache::get(const scene::MeshLibrary& library, scene::MeshId id, int lod) {
@@ -84,6 +93,9 @@ void MeshCache::upload(GpuMesh& gpu, const geo::AdjacencyMesh& mesh) {
     gpu.outward_closed = geo::is_outward_closed(mesh);
     const std::vector<float> cosines = geo::edge_dihedral_cosines(mesh);
     gpu.edge_cosines.set(std::span<const float>(cosines), GL_STATIC_DRAW);
+    const std::vector<std::uint32_t> material_bits = material_edge_bits(mesh);
+    gpu.edge_materials.set(std::span<const std::uint32_t>(material_bits), GL_STATIC_DRAW);
+    gpu.has_material_edges = mesh.has_material_edges();
     if (edge_lists_) upload_edges(gpu, mesh);
     gpu.adjacency_count = static_cast<GLsizei>(mesh.adjacency.size());
     gpu.triangle_index_count = static_cast<GLsizei>(mesh.triangles.size());

@@ -47,6 +47,11 @@ struct GpuMesh {
     std::vector<geo::TriangleCluster> triangle_clusters;
     geo::ClusterBounds triangle_bounds;  // a sphere around them all
     gl::Buffer edge_cosines;  // 3 per triangle, read by the geometry shader (kEdgeCosinesBinding)
+    // Per triangle, bit e set where edge e is a material boundary (geo::AdjacencyMesh::
+    // material_edges), read by the geometry shader (kEdgeMaterialsBinding); one zero word when
+    // the mesh has none (has_material_edges false: the shader is told not to read it).
+    gl::Buffer edge_materials;
+    bool has_material_edges = false;
     bool has_edge_list = false;  // edge_list is filled (uploaded on first use with edge lists on)
     gl::VertexArray lines_vao;
     gl::VertexArray prepass_vao;

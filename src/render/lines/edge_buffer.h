@@ -36,6 +36,8 @@ inline constexpr std::uint32_t inconsistent = 1u << 8;  // the two faces are wou
 inline constexpr std::uint32_t clipped_start = 1u
                                                << 9;  // end a was moved by near/far/guard clipping
 inline constexpr std::uint32_t clipped_end = 1u << 10;  // end b was moved
+// A crease record drawn only because its faces have different materials (material lines on).
+inline constexpr std::uint32_t material = 1u << 11;
 }  // namespace edge_flags
 
 // One visible feature edge, 176 bytes (std430: 11 x 16). "a -> b" is the edge's direction:

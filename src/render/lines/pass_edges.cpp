@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "core/parallel_chunks.h"
+#include "render/gpu_scene/batches.h"
 #include "render/gpu_scene/cluster_culling.h"
 #include "render/lines/edge_culling.h"
 #include "render/lines/hiz_culling.h"
@@ -157,6 +158,7 @@ void pass_edges(const PassContext& ctx) {
         program.set("u_skip_back_faces",
                     (ctx.occlusion && b.eye_outside && mesh.outward_closed) ? 1 : 0);
         program.set("u_mesh_id", static_cast<unsigned>(b.mesh));
+        program.set("u_material_lines", material_lines_for(ctx.settings, b, mesh) ? 1 : 0);
         // Chunks keep the work-group count within the limit every implementation allows.
         for (std::size_t item0 = 0; item0 < d.count; item0 += kMaxGroups) {
             const auto groups =

@@ -1,6 +1,7 @@
 #include <cmath>
 
 #include "render/beam/beam_uniforms.h"
+#include "render/gpu_scene/batches.h"
 #include "render/passes.h"
 
 namespace bz::render {
@@ -110,6 +111,8 @@ void pass_lines(const PassContext& ctx, bool mask_mode) {
     for (const Batch& b : ctx.batches.batches) {
         const GpuMesh& mesh = ctx.gpu_meshes.get(ctx.meshes, b.mesh, b.lod);
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEdgeCosinesBinding, mesh.edge_cosines.id());
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEdgeMaterialsBinding, mesh.edge_materials.id());
+        program.set("u_material_lines", material_lines_for(ctx.settings, b, mesh) ? 1 : 0);
         program.set("u_skip_back_faces",
                     (ctx.occlusion && b.eye_outside && mesh.outward_closed) ? 1 : 0);
         mesh.lines_vao.bind();
