@@ -7,15 +7,11 @@
 #include "core/error.h"
 #include "game/difficulty/autopilot.h"
 #include "game/world/tuning.h"
+#include "support/default_font.h"
 #include "test_world.h"
 
 namespace bz::game {
 namespace {
-
-const scene::VectorFont& font() {
-    static const scene::VectorFont f = scene::VectorFont::load_default();
-    return f;
-}
 
 TickCommand press(bool TickCommand::*button) {
     TickCommand c;
@@ -43,7 +39,7 @@ HighScoreTable low_table() {
 
 TEST(Game, AttractStartPauseResume) {
     GameOptions o;
-    Game g(default_level(), o, &font());
+    Game g(default_level(), o, &bz::test::default_font());
     EXPECT_EQ(g.screen(), Screen::attract);
     EXPECT_EQ(g.world(), nullptr);
     for (int i = 0; i < 120; ++i) g.tick(TickCommand{});
@@ -80,7 +76,7 @@ TEST(Game, GameOverInitialsAndTable) {
     GameOptions o;
     o.lives = 1;
     o.highscores = low_table();
-    Game g(default_level(), o, &font());
+    Game g(default_level(), o, &bz::test::default_font());
     tap(g, &TickCommand::start);
     play_out(g);
     ASSERT_EQ(g.screen(), Screen::game_over)
@@ -174,7 +170,7 @@ TEST(Game, RecordingVerifiesAndReplaysThroughTheGame) {
     EXPECT_TRUE(replay::verify(parsed, default_level(), test::shared_assets()).ok);
 
     // Played back inside a Game: same end state, no mismatch, the live input ignored.
-    Game p(default_level(), GameOptions{}, &font());
+    Game p(default_level(), GameOptions{}, &bz::test::default_font());
     p.start_replay(parsed);
     ASSERT_EQ(p.screen(), Screen::playing);
     for (int i = 0; i < 60 * 120 && !p.replay_finished(); ++i) p.tick(test::drive(1, -1, true));
@@ -213,7 +209,7 @@ TEST(Game, QuitToTitleEntersAQualifyingScoreFirst) {
             for (int i = 0; i < 10; ++i) high.insert({"TOP", 9'000'000 + i});
             o.highscores = high;
         }
-        Game g(default_level(), o, &font());
+        Game g(default_level(), o, &bz::test::default_font());
         for (int i = 0; i < 60 * 180 && g.world()->score() == 0; ++i) {
             g.tick(autopilot(*g.world()));
         }
@@ -237,7 +233,7 @@ TEST(Game, QuitToTitleEntersAQualifyingScoreFirst) {
 TEST(Game, FrameHoldsWorldHorizonAndHud) {
     GameOptions o;
     o.attract = false;
-    Game g(default_level(), o, &font());
+    Game g(default_level(), o, &bz::test::default_font());
     for (int i = 0; i < 10; ++i) g.tick(TickCommand{});
     const scene::FrameList f = g.frame(0.5, 4.0 / 3.0);
     EXPECT_NEAR(f.camera.eye.y, tuning::kEyeHeight, 1e-9);

@@ -6,14 +6,13 @@
 #include <vector>
 
 #include "platform/settings.h"
+#include "platform/settings_test_util.h"
 
 namespace bz::platform {
 namespace {
 
-const std::vector<std::string> kPresets = {"fast", "balanced", "high"};
-// The style table's names (scene::accepted_style_names(); platform's tests do not link scene).
-const std::vector<std::string> kStyles = {"vector",  "vector-xray", "toon",     "sketch",
-                                          "pop-art", "halo",        "occluded", "arcade"};
+using test::kPresets;
+using test::kStyles;
 
 TEST(SettingsDifficulty, DefaultLetsTheLevelChoose) {
     const SettingsLoad s = parse_settings("", "settings.toml", {kPresets, kStyles});

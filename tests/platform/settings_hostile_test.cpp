@@ -6,18 +6,14 @@
 #include <string>
 
 #include "platform/settings.h"
+#include "platform/settings_test_util.h"
 
 namespace bz::platform {
 namespace {
 
-const std::vector<std::string> kPresets = {"fast", "balanced", "high"};
-// The style table's names (scene::accepted_style_names(); platform's tests do not link scene).
-const std::vector<std::string> kStyles = {"vector",  "vector-xray", "toon",     "sketch",
-                                          "pop-art", "halo",        "occluded", "arcade"};
-
-SettingsLoad parse(const std::string& text) {
-    return parse_settings(text, "settings.toml", {kPresets, kStyles});
-}
+using test::kPresets;
+using test::kStyles;
+using test::parse;
 
 std::string repeat(const std::string& part, int n) {
     std::string out;

@@ -17,13 +17,14 @@ using bz::test::RenderTest;
 
 namespace {
 
-constexpr int kW = 320;
-constexpr int kH = 240;
+constexpr int kBeamW = 320;
+constexpr int kBeamH = 240;
 
 // HUD units (origin at the centre, y up, 1 = half the height) of pixel centre (x, y), row 0 at
 // the top.
 glm::vec2 hud_at(float x, float y) {
-    return {(x + 0.5f - kW * 0.5f) / (kH * 0.5f), (kH * 0.5f - y - 0.5f) / (kH * 0.5f)};
+    return {(x + 0.5f - kBeamW * 0.5f) / (kBeamH * 0.5f),
+            (kBeamH * 0.5f - y - 0.5f) / (kBeamH * 0.5f)};
 }
 
 bz::scene::HudLine line(glm::vec2 a, glm::vec2 b, float intensity) {
@@ -60,12 +61,12 @@ class BeamTest : public RenderTest {
     std::vector<float> green(const bz::scene::FrameList& f) {
         renderer->render(f, meshes, bz::render::Renderer::kOffscreen);
         const std::vector<float> rgba = renderer->read_picture_hdr();
-        std::vector<float> g(static_cast<std::size_t>(kW) * kH);
+        std::vector<float> g(static_cast<std::size_t>(kBeamW) * kBeamH);
         for (std::size_t i = 0; i < g.size(); ++i) g[i] = rgba[i * 4 + 1];
         return g;
     }
     static float at(const std::vector<float>& img, int x, int y) {
-        return img[static_cast<std::size_t>(y) * kW + x];
+        return img[static_cast<std::size_t>(y) * kBeamW + x];
     }
     static float peak(const std::vector<float>& img) {
         return *std::max_element(img.begin(), img.end());
@@ -152,7 +153,7 @@ TEST_F(BeamTest, DwellRaisesADotsPeakAboveALongVectors) {
     use(s);
     const float dot_plain = peak(green(dot)), vec_plain = peak(green(vec));
     EXPECT_NEAR(dot_plain, vec_plain, 1e-3f) << "without dwell a dot is as bright as a line";
-    s.beam.dwell_px = 20.0f * 1080.0f / kH;  // 20 px here
+    s.beam.dwell_px = 20.0f * 1080.0f / kBeamH;  // 20 px here
     s.beam.dwell_max = 3.0f;
     use(s);
     const float dot_dwell = peak(green(dot)), vec_dwell = peak(green(vec));
@@ -165,8 +166,8 @@ TEST_F(BeamTest, DwellRaisesADotsPeakAboveALongVectors) {
 TEST_F(BeamTest, IntensityWidensTheBeamAndOverdriveKeepsWideningWithoutClipping) {
     auto s = plain();
     s.beam.intensity_width = true;
-    s.beam.width_min_px = 2.0f * 1080.0f / kH;  // half-widths 1 .. 4 px on this target
-    s.beam.width_max_px = 8.0f * 1080.0f / kH;
+    s.beam.width_min_px = 2.0f * 1080.0f / kBeamH;  // half-widths 1 .. 4 px on this target
+    s.beam.width_max_px = 8.0f * 1080.0f / kBeamH;
     s.beam.intensity_weight = 0.75f;
     s.beam.nominal = 0.75f;
     s.beam.defocus = 1.5f;
@@ -176,7 +177,7 @@ TEST_F(BeamTest, IntensityWidensTheBeamAndOverdriveKeepsWideningWithoutClipping)
     for (const float intensity : {0.25f, 0.5f, 1.0f, 1.33f, 2.0f, 3.0f, 4.0f, 6.0f}) {
         const auto img = green(lit_frame(0.0, intensity));
         int width = 0;  // lit rows in column 160
-        for (int y = 0; y < kH; ++y) width += at(img, 160, y) > 0.0f ? 1 : 0;
+        for (int y = 0; y < kBeamH; ++y) width += at(img, 160, y) > 0.0f ? 1 : 0;
         EXPECT_GE(width, last_width) << "intensity " << intensity;
         const float p = at(img, 160, 120);
         EXPECT_LT(p, 1.6f) << "intensity " << intensity
@@ -214,11 +215,11 @@ namespace {
 
 // The camera of the lengthening tests: looking down -z at the origin, so that at z = 0 one
 // world unit is one pixel and world (0, 0) is the picture's centre (window x 160, y 120).
-constexpr double kEyeDistance = 120.0 / 0.57735026918962576;  // kH / 2 / tan(30 deg)
+constexpr double kEyeDistance = 120.0 / 0.57735026918962576;  // kBeamH / 2 / tan(30 deg)
 
 // World x at depth z of window x `px` (pixels from the left).
 double world_x(double px, double z) {
-    return (px - kW * 0.5) * (kEyeDistance - z) / kEyeDistance;
+    return (px - kBeamW * 0.5) * (kEyeDistance - z) / kEyeDistance;
 }
 
 // A flat rectangle facing the camera, window x `x0`..`x1`, window rows (from the top) centred
@@ -227,7 +228,7 @@ double world_x(double px, double z) {
 bz::geo::TriMesh rectangle(double x0, double x1, double row, double rows, double z) {
     const double s = (kEyeDistance - z) / kEyeDistance;
     const float l = static_cast<float>(world_x(x0, z)), r = static_cast<float>(world_x(x1, z));
-    const float y = static_cast<float>((kH * 0.5 - row - 0.5) * s),
+    const float y = static_cast<float>((kBeamH * 0.5 - row - 0.5) * s),
                 h = static_cast<float>(rows * 0.5 * s);
     const float zf = static_cast<float>(z);
     return {
@@ -238,13 +239,13 @@ bz::geo::TriMesh rectangle(double x0, double x1, double row, double rows, double
 // linear interpolation between pixel centres (window x, pixels from the left).
 std::pair<double, double> half_peak_extent(const std::vector<float>& img, int y) {
     const auto v = [&](int x) {
-        return static_cast<double>(img[static_cast<std::size_t>(y) * kW + x]);
+        return static_cast<double>(img[static_cast<std::size_t>(y) * kBeamW + x]);
     };
     double top = 0.0;
-    for (int x = 0; x < kW; ++x) top = std::max(top, v(x));
+    for (int x = 0; x < kBeamW; ++x) top = std::max(top, v(x));
     const double half = 0.5 * top;
     double first = -1.0, last = -1.0;
-    for (int x = 1; x < kW; ++x) {
+    for (int x = 1; x < kBeamW; ++x) {
         const double a = v(x - 1), b = v(x);
         if (a < half && b >= half && first < 0.0) first = x - 0.5 + (half - a) / (b - a);
         if (a >= half && b < half) last = x - 0.5 + (a - half) / (a - b);
@@ -265,10 +266,10 @@ bz::scene::Camera facing_camera() {
 int brightest_row(const std::vector<float>& img) {
     int best = 0;
     double best_sum = -1.0;
-    for (int y = 0; y < kH; ++y) {
+    for (int y = 0; y < kBeamH; ++y) {
         double sum = 0.0;
-        for (int x = 0; x < kW; ++x)
-            sum += static_cast<double>(img[static_cast<std::size_t>(y) * kW + x]);
+        for (int x = 0; x < kBeamW; ++x)
+            sum += static_cast<double>(img[static_cast<std::size_t>(y) * kBeamW + x]);
         if (sum > best_sum) {
             best_sum = sum;
             best = y;

@@ -24,8 +24,8 @@
 
 namespace {
 
-constexpr int kW = 320;
-constexpr int kH = 240;
+constexpr int kScenesW = 320;
+constexpr int kScenesH = 240;
 
 struct Difference {
     int worst = 0;           // largest difference of one channel, in 8-bit steps
@@ -67,7 +67,7 @@ TEST_F(LitTilesScenesTest, SparseFramesEqualEveryPixelFramesOnRealModelsInEveryL
         frame.items.back().mesh = id;
         frame.items.back().model = glm::dmat4(1.0);
         const bz::scene::Camera framed =
-            bz::render::frame_bounds(meshes.bounds(id), 50.0, double(kW) / kH);
+            bz::render::frame_bounds(meshes.bounds(id), 50.0, double(kScenesW) / kScenesH);
         for (const auto method : bz::render::feature_line_methods()) {
             for (const char* look : {"classic", "mame"}) {
                 SCOPED_TRACE(std::string(path) + ", " + bz::render::line_method_name(method) +
@@ -76,9 +76,9 @@ TEST_F(LitTilesScenesTest, SparseFramesEqualEveryPixelFramesOnRealModelsInEveryL
                 s.method = method;
                 s.beam = bz::render::beam_look(look);
                 s.sparse_composite = true;
-                bz::render::Renderer sparse(s, kW, kH, bz::gl::TimingMethod::off);
+                bz::render::Renderer sparse(s, kScenesW, kScenesH, bz::gl::TimingMethod::off);
                 s.sparse_composite = false;
-                bz::render::Renderer dense(s, kW, kH, bz::gl::TimingMethod::off);
+                bz::render::Renderer dense(s, kScenesW, kScenesH, bz::gl::TimingMethod::off);
                 // The camera swings around the model, a little further each frame.
                 for (int i = 0; i < 5; ++i) {
                     frame.time_s = i / 60.0;
@@ -91,7 +91,8 @@ TEST_F(LitTilesScenesTest, SparseFramesEqualEveryPixelFramesOnRealModelsInEveryL
                     sparse.render(frame, meshes, bz::render::Renderer::kOffscreen);
                     dense.render(frame, meshes, bz::render::Renderer::kOffscreen);
                     const Difference d = compare(sparse.read_color(), dense.read_color());
-                    EXPECT_GT(d.lit, static_cast<std::size_t>(kW * kH / 100)) << "frame " << i;
+                    EXPECT_GT(d.lit, static_cast<std::size_t>(kScenesW * kScenesH / 100))
+                        << "frame " << i;
                     const bool blend_order =
                         method == bz::render::LineMethod::compute && std::string(look) == "mame";
                     if (blend_order) {

@@ -19,17 +19,17 @@ namespace {
 
 // Divisible by the bloom's 4, not by the 16-pixel tiles: 21 x 16 tiles, the last column 8
 // pixels wide and the last row 4 pixels high.
-constexpr int kW = 328;
-constexpr int kH = 244;
+constexpr int kLitW = 328;
+constexpr int kLitH = 244;
 constexpr int kT = bz::render::kLitTileSize;
-constexpr int kTilesX = (kW + kT - 1) / kT;
-constexpr int kTilesY = (kH + kT - 1) / kT;
+constexpr int kTilesX = (kLitW + kT - 1) / kT;
+constexpr int kTilesY = (kLitH + kT - 1) / kT;
 
 using Tiles = std::set<std::pair<int, int>>;  // (x, y), GL's order: row 0 at the bottom
 
 // A HUD point at pixel (x, y) of GL's order (row 0 at the bottom).
 glm::vec2 at(float x, float y) {
-    return {(x + 0.5f - kW * 0.5f) / (kH * 0.5f), (y + 0.5f - kH * 0.5f) / (kH * 0.5f)};
+    return {(x + 0.5f - kLitW * 0.5f) / (kLitH * 0.5f), (y + 0.5f - kLitH * 0.5f) / (kLitH * 0.5f)};
 }
 
 // Dots in the first and the last (cut-off) tile, a line along the boundary between two tile
@@ -39,10 +39,10 @@ bz::scene::FrameList analytic_lines(double time_s) {
     f.time_s = time_s;
     const glm::vec3 green{0.1f, 1.0f, 0.1f};
     f.hud.push_back({at(1, 1), at(1, 1), green, 1.0f});
-    f.hud.push_back({at(kW - 2, kH - 2), at(kW - 2, kH - 2), green, 1.0f});
+    f.hud.push_back({at(kLitW - 2, kLitH - 2), at(kLitW - 2, kLitH - 2), green, 1.0f});
     f.hud.push_back({at(5 * kT, 3 * kT + 4), at(5 * kT, 9 * kT + 4), green, 1.0f});
     f.hud.push_back({at(14 * kT + 8, 7 * kT + 8), at(14 * kT + 8, 7 * kT + 8), green, 1.2f});
-    f.hud.push_back({at(40, kH - 1), at(120, kH - 1), green, 0.05f});
+    f.hud.push_back({at(40, kLitH - 1), at(120, kLitH - 1), green, 0.05f});
     return f;
 }
 
@@ -58,9 +58,9 @@ Tiles listed(bz::render::Renderer& r) {
 // The tiles holding a pixel whose brightest channel is above zero; `hdr` has row 0 at the top.
 Tiles tiles_of_lit_pixels(const std::vector<float>& hdr) {
     Tiles out;
-    for (int y = 0; y < kH; ++y) {
-        for (int x = 0; x < kW; ++x) {
-            const std::size_t i = (static_cast<std::size_t>(kH - 1 - y) * kW + x) * 4;
+    for (int y = 0; y < kLitH; ++y) {
+        for (int x = 0; x < kLitW; ++x) {
+            const std::size_t i = (static_cast<std::size_t>(kLitH - 1 - y) * kLitW + x) * 4;
             if (std::max({hdr[i], hdr[i + 1], hdr[i + 2]}) > 0.0f) out.insert({x / kT, y / kT});
         }
     }
@@ -74,9 +74,9 @@ Tiles tiles_of_lit_pixels(const std::vector<float>& hdr) {
 Tiles tiles_reached_by_bloom(bz::render::Renderer& r) {
     glm::ivec2 size;
     const std::vector<std::uint8_t> bloom = r.read_bloom(&size);
-    const int f = kW / size.x;
-    EXPECT_EQ(f * size.x, kW);
-    EXPECT_EQ(f * size.y, kH);
+    const int f = kLitW / size.x;
+    EXPECT_EQ(f * size.x, kLitW);
+    EXPECT_EQ(f * size.y, kLitH);
     Tiles out;
     for (int j = 0; j < size.y; ++j) {
         for (int i = 0; i < size.x; ++i) {
@@ -86,10 +86,10 @@ Tiles tiles_reached_by_bloom(bz::render::Renderer& r) {
                 return static_cast<int>(std::ceil((t - 0.5) * f - 0.5)) - 1;
             };
             const auto hi = [f](int t) { return static_cast<int>(std::ceil((t + 1.5) * f - 0.5)); };
-            const int x0 = std::clamp(lo(i), 0, kW - 1) / kT;
-            const int x1 = std::clamp(hi(i), 0, kW - 1) / kT;
-            const int y0 = std::clamp(lo(j), 0, kH - 1) / kT;
-            const int y1 = std::clamp(hi(j), 0, kH - 1) / kT;
+            const int x0 = std::clamp(lo(i), 0, kLitW - 1) / kT;
+            const int x1 = std::clamp(hi(i), 0, kLitW - 1) / kT;
+            const int y0 = std::clamp(lo(j), 0, kLitH - 1) / kT;
+            const int y1 = std::clamp(hi(j), 0, kLitH - 1) / kT;
             for (int y = y0; y <= y1; ++y)
                 for (int x = x0; x <= x1; ++x) out.insert({x, y});
         }
@@ -123,7 +123,7 @@ TEST_F(LitTilesTest, WithoutGlowTheListIsTheTilesOfTheLitPixelsScreenEdgesInclud
     s.beam.bloom_threshold = 1e6f;            // bloom runs, but nothing glows
     s.beam.bloom_knee = 0.0f;
     bz::scene::MeshLibrary meshes;
-    bz::render::Renderer r(s, kW, kH, bz::gl::TimingMethod::off);
+    bz::render::Renderer r(s, kLitW, kLitH, bz::gl::TimingMethod::off);
     r.render(analytic_lines(0.0), meshes, bz::render::Renderer::kOffscreen);
     EXPECT_TRUE(tiles_reached_by_bloom(r).empty()) << "the threshold should leave no glow";
     const Tiles lit = tiles_of_lit_pixels(r.read_lines_hdr());
@@ -139,7 +139,7 @@ TEST_F(LitTilesTest, GlowDilatesTheListByTheBloomsBilinearReachInBothLooks) {
         s.beam.phosphor = bz::render::PhosphorDecay::off;
         s.hud_glow = true;  // the analytic HUD lines stand for glowing beam lines
         bz::scene::MeshLibrary meshes;
-        bz::render::Renderer r(s, kW, kH, bz::gl::TimingMethod::off);
+        bz::render::Renderer r(s, kLitW, kLitH, bz::gl::TimingMethod::off);
         r.render(analytic_lines(0.0), meshes, bz::render::Renderer::kOffscreen);
         const Tiles lit = tiles_of_lit_pixels(r.read_lines_hdr());
         const Tiles glow = tiles_reached_by_bloom(r);
@@ -165,7 +165,7 @@ TEST_F(LitTilesTest, WithThePhosphorTheListHoldsTheTilesWhereLastFramesPictureGl
     s.beam = bz::render::beam_look("mame");
     s.beam.persistence_ms = 30.0f;
     bz::scene::MeshLibrary meshes;
-    bz::render::Renderer r(s, kW, kH, bz::gl::TimingMethod::off);
+    bz::render::Renderer r(s, kLitW, kLitH, bz::gl::TimingMethod::off);
     r.render(analytic_lines(0.0), meshes, bz::render::Renderer::kOffscreen);
     Tiles picture = tiles_of_lit_pixels(r.read_picture_hdr());
     ASSERT_FALSE(picture.empty());
@@ -187,7 +187,7 @@ TEST_F(LitTilesTest, TheEveryPixelCompositeListsNoTiles) {
     auto s = bz::render::preset("balanced");
     s.sparse_composite = false;
     bz::scene::MeshLibrary meshes;
-    bz::render::Renderer r(s, kW, kH, bz::gl::TimingMethod::off);
+    bz::render::Renderer r(s, kLitW, kLitH, bz::gl::TimingMethod::off);
     r.render(analytic_lines(0.0), meshes, bz::render::Renderer::kOffscreen);
     EXPECT_TRUE(r.read_lit_tiles().empty());
 }

@@ -12,11 +12,12 @@
 
 namespace {
 
-constexpr int kW = 320;
-constexpr int kH = 240;
+constexpr int kSparseW = 320;
+constexpr int kSparseH = 240;
 
-glm::vec2 hud_at(float x, float y) {
-    return {(x + 0.5f - kW * 0.5f) / (kH * 0.5f), (kH * 0.5f - y - 0.5f) / (kH * 0.5f)};
+glm::vec2 sparse_hud_at(float x, float y) {
+    return {(x + 0.5f - kSparseW * 0.5f) / (kSparseH * 0.5f),
+            (kSparseH * 0.5f - y - 0.5f) / (kSparseH * 0.5f)};
 }
 
 // Lines of every brightness, from full to barely above black, some along the screen's edges
@@ -25,7 +26,7 @@ bz::scene::FrameList scattered_lines(double time_s, float shift) {
     bz::scene::FrameList f;
     f.time_s = time_s;
     const auto add = [&](glm::vec2 a, glm::vec2 b, glm::vec3 c, float i) {
-        f.hud.push_back({hud_at(a.x + shift, a.y), hud_at(b.x + shift, b.y), c, i});
+        f.hud.push_back({sparse_hud_at(a.x + shift, a.y), sparse_hud_at(b.x + shift, b.y), c, i});
     };
     add({20, 30}, {150, 30}, {0.2f, 1.0f, 0.3f}, 1.0f);
     add({40, 200}, {40, 60}, {1.0f, 0.2f, 0.2f}, 0.6f);
@@ -52,9 +53,9 @@ struct Frames {
 Frames render_both(bz::render::RenderSettings s, int frames) {
     bz::scene::MeshLibrary meshes;
     s.sparse_composite = true;
-    bz::render::Renderer sparse(s, kW, kH, bz::gl::TimingMethod::off);
+    bz::render::Renderer sparse(s, kSparseW, kSparseH, bz::gl::TimingMethod::off);
     s.sparse_composite = false;
-    bz::render::Renderer dense(s, kW, kH, bz::gl::TimingMethod::off);
+    bz::render::Renderer dense(s, kSparseW, kSparseH, bz::gl::TimingMethod::off);
     for (int i = 0; i < frames; ++i) {
         const auto f = scattered_lines(i / 60.0, 7.0f * static_cast<float>(i));
         sparse.render(f, meshes, bz::render::Renderer::kOffscreen);
@@ -104,9 +105,9 @@ TEST_F(SparseCompositeTest, PhosphorTrailsMatchTheDenseCompositeWhileLinesJumpAr
     s.beam.persistence_ms = 30.0f;
     bz::scene::MeshLibrary meshes;
     s.sparse_composite = true;
-    bz::render::Renderer sparse(s, kW, kH, bz::gl::TimingMethod::off);
+    bz::render::Renderer sparse(s, kSparseW, kSparseH, bz::gl::TimingMethod::off);
     s.sparse_composite = false;
-    bz::render::Renderer dense(s, kW, kH, bz::gl::TimingMethod::off);
+    bz::render::Renderer dense(s, kSparseW, kSparseH, bz::gl::TimingMethod::off);
     for (int i = 0; i < 12; ++i) {
         // Two frames here, two frames 100 px away, then nothing for the last four.
         const auto f = i < 8 ? scattered_lines(i / 60.0, (i / 2) % 2 == 0 ? 0.0f : 100.0f)
@@ -129,11 +130,12 @@ TEST_F(SparseCompositeTest, PhosphorWithBloomDecaysAsExpOfElapsedTime) {
     s.beam.persistence_ms = 100.0f;
     bz::scene::MeshLibrary meshes;
     for (const double fps : {30.0, 144.0}) {
-        bz::render::Renderer r(s, kW, kH, bz::gl::TimingMethod::off);
+        bz::render::Renderer r(s, kSparseW, kSparseH, bz::gl::TimingMethod::off);
         bz::scene::FrameList lit;
-        lit.hud.push_back({hud_at(60, 120), hud_at(260, 120), {0.0f, 1.0f, 0.0f}, 1.0f});
+        lit.hud.push_back(
+            {sparse_hud_at(60, 120), sparse_hud_at(260, 120), {0.0f, 1.0f, 0.0f}, 1.0f});
         r.render(lit, meshes, bz::render::Renderer::kOffscreen);
-        const std::size_t centre = (static_cast<std::size_t>(120) * kW + 160) * 4 + 1;
+        const std::size_t centre = (static_cast<std::size_t>(120) * kSparseW + 160) * 4 + 1;
         const float first = r.read_picture_hdr()[centre];
         ASSERT_GT(first, 0.5f);
         const int frames = static_cast<int>(std::lround(fps / 6.0));  // 1/6 s
@@ -152,7 +154,7 @@ TEST_F(SparseCompositeTest, SizesTheBloomDoesNotDivideFallBackToTheDenseComposit
     std::vector<std::uint8_t> pictures[2];
     for (const bool sparse : {true, false}) {
         s.sparse_composite = sparse;
-        bz::render::Renderer r(s, kW + 3, kH + 1, bz::gl::TimingMethod::off);
+        bz::render::Renderer r(s, kSparseW + 3, kSparseH + 1, bz::gl::TimingMethod::off);
         r.render(f, meshes, bz::render::Renderer::kOffscreen);
         pictures[sparse ? 0 : 1] = r.read_color();
     }
@@ -175,7 +177,7 @@ TEST_F(SparseCompositeTest, InPlacePhosphorFadesToExactBlackAndLightsAgainAsTheF
             s.beam.power_law_exponent = 3.0f;  // at 1/4096 after about 2 s, not minutes
             s.sparse_composite = sparse;
             const char* what = sparse ? "sparse" : "dense";
-            bz::render::Renderer r(s, kW, kH, bz::gl::TimingMethod::off);
+            bz::render::Renderer r(s, kSparseW, kSparseH, bz::gl::TimingMethod::off);
             const auto lines = scattered_lines(0.0, 0.0f);
             r.render(lines, meshes, bz::render::Renderer::kOffscreen);
             const std::vector<float> first_picture = r.read_picture_hdr();
@@ -219,13 +221,13 @@ TEST_F(SparseCompositeTest, InPlacePhosphorFadesToExactBlackAndLightsAgainAsTheF
 TEST_F(SparseCompositeTest, GlowBesideALineThatWentOutFadesWithThePhosphor) {
     bz::scene::MeshLibrary meshes;
     bz::scene::FrameList lit;
-    lit.hud.push_back({hud_at(60, 120), hud_at(260, 120), {0.2f, 1.0f, 0.2f}, 1.5f});
+    lit.hud.push_back({sparse_hud_at(60, 120), sparse_hud_at(260, 120), {0.2f, 1.0f, 0.2f}, 1.5f});
     const auto glow_beside = [&](bz::render::Renderer& r) {
         const std::vector<std::uint8_t> c = r.read_color();
-        return int{c[(static_cast<std::size_t>(120 + 4) * kW + 160) * 4 + 1]};  // 4 px below
+        return int{c[(static_cast<std::size_t>(120 + 4) * kSparseW + 160) * 4 + 1]};  // 4 px below
     };
     const auto picture_beside = [&](bz::render::Renderer& r) {
-        return r.read_picture_hdr()[(static_cast<std::size_t>(120 + 4) * kW + 160) * 4 + 1];
+        return r.read_picture_hdr()[(static_cast<std::size_t>(120 + 4) * kSparseW + 160) * 4 + 1];
     };
     for (const bool phosphor : {true, false}) {
         auto s = bz::render::preset("balanced");
@@ -233,7 +235,7 @@ TEST_F(SparseCompositeTest, GlowBesideALineThatWentOutFadesWithThePhosphor) {
         s.beam.persistence_ms = 100.0f;
         s.hud_glow = true;  // the HUD line stands for a glowing beam line
         if (!phosphor) s.beam.phosphor = bz::render::PhosphorDecay::off;
-        bz::render::Renderer r(s, kW, kH, bz::gl::TimingMethod::off);
+        bz::render::Renderer r(s, kSparseW, kSparseH, bz::gl::TimingMethod::off);
         r.render(lit, meshes, bz::render::Renderer::kOffscreen);
         const int first = glow_beside(r);
         ASSERT_GT(first, 8) << "the line's glow reaches 4 px";

@@ -17,7 +17,7 @@
 
 namespace {
 
-constexpr int kW = 320, kH = 180;
+constexpr int kTrailsW = 320, kTrailsH = 180;
 
 // Pixels whose channels differ by more than 2/255 anywhere.
 int differing(const std::vector<std::uint8_t>& a, const std::vector<std::uint8_t>& b) {
@@ -36,7 +36,7 @@ int differing(const std::vector<std::uint8_t>& a, const std::vector<std::uint8_t
 void save(const std::string& name, const std::vector<std::uint8_t>& rgba) {
     const auto dir = bz::test::binary_dir() / "test-out";
     std::filesystem::create_directories(dir);
-    bz::write_png(dir / name, bz::Image{kW, kH, 4, rgba});
+    bz::write_png(dir / name, bz::Image{kTrailsW, kTrailsH, 4, rgba});
 }
 
 class EditTrailsTest : public bz::test::GlTest {
@@ -52,7 +52,7 @@ class EditTrailsTest : public bz::test::GlTest {
             c.forward = 1.0f;
             s.update(c, 1.0 / 60.0);
             clock.advance_nominal();
-            f = s.frame(1.0, double(kW) / kH);
+            f = s.frame(1.0, double(kTrailsW) / kTrailsH);
             clock.stamp(f);
             r.render(f, s.meshes(), bz::render::Renderer::kOffscreen);
         }
@@ -74,11 +74,11 @@ TEST_F(EditTrailsTest, AFlownFrameEqualsAFreshOneInEveryBeamLook) {
         const auto session = bz::app::make_edit_session(o, log);
         EXPECT_FALSE(session->keeps_history()) << "the edit session's pictures keep no past";
         settings.keep_history = session->keeps_history();  // as the play loop sets it
-        bz::render::Renderer flown(settings, kW, kH, bz::gl::TimingMethod::off);
+        bz::render::Renderer flown(settings, kTrailsW, kTrailsH, bz::gl::TimingMethod::off);
         const bz::scene::FrameList last = fly(*session, flown, 20);
         const std::vector<std::uint8_t> after = flown.read_color();
 
-        bz::render::Renderer fresh(settings, kW, kH, bz::gl::TimingMethod::off);
+        bz::render::Renderer fresh(settings, kTrailsW, kTrailsH, bz::gl::TimingMethod::off);
         fresh.render(last, session->meshes(), bz::render::Renderer::kOffscreen);
         const std::vector<std::uint8_t> clean = fresh.read_color();
         save("edit_" + look + "_flown.png", after);
@@ -92,7 +92,7 @@ TEST_F(EditTrailsTest, AFlownFrameEqualsAFreshOneInEveryBeamLook) {
             const auto again = bz::app::make_edit_session(o, log);
             bz::render::RenderSettings keeping = settings;
             keeping.keep_history = true;
-            bz::render::Renderer trailing(keeping, kW, kH, bz::gl::TimingMethod::off);
+            bz::render::Renderer trailing(keeping, kTrailsW, kTrailsH, bz::gl::TimingMethod::off);
             fly(*again, trailing, 20);
             const std::vector<std::uint8_t> trails = trailing.read_color();
             save("edit_" + look + "_with_history.png", trails);
@@ -113,17 +113,17 @@ TEST_F(EditTrailsTest, NoGhostAfterAFilledStyleFrame) {
     bz::render::RenderSettings settings = bz::render::preset("balanced");
     settings.beam = bz::render::beam_look("mame");
     const auto session = bz::app::make_edit_session(o, log);
-    bz::render::Renderer r(settings, kW, kH, bz::gl::TimingMethod::off);
+    bz::render::Renderer r(settings, kTrailsW, kTrailsH, bz::gl::TimingMethod::off);
     bz::scene::FrameList f = fly(*session, r, 10);  // a picture with a past
     f.style = bz::scene::Style::toon;
     r.render(f, session->meshes(), bz::render::Renderer::kOffscreen);
     bz::platform::FlyControls turn;
     turn.yaw = 1.0f;
     session->update(turn, 0.5);  // far from where the history was drawn
-    bz::scene::FrameList back = session->frame(1.0, double(kW) / kH);
+    bz::scene::FrameList back = session->frame(1.0, double(kTrailsW) / kTrailsH);
     back.time_s = f.time_s;  // no time passes: only a forgotten history leaves no ghost
     r.render(back, session->meshes(), bz::render::Renderer::kOffscreen);
-    bz::render::Renderer fresh(settings, kW, kH, bz::gl::TimingMethod::off);
+    bz::render::Renderer fresh(settings, kTrailsW, kTrailsH, bz::gl::TimingMethod::off);
     fresh.render(back, session->meshes(), bz::render::Renderer::kOffscreen);
     EXPECT_EQ(differing(r.read_color(), fresh.read_color()), 0);
 }

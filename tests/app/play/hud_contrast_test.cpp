@@ -27,7 +27,7 @@
 
 namespace {
 
-constexpr int kW = 1280, kH = 720, kTile = 32;
+constexpr int kHudW = 1280, kHudH = 720, kTile = 32;
 
 float linear(std::uint8_t c) {
     const float v = static_cast<float>(c) / 255.0f;
@@ -41,7 +41,7 @@ float luminance(const std::vector<std::uint8_t>& rgba, std::size_t i) {
 
 // Each pixel's distance to the nearest HUD line (capped at 8 px).
 std::vector<float> hud_distance(const std::vector<bz::scene::HudLine>& hud, float min_intensity) {
-    return bz::test::hud_line_distance(hud, kW, kH, 8.0f, min_intensity);
+    return bz::test::hud_line_distance(hud, kHudW, kHudH, 8.0f, min_intensity);
 }
 
 struct Contrast {
@@ -53,16 +53,16 @@ struct Contrast {
 Contrast hud_contrast(const std::vector<std::uint8_t>& rgba, const std::vector<float>& text,
                       const std::vector<float>& dist) {
     std::vector<float> ratios;
-    for (int ty = 0; ty < kH; ty += kTile) {
-        for (int tx = 0; tx < kW; tx += kTile) {
-            const bool reticle =
-                std::abs(tx + kTile / 2 - kW / 2) < 100 && std::abs(ty + kTile / 2 - kH / 2) < 100;
+    for (int ty = 0; ty < kHudH; ty += kTile) {
+        for (int tx = 0; tx < kHudW; tx += kTile) {
+            const bool reticle = std::abs(tx + kTile / 2 - kHudW / 2) < 100 &&
+                                 std::abs(ty + kTile / 2 - kHudH / 2) < 100;
             if (reticle) continue;
             double core = 0.0, ring = 0.0;
             int nc = 0, nr = 0;
-            for (int y = ty; y < std::min(ty + kTile, kH); ++y) {
-                for (int x = tx; x < std::min(tx + kTile, kW); ++x) {
-                    const std::size_t i = static_cast<std::size_t>(y) * kW + x;
+            for (int y = ty; y < std::min(ty + kTile, kHudH); ++y) {
+                for (int x = tx; x < std::min(tx + kTile, kHudW); ++x) {
+                    const std::size_t i = static_cast<std::size_t>(y) * kHudW + x;
                     if (text[i] <= 0.5f) {
                         core += luminance(rgba, i);
                         ++nc;
@@ -117,13 +117,13 @@ TEST_F(HudContrastTest, HudAndNoticesReachWcagContrastInEveryStyle) {
                 const std::string name = std::string(bz::scene::style_name(style)) + "_" + beam +
                                          "_" + std::to_string(static_cast<int>(scale)) + "x";
                 SCOPED_TRACE(name);
-                bz::scene::FrameList f = game.frame(1.0, double(kW) / kH);
-                overlay.draw(f.hud, double(kW) / kH);
+                bz::scene::FrameList f = game.frame(1.0, double(kHudW) / kHudH);
+                overlay.draw(f.hud, double(kHudW) / kHudH);
                 f.style = style;
-                bz::render::Renderer r(settings, kW, kH, bz::gl::TimingMethod::off);
+                bz::render::Renderer r(settings, kHudW, kHudH, bz::gl::TimingMethod::off);
                 r.render(f, game.meshes(), bz::render::Renderer::kOffscreen);
                 const std::vector<std::uint8_t> rgba = r.read_color();
-                bz::write_png(out / ("hud_" + name + ".png"), bz::Image{kW, kH, 4, rgba});
+                bz::write_png(out / ("hud_" + name + ".png"), bz::Image{kHudW, kHudH, 4, rgba});
                 const Contrast c =
                     hud_contrast(rgba, hud_distance(f.hud, 0.6f), hud_distance(f.hud, 0.0f));
                 std::printf("HUD contrast %-23s worst tile %.2f, median %.2f, %d tiles\n",

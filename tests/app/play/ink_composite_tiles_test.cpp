@@ -24,7 +24,7 @@
 
 namespace {
 
-constexpr int kW = 1280, kH = 720;
+constexpr int kInkW = 1280, kInkH = 720;
 
 struct Difference {
     int worst = 0;            // the largest difference of any channel
@@ -51,7 +51,7 @@ Difference compare(const std::vector<std::uint8_t>& a, const std::vector<std::ui
 
 std::vector<std::uint8_t> draw(bz::render::RenderSettings settings, const bz::scene::FrameList& f,
                                const bz::scene::MeshLibrary& meshes) {
-    bz::render::Renderer r(settings, kW, kH, bz::gl::TimingMethod::off);
+    bz::render::Renderer r(settings, kInkW, kInkH, bz::gl::TimingMethod::off);
     r.render(f, meshes, bz::render::Renderer::kOffscreen);
     return r.read_color();
 }
@@ -60,12 +60,12 @@ std::vector<std::uint8_t> draw(bz::render::RenderSettings settings, const bz::sc
 // edges and across tile corners.
 void add_edge_lines(std::vector<bz::scene::HudLine>& hud) {
     const auto at = [](float x, float y) {
-        return glm::vec2((x + 0.5f - kW * 0.5f) / (kH * 0.5f),
-                         (kH * 0.5f - y - 0.5f) / (kH * 0.5f));
+        return glm::vec2((x + 0.5f - kInkW * 0.5f) / (kInkH * 0.5f),
+                         (kInkH * 0.5f - y - 0.5f) / (kInkH * 0.5f));
     };
     const glm::vec3 red(1.0f, 0.2f, 0.2f);
-    hud.push_back({at(0, 0), at(kW - 1, 0), red, 1.0f});
-    hud.push_back({at(kW - 1, 0), at(kW - 1, kH - 1), red, 1.0f});
+    hud.push_back({at(0, 0), at(kInkW - 1, 0), red, 1.0f});
+    hud.push_back({at(kInkW - 1, 0), at(kInkW - 1, kInkH - 1), red, 1.0f});
     hud.push_back({at(64, 400), at(64, 400), red, 1.0f});    // a dot on a tile corner
     hud.push_back({at(95, 300), at(97, 300), red, 0.05f});   // faint, at a tile's edge
     hud.push_back({at(300, 500), at(700, 650), red, 0.7f});  // diagonal across many tiles
@@ -100,10 +100,10 @@ TEST_F(InkCompositeTilesTest, EveryFilledStyleWithTheHudMatchesTheEveryPixelComp
         ++filled;
         const std::string name(bz::scene::style_name(style));
         SCOPED_TRACE(name);
-        bz::scene::FrameList f = game.frame(1.0, double(kW) / kH);
+        bz::scene::FrameList f = game.frame(1.0, double(kInkW) / kInkH);
         f.style = style;
         bz::scene::FrameList bare = f;  // no HUD: what the canvas alone gives
-        overlay.draw(f.hud, double(kW) / kH);
+        overlay.draw(f.hud, double(kInkW) / kInkH);
         add_edge_lines(f.hud);
         bz::render::RenderSettings settings = bz::render::preset("balanced");
         settings.sparse_composite = true;
@@ -112,7 +112,7 @@ TEST_F(InkCompositeTilesTest, EveryFilledStyleWithTheHudMatchesTheEveryPixelComp
         settings.sparse_composite = false;
         const auto dense = draw(settings, f, game.meshes());
         const auto bare_dense = draw(settings, bare, game.meshes());
-        bz::write_png(out / ("ink_tiles_" + name + ".png"), bz::Image{kW, kH, 4, tiles});
+        bz::write_png(out / ("ink_tiles_" + name + ".png"), bz::Image{kInkW, kInkH, 4, tiles});
 
         const Difference d = compare(tiles, dense, bare_dense);
         std::printf("ink composite %-10s worst %d, %zu pixels differ, HUD changed %zu pixels\n",
@@ -121,8 +121,8 @@ TEST_F(InkCompositeTilesTest, EveryFilledStyleWithTheHudMatchesTheEveryPixelComp
         EXPECT_EQ(d.pixels, 0u);
         // The HUD (with its halo) changes a real share of the frame, not all of it: the
         // comparison covers what the tiles must reach.
-        EXPECT_GT(d.changed, std::size_t{kW} * kH / 200);
-        EXPECT_LT(d.changed, std::size_t{kW} * kH / 2);
+        EXPECT_GT(d.changed, std::size_t{kInkW} * kInkH / 200);
+        EXPECT_LT(d.changed, std::size_t{kInkW} * kInkH / 2);
         // Without a HUD the copy is the canvas: the same frame as the every-pixel composite.
         EXPECT_EQ(compare(bare_tiles, bare_dense, bare_dense).worst, 0);
     }

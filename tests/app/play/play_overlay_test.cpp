@@ -4,16 +4,12 @@
 
 #include "app/play/edit_footer.h"
 #include "game/hud/hud_layout.h"
+#include "support/default_font.h"
 
 namespace bz::app {
 namespace {
 
 namespace hud = game::hud;
-
-const scene::VectorFont& font() {
-    static const scene::VectorFont f = scene::VectorFont::load_default();
-    return f;
-}
 
 bool all_in(const std::vector<scene::HudLine>& lines, const hud::Box& box) {
     for (const scene::HudLine& l : lines) {
@@ -34,7 +30,7 @@ const std::string kLongModelError =
 
 TEST(PlayOverlay, ErrorsWrapInsideTheirBoxAndSayTheirKind) {
     for (const double aspect : {4.0 / 3.0, 16.0 / 9.0}) {
-        PlayOverlay o(font());
+        PlayOverlay o(bz::test::default_font());
         o.set_errors(ErrorKind::model, {kLongModelError});
         const auto lines = o.error_box_lines(aspect);
         ASSERT_GE(lines.size(), 3u);
@@ -48,7 +44,7 @@ TEST(PlayOverlay, ErrorsWrapInsideTheirBoxAndSayTheirKind) {
 }
 
 TEST(PlayOverlay, EachKindIsNamed) {
-    PlayOverlay o(font());
+    PlayOverlay o(bz::test::default_font());
     o.set_errors(ErrorKind::shader, {"shaders/lines/lines.frag:3:1: error: syntax"});
     o.set_errors(ErrorKind::settings, {"settings.toml:1:10: error: volume must be ..."});
     const auto lines = o.error_box_lines(16.0 / 9.0);
@@ -63,7 +59,7 @@ TEST(PlayOverlay, EachKindIsNamed) {
 }
 
 TEST(PlayOverlay, ManyErrorsKeepTheFirstLinesAndCountTheRest) {
-    PlayOverlay o(font());
+    PlayOverlay o(bz::test::default_font());
     std::vector<std::string> errors;
     for (int i = 1; i <= 30; ++i) {
         errors.push_back("level.toml:" + std::to_string(i) + ":1: error: number " +
@@ -82,7 +78,7 @@ TEST(PlayOverlay, ManyErrorsKeepTheFirstLinesAndCountTheRest) {
 }
 
 TEST(PlayOverlay, TimedErrorsGoAway) {
-    PlayOverlay o(font());
+    PlayOverlay o(bz::test::default_font());
     o.set_errors(ErrorKind::settings, {"bad"}, 1.0);
     o.advance(0.5);
     EXPECT_EQ(o.errors(ErrorKind::settings).size(), 1u);
@@ -91,7 +87,7 @@ TEST(PlayOverlay, TimedErrorsGoAway) {
 }
 
 TEST(PlayOverlay, NoticesAndFooterStayInTheirRegions) {
-    PlayOverlay o(font());
+    PlayOverlay o(bz::test::default_font());
     for (int i = 0; i < 6; ++i) o.notify("screenshot screenshot-000" + std::to_string(i) + ".png");
     o.set_footer("60 FPS  16.7 MS  WORST 18.0 MS");
     std::vector<scene::HudLine> out;
@@ -131,7 +127,7 @@ TEST(PlayOverlay, TextFollowsTheTextSizeAndStaysInItsRegions) {
         float notice[2] = {}, readout[2] = {}, error[2] = {};
         for (const int i : {0, 1}) {
             const float scale = i == 0 ? 1.0f : 2.0f;
-            PlayOverlay o(font());
+            PlayOverlay o(bz::test::default_font());
             o.set_text_scale(scale);
             o.notify("VOLUME 80");
             o.set_footer("60 FPS 16.7 MS");
@@ -175,9 +171,9 @@ TEST(PlayOverlay, EditFooterFollowsTheTextSizeAndTheReadoutKeepsItsOwnRegion) {
             SCOPED_TRACE(std::to_string(w) + "x" + std::to_string(h) + " at " +
                          std::to_string(scale));
             const EditFooter footer =
-                layout_edit_footer(font(), status, kEditKeyHints, aspect, scale);
+                layout_edit_footer(bz::test::default_font(), status, kEditKeyHints, aspect, scale);
             std::vector<scene::HudLine> drawn;
-            draw_edit_footer(font(), footer, drawn);
+            draw_edit_footer(bz::test::default_font(), footer, drawn);
             ASSERT_FALSE(drawn.empty());
             EXPECT_TRUE(all_in(drawn, footer.box));
             EXPECT_TRUE(all_in(drawn, {{-a, -1.0f}, {a, 1.0f}})) << "on the screen";
@@ -190,7 +186,8 @@ TEST(PlayOverlay, EditFooterFollowsTheTextSizeAndTheReadoutKeepsItsOwnRegion) {
                 to += (to.empty() ? "" : "   ") + it->text;
                 const float base = it->status ? kEditStatusHeight : kEditKeysHeight;
                 if (it->height < base * scale - 1e-6f) {
-                    EXPECT_NEAR(font().width(it->text, it->height), footer.box.width(), 1e-4f)
+                    EXPECT_NEAR(bz::test::default_font().width(it->text, it->height),
+                                footer.box.width(), 1e-4f)
                         << "shrunk only to fit: " << it->text;
                 } else {
                     EXPECT_NEAR(it->height, base * scale, 1e-6f) << it->text;
@@ -204,7 +201,7 @@ TEST(PlayOverlay, EditFooterFollowsTheTextSizeAndTheReadoutKeepsItsOwnRegion) {
             EXPECT_EQ(status_back, status);
 
             // The overlay over it: readout and notice in their regions, above the footer.
-            PlayOverlay o(font());
+            PlayOverlay o(bz::test::default_font());
             o.set_text_scale(scale);
             o.set_footer_top(footer.box.max.y);
             o.set_footer("60 FPS 16.7 MS");

@@ -36,6 +36,7 @@ NOT_OUR_FLAGS = {
     "--quick": "tools/test",
     "--seconds": "tools/fuzz (also difficulty --seconds)",
     "--target": "tools/fuzz and cmake --build (also render --target)",
+    "--jobs": "tools/fuzz",
     "--bin": "tools/haze, tools/beam_frames",
     "--scene": "tools/haze, tools/beam_frames",
     "--dump-obj": "the vector-monitor renderer of Bernardoni 2018 (docs/sources.md)",

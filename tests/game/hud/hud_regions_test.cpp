@@ -8,14 +8,10 @@
 #include "game/hud/hud.h"
 #include "game/hud/hud_layout.h"
 #include "game/test_world.h"
+#include "support/default_font.h"
 
 namespace bz::game {
 namespace {
-
-const scene::VectorFont& font() {
-    static const scene::VectorFont f = scene::VectorFont::load_default();
-    return f;
-}
 
 bool in_box(const std::vector<scene::HudLine>& lines, const hud::Box& box) {
     for (const scene::HudLine& l : lines) {
@@ -66,7 +62,7 @@ TEST(HudRegions, EachPartDrawsOnlyInItsRegion) {
             hud::View v;
             v.text_scale = scale;
             v.aspect = aspect;
-            v.font = &font();
+            v.font = &bz::test::default_font();
             v.high_score = 987650;
             // A world with everything showing: an enemy in range to the rear, a big score, a
             // blocked tank.
@@ -119,7 +115,7 @@ TEST(HudRegions, LargerTextGrowsTheStatusUpToWhatItsLinesAllow) {
 TEST(HudRegions, TheSceneStaysUnderTheBandInPlayOnly) {
     GameOptions o;
     o.attract = true;
-    Game g(default_level(), o, &font());
+    Game g(default_level(), o, &bz::test::default_font());
     EXPECT_EQ(g.frame(1.0, 16.0 / 9.0).view_top, 1.0f);  // the title: the whole screen
     g.start_game();
     g.tick(TickCommand{});
@@ -129,9 +125,9 @@ TEST(HudRegions, TheSceneStaysUnderTheBandInPlayOnly) {
 TEST(HudRegions, AppMenusLeaveTitleAndPauseTextToTheApp) {
     GameOptions o;
     o.app_menus = true;
-    Game g(default_level(), o, &font());
+    Game g(default_level(), o, &bz::test::default_font());
     GameOptions plain;
-    Game h(default_level(), plain, &font());
+    Game h(default_level(), plain, &bz::test::default_font());
     for (int i = 0; i < 5; ++i) {
         g.tick(TickCommand{});
         h.tick(TickCommand{});
@@ -152,14 +148,15 @@ TEST(HudRegions, AppMenusLeaveTitleAndPauseTextToTheApp) {
 TEST(HudRegions, HintsNameTheKeysGiven) {
     GameOptions o;
     o.hints.paused = "F9 RESUME";
-    Game g(default_level(), o, &font());
+    Game g(default_level(), o, &bz::test::default_font());
     g.start_game();
     TickCommand pause;
     pause.pause = true;
     g.tick(pause);
     ASSERT_EQ(g.screen(), Screen::paused);
     std::vector<scene::HudLine> want;
-    font().draw(want, "F9 RESUME", {0.0f, -0.5f}, 0.045f, hud::kWhite, scene::TextAlign::center);
+    bz::test::default_font().draw(want, "F9 RESUME", {0.0f, -0.5f}, 0.045f, hud::kWhite,
+                                  scene::TextAlign::center);
     const auto got = g.frame(1.0, 16.0 / 9.0).hud;
     const auto it = std::search(
         got.begin(), got.end(), want.begin(), want.end(),

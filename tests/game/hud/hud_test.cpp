@@ -9,21 +9,17 @@
 #include "game/hud/hud_layout.h"
 #include "game/test_world.h"
 #include "game/world/tuning.h"
+#include "support/default_font.h"
 
 namespace bz::game {
 namespace {
-
-const scene::VectorFont& font() {
-    static const scene::VectorFont f = scene::VectorFont::load_default();
-    return f;
-}
 
 constexpr double kAspect = 16.0 / 9.0;
 
 hud::View view_with_font() {
     hud::View v;
     v.aspect = kAspect;
-    v.font = &font();
+    v.font = &bz::test::default_font();
     v.high_score = 50000;
     return v;
 }
@@ -45,7 +41,7 @@ bool contains_run(const std::vector<scene::HudLine>& haystack,
 
 std::vector<scene::HudLine> text_lines(std::string_view s, glm::vec2 at, scene::TextAlign align) {
     std::vector<scene::HudLine> out;
-    font().draw(out, s, at, hud::kTextHeight, hud::kRed, align);
+    bz::test::default_font().draw(out, s, at, hud::kTextHeight, hud::kRed, align);
     return out;
 }
 

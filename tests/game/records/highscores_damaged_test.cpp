@@ -15,7 +15,7 @@ namespace {
 namespace fs = std::filesystem;
 
 // A scratch folder for a high-score file, which lists the damaged files kept aside in it.
-struct TempDir : bz::test::ScratchDir {
+struct ScoresDir : bz::test::ScratchDir {
     using ScratchDir::ScratchDir;
     fs::path file() const { return path() / "highscores.toml"; }
     // Writes `text` as the high-score file and loads it.
@@ -36,7 +36,7 @@ struct TempDir : bz::test::ScratchDir {
 const LevelKey kClassic = level_key("Classic", 0xabc);
 
 TEST(HighScoresDamagedFile, OneBadLineKeepsEveryValidEntryAndTheFileAside) {
-    TempDir dir("bz_hs_bad_line");
+    ScoresDir dir("bz_hs_bad_line");
     const fs::path f = dir.file();
     const std::string text =
         "beamzone-highscores 2\nlevel 0000000000000abc Classic\nAAA 900\nB!B 800\nCCC 700\n"
@@ -62,7 +62,7 @@ TEST(HighScoresDamagedFile, OneBadLineKeepsEveryValidEntryAndTheFileAside) {
 }
 
 TEST(HighScoresDamagedFile, CutShortFileKeepsWhatWasWritten) {
-    TempDir dir("bz_hs_cut");
+    ScoresDir dir("bz_hs_cut");
     const HighScoreLoad load =
         dir.load_text("beamzone-highscores 2\nlevel 0000000000000abc Classic\nAAA 900\nBB");
     EXPECT_FALSE(load.errors.empty());
@@ -71,7 +71,7 @@ TEST(HighScoresDamagedFile, CutShortFileKeepsWhatWasWritten) {
 }
 
 TEST(HighScoresDamagedFile, ForeignOrUnreadableFileIsKeptAsideNotOverwritten) {
-    TempDir dir("bz_hs_foreign");
+    ScoresDir dir("bz_hs_foreign");
     const fs::path f = dir.file();
     const HighScoreLoad load = dir.load_text("[my]\nnotes = 1\n");
     EXPECT_EQ(load.book.entry_count(), 0u);
@@ -80,7 +80,7 @@ TEST(HighScoresDamagedFile, ForeignOrUnreadableFileIsKeptAsideNotOverwritten) {
     EXPECT_FALSE(fs::exists(f)) << "nothing valid to write back";
 
     // A folder where the file should be: moved aside too, never deleted.
-    TempDir dir2("bz_hs_folder");
+    ScoresDir dir2("bz_hs_folder");
     fs::create_directory(dir2.file());
     const HighScoreLoad folder = load_highscores(dir2.file());
     EXPECT_FALSE(folder.errors.empty());
@@ -88,7 +88,7 @@ TEST(HighScoresDamagedFile, ForeignOrUnreadableFileIsKeptAsideNotOverwritten) {
 }
 
 TEST(HighScoresDamagedFile, FileThatCannotBeMovedAsideIsNeverSaved) {
-    TempDir dir("bz_hs_ro");
+    ScoresDir dir("bz_hs_ro");
     // A 235-byte name: NAME.bad-DATE (24 more) is over the 255-byte limit, so the rename fails
     // for root too (a read-only folder would not stop root).
     const fs::path f = dir.path() / (std::string(230, 'h') + ".toml");
@@ -100,7 +100,7 @@ TEST(HighScoresDamagedFile, FileThatCannotBeMovedAsideIsNeverSaved) {
 }
 
 TEST(HighScoresOldFormat, OneTableFilesAreReadAndKeptUnderTheSharedKey) {
-    TempDir dir("bz_hs_v1");
+    ScoresDir dir("bz_hs_v1");
     const fs::path f = dir.file();
     const HighScoreLoad load = dir.load_text("beamzone-highscores 1\nAAA 900\nBBB 800\nend\n");
     EXPECT_TRUE(load.errors.empty());

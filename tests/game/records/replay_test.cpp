@@ -147,7 +147,7 @@ TEST(Replay, TheNastierMissileRuleIsRecordedAndOldFilesPlayWithout) {
     EXPECT_FALSE(replay::verify(without, lv, test::shared_assets()).ok);
 }
 
-std::string error_of(const std::string& text) {
+std::string replay_error(const std::string& text) {
     try {
         replay::parse(text, "r.bzr");
     } catch (const UserError& e) {
@@ -158,18 +158,18 @@ std::string error_of(const std::string& text) {
 
 TEST(Replay, BadFilesGiveFileLineMessages) {
     const std::string good = replay::serialise(record_game(120));
-    EXPECT_EQ(error_of(""), "r.bzr:1:1: error: empty file, not a beamzone replay");
-    EXPECT_NE(error_of("hello\n").find("r.bzr:1:1: error: not a beamzone replay"),
+    EXPECT_EQ(replay_error(""), "r.bzr:1:1: error: empty file, not a beamzone replay");
+    EXPECT_NE(replay_error("hello\n").find("r.bzr:1:1: error: not a beamzone replay"),
               std::string::npos);
-    EXPECT_NE(error_of("beamzone-replay 9\n").find("r.bzr:1:17: error: replay format 9"),
+    EXPECT_NE(replay_error("beamzone-replay 9\n").find("r.bzr:1:17: error: replay format 9"),
               std::string::npos);
     // Cut short: drop the "end" line.
-    EXPECT_NE(error_of(good.substr(0, good.rfind("end"))).find("cut short"), std::string::npos);
+    EXPECT_NE(replay_error(good.substr(0, good.rfind("end"))).find("cut short"), std::string::npos);
     // A garbled command line names its line.
     std::string garbled = good;
     const auto c = garbled.find("\nc ");
     garbled.replace(c + 1, 3, "c x");
-    const auto msg = error_of(garbled);
+    const auto msg = replay_error(garbled);
     const auto line = 2 + std::count(garbled.begin(), garbled.begin() + static_cast<long>(c), '\n');
     EXPECT_NE(msg.find("r.bzr:" + std::to_string(line) + ":3: error: run length"),
               std::string::npos)
@@ -177,14 +177,14 @@ TEST(Replay, BadFilesGiveFileLineMessages) {
     // Out-of-range values and counts.
     std::string big = good;
     big.replace(big.find("ticks 120"), 9, "ticks 99999999999");
-    EXPECT_NE(error_of(big).find("over the limit"), std::string::npos);
+    EXPECT_NE(replay_error(big).find("over the limit"), std::string::npos);
     std::string tread = good;
     tread.insert(tread.find("\nh "), "\nc 1 300 0 00");
-    EXPECT_NE(error_of(tread).find("-127..127"), std::string::npos);
-    EXPECT_NE(error_of(good + "junk\n").find("after 'end'"), std::string::npos);
+    EXPECT_NE(replay_error(tread).find("-127..127"), std::string::npos);
+    EXPECT_NE(replay_error(good + "junk\n").find("after 'end'"), std::string::npos);
     std::string unknown = good;
     unknown.insert(unknown.find("seed"), "colour red\n");
-    EXPECT_NE(error_of(unknown).find("r.bzr:3:1: error: unknown record 'colour'"),
+    EXPECT_NE(replay_error(unknown).find("r.bzr:3:1: error: unknown record 'colour'"),
               std::string::npos);
 }
 

@@ -10,6 +10,7 @@
 #include "core/error.h"
 #include "geometry/line_mesh/line_mesh.h"
 #include "gltf_test_files.h"
+#include "import_test_util.h"
 #include "support/scratch_dir.h"
 
 namespace bz::geo {
@@ -31,16 +32,7 @@ class ImportTest : public ::testing::Test {
     bz::test::ScratchDir scratch_{"bz_geo_import"};
 };
 
-// Runs import_model expecting a UserError; returns its message.
-std::string import_error(const fs::path& path) {
-    try {
-        import_model(path);
-    } catch (const UserError& e) {
-        return e.what();
-    }
-    ADD_FAILURE() << "no UserError for " << path;
-    return {};
-}
+using test::import_error;  // runs import_model expecting a UserError; returns its message
 
 void expect_one_line_naming(const std::string& message, const fs::path& path) {
     EXPECT_NE(message.find(path.string()), std::string::npos) << message;

@@ -19,21 +19,21 @@ glm::mat4 projection(float fov_deg = 60.0f) {
     return glm::perspective(glm::radians(fov_deg), 4.0f / 3.0f, kNear, kFar);
 }
 
-struct Scene {
+struct TriangleScene {
     geo::AdjacencyMesh mesh;
     geo::ClusteredTriangles clusters;
-    explicit Scene(const geo::TriMesh& m)
+    explicit TriangleScene(const geo::TriMesh& m)
         : mesh(geo::build_line_mesh(m)), clusters(geo::cluster_triangles(mesh)) {}
 };
 
-struct Culled {
+struct CulledTriangles {
     std::vector<bool> drawn;  // per triangle of the clustered list
     TriangleCullStats stats;
 };
 
-Culled cull(const Scene& s, const glm::mat4& mv, bool skip_back_faces,
-            const glm::mat4& proj = projection()) {
-    Culled out;
+CulledTriangles cull_triangles(const TriangleScene& s, const glm::mat4& mv, bool skip_back_faces,
+                               const glm::mat4& proj = projection()) {
+    CulledTriangles out;
     std::vector<TriangleDraw> draws;
     const ViewVolume view(proj, kNear, kFar, 1.0);
     append_triangle_draws(s.clusters.clusters, s.clusters.all, mv, skip_back_faces, view, 5u, draws,
@@ -50,7 +50,8 @@ Culled cull(const Scene& s, const glm::mat4& mv, bool skip_back_faces,
 }
 
 // The triangle's corners in clip space.
-std::array<glm::dvec4, 3> clip_corners(const Scene& s, std::size_t t, const glm::dmat4& pmv) {
+std::array<glm::dvec4, 3> clip_corners(const TriangleScene& s, std::size_t t,
+                                       const glm::dmat4& pmv) {
     std::array<glm::dvec4, 3> out;
     for (int i = 0; i < 3; ++i)
         out[i] = pmv * glm::dvec4(glm::dvec3(s.mesh.positions[s.clusters.indices[3 * t + i]]), 1.0);
@@ -70,7 +71,7 @@ bool clipped_whole(const std::array<glm::dvec4, 3>& c) {
 
 // Whether the triangle's view-space normal faces away from the eye (what back-face culling
 // removes, exactly when it is back-facing on screen).
-bool faces_away(const Scene& s, std::size_t t, const glm::dmat4& mv) {
+bool faces_away(const TriangleScene& s, std::size_t t, const glm::dmat4& mv) {
     glm::dvec3 p[3];
     for (int i = 0; i < 3; ++i)
         p[i] = glm::dvec3(
@@ -79,8 +80,8 @@ bool faces_away(const Scene& s, std::size_t t, const glm::dmat4& mv) {
 }
 
 // Every triangle the GPU would rasterise is drawn; returns how many that is.
-std::size_t expect_visible_drawn(const Scene& s, const glm::mat4& mv, bool skip_back_faces,
-                                 const Culled& c, const glm::mat4& proj = projection()) {
+std::size_t expect_visible_drawn(const TriangleScene& s, const glm::mat4& mv, bool skip_back_faces,
+                                 const CulledTriangles& c, const glm::mat4& proj = projection()) {
     const glm::dmat4 pmv = glm::dmat4(proj) * glm::dmat4(mv);
     std::size_t visible = 0;
     for (std::size_t t = 0; t < c.drawn.size(); ++t) {
@@ -93,11 +94,11 @@ std::size_t expect_visible_drawn(const Scene& s, const glm::mat4& mv, bool skip_
 }
 
 TEST(TriangleCulling, AClosedSphereDrawsItsFrontAndSkipsMostOfItsBack) {
-    const Scene s(geo::uv_sphere(1.0f, 96, 192));
+    const TriangleScene s(geo::uv_sphere(1.0f, 96, 192));
     for (const glm::vec3 eye : {glm::vec3(0, 0, 4), glm::vec3(3, 2, 1), glm::vec3(0, 5, 0.01f),
                                 glm::vec3(-1.3f, -1.1f, 0.9f)}) {
         const glm::mat4 mv = glm::lookAt(eye, glm::vec3(0.0f), glm::vec3(0, 1, 0));
-        const Culled c = cull(s, mv, true);
+        const CulledTriangles c = cull_triangles(s, mv, true);
         const std::size_t visible = expect_visible_drawn(s, mv, true, c);
         EXPECT_GT(visible, 0u);
         // About half a sphere faces away; at least a third of all triangles are skipped.
@@ -108,28 +109,28 @@ TEST(TriangleCulling, AClosedSphereDrawsItsFrontAndSkipsMostOfItsBack) {
 }
 
 TEST(TriangleCulling, WithoutBackFaceCullingEveryClusterInViewIsDrawn) {
-    const Scene s(geo::uv_sphere(1.0f, 48, 96));
+    const TriangleScene s(geo::uv_sphere(1.0f, 48, 96));
     const glm::mat4 mv = glm::lookAt(glm::vec3(0, 1, 4), glm::vec3(0.0f), glm::vec3(0, 1, 0));
-    const Culled c = cull(s, mv, false);
+    const CulledTriangles c = cull_triangles(s, mv, false);
     EXPECT_EQ(c.stats.triangles_drawn, c.stats.triangles);
     EXPECT_EQ(c.stats.facing_away, 0u);
 }
 
 TEST(TriangleCulling, AMirroredInstanceKeepsWhatItsScreenWindingShows) {
-    const Scene s(geo::uv_sphere(1.0f, 48, 96));
+    const TriangleScene s(geo::uv_sphere(1.0f, 48, 96));
     const glm::mat4 mv = glm::lookAt(glm::vec3(2, 1, 3), glm::vec3(0.0f), glm::vec3(0, 1, 0)) *
                          glm::scale(glm::mat4(1.0f), glm::vec3(-1.0f, 1.0f, 2.0f));
-    const Culled c = cull(s, mv, true);
+    const CulledTriangles c = cull_triangles(s, mv, true);
     EXPECT_GT(expect_visible_drawn(s, mv, true, c), 0u);
     EXPECT_LT(c.stats.triangles_drawn, c.stats.triangles);
 }
 
 TEST(TriangleCulling, AThinOpenSheetIsDrawnFromBothSides) {
-    const Scene s(geo::grid(40, 40, 0.1f, 40));  // open: back faces are never culled
+    const TriangleScene s(geo::grid(40, 40, 0.1f, 40));  // open: back faces are never culled
     for (const float y : {3.0f, -3.0f}) {
         const glm::mat4 mv =
             glm::lookAt(glm::vec3(0.5f, y, 2.0f), glm::vec3(0.0f), glm::vec3(0, 0, -1));
-        const Culled c = cull(s, mv, false);
+        const CulledTriangles c = cull_triangles(s, mv, false);
         EXPECT_GT(expect_visible_drawn(s, mv, false, c), c.stats.triangles / 2);
         EXPECT_EQ(c.stats.facing_away, 0u);
     }
@@ -138,27 +139,27 @@ TEST(TriangleCulling, AThinOpenSheetIsDrawnFromBothSides) {
 TEST(TriangleCulling, ClustersOutsideTheViewAreDroppedAndTheEdgeOnesKept) {
     // A strip 200 units long across the view: clusters beyond the frustum's sides are dropped,
     // those across its edge are kept.
-    const Scene s(geo::grid(200, 4, 1.0f, 200));
+    const TriangleScene s(geo::grid(200, 4, 1.0f, 200));
     const glm::mat4 proj = projection(40.0f);
     const glm::mat4 mv = glm::lookAt(glm::vec3(0, 30, 30), glm::vec3(0.0f), glm::vec3(0, 1, 0));
-    const Culled c = cull(s, mv, false, proj);
+    const CulledTriangles c = cull_triangles(s, mv, false, proj);
     EXPECT_GT(c.stats.outside_frustum, 0u);
     EXPECT_LT(c.stats.outside_frustum, c.stats.clusters);
     EXPECT_GT(expect_visible_drawn(s, mv, false, c, proj), 0u);
 }
 
 TEST(TriangleCulling, AClusterBehindTheEyeOrBeyondFarIsDropped) {
-    const Scene s(geo::uv_sphere(1.0f, 16, 32));
+    const TriangleScene s(geo::uv_sphere(1.0f, 16, 32));
     for (const float z : {5.0f, -2000.0f}) {  // behind the eye; beyond the far plane
         const glm::mat4 mv = glm::translate(glm::mat4(1.0f), glm::vec3(0, 0, z));
-        const Culled c = cull(s, mv, true);
+        const CulledTriangles c = cull_triangles(s, mv, true);
         EXPECT_EQ(c.stats.triangles_drawn, 0u);
         EXPECT_EQ(c.stats.outside_frustum, c.stats.clusters);
     }
 }
 
 TEST(TriangleCulling, KeptNeighboursMergeIntoOneDraw) {
-    const Scene s(geo::uv_sphere(1.0f, 48, 96));
+    const TriangleScene s(geo::uv_sphere(1.0f, 48, 96));
     std::vector<TriangleDraw> draws;
     TriangleCullStats stats;
     const ViewVolume view(projection(), kNear, kFar, 1.0);

@@ -14,11 +14,11 @@
 namespace bz::render {
 namespace {
 
-struct Scene {
+struct EdgeScene {
     geo::AdjacencyMesh mesh;
     geo::ClusteredEdges clusters;
-    explicit Scene(const geo::TriMesh& m) : Scene(geo::build_line_mesh(m)) {}
-    explicit Scene(geo::AdjacencyMesh m)
+    explicit EdgeScene(const geo::TriMesh& m) : EdgeScene(geo::build_line_mesh(m)) {}
+    explicit EdgeScene(geo::AdjacencyMesh m)
         : mesh(std::move(m)), clusters(geo::cluster_edges(mesh, geo::build_edge_list(mesh))) {}
 };
 
@@ -49,14 +49,14 @@ bool is_feature(const geo::AdjacencyMesh& m, const geo::MeshEdge& e, const glm::
     return e.cos_dihedral < cos_crease;
 }
 
-struct Culled {
+struct CulledEdges {
     std::vector<bool> dispatched;  // per edge of the clustered list
     EdgeCullStats stats;
 };
 
-Culled cull(const Scene& s, const glm::mat4& mv, float cos_crease, bool skip_back_faces,
-            const CullView& v = view_of()) {
-    Culled out;
+CulledEdges cull_edges(const EdgeScene& s, const glm::mat4& mv, float cos_crease,
+                       bool skip_back_faces, const CullView& v = view_of()) {
+    CulledEdges out;
     std::vector<EdgeWorkItem> work;
     append_edge_work(s.clusters, mv, cos_crease, skip_back_faces, v, 7u, work, out.stats);
     out.dispatched.assign(s.clusters.edges.size(), false);
@@ -69,8 +69,8 @@ Culled cull(const Scene& s, const glm::mat4& mv, float cos_crease, bool skip_bac
 }
 
 // Every feature edge is dispatched; returns how many feature edges there are.
-std::size_t expect_features_kept(const Scene& s, const glm::mat4& mv, float cos_crease,
-                                 bool skip_back_faces, const Culled& c) {
+std::size_t expect_features_kept(const EdgeScene& s, const glm::mat4& mv, float cos_crease,
+                                 bool skip_back_faces, const CulledEdges& c) {
     std::size_t features = 0;
     for (std::size_t i = 0; i < s.clusters.edges.size(); ++i) {
         if (!is_feature(s.mesh, s.clusters.edges[i], glm::dmat4(mv), cos_crease, skip_back_faces))
@@ -82,12 +82,12 @@ std::size_t expect_features_kept(const Scene& s, const glm::mat4& mv, float cos_
 }
 
 TEST(EdgeCulling, ASpheresSilhouetteIsKeptAndMostOfItsEdgesAreNotTested) {
-    const Scene s(geo::uv_sphere(1.0f, 96, 192));
+    const EdgeScene s(geo::uv_sphere(1.0f, 96, 192));
     for (const glm::vec3 eye : {glm::vec3(0, 0, 4), glm::vec3(3, 2, 1), glm::vec3(0, 5, 0.01f),
                                 glm::vec3(-1.3f, -1.1f, 0.9f)}) {
         const glm::mat4 mv = glm::lookAt(eye, glm::vec3(0.0f), glm::vec3(0, 1, 0));
         for (const bool skip : {true, false}) {
-            const Culled c = cull(s, mv, -2.0f, skip);
+            const CulledEdges c = cull_edges(s, mv, -2.0f, skip);
             const std::size_t silhouette = expect_features_kept(s, mv, -2.0f, skip, c);
             // One silhouette loop: at least one ring's worth of edges, far fewer than all.
             EXPECT_GE(silhouette, 96u);
@@ -99,31 +99,31 @@ TEST(EdgeCulling, ASpheresSilhouetteIsKeptAndMostOfItsEdgesAreNotTested) {
 }
 
 TEST(EdgeCulling, AMirroredInstanceKeepsItsSilhouetteToo) {
-    const Scene s(geo::uv_sphere(1.0f, 48, 96));
+    const EdgeScene s(geo::uv_sphere(1.0f, 48, 96));
     const glm::mat4 mv = glm::lookAt(glm::vec3(2, 1, 3), glm::vec3(0.0f), glm::vec3(0, 1, 0)) *
                          glm::scale(glm::mat4(1.0f), glm::vec3(-1.0f, 1.0f, 2.0f));
-    const Culled c = cull(s, mv, -2.0f, false);
+    const CulledEdges c = cull_edges(s, mv, -2.0f, false);
     EXPECT_GE(expect_features_kept(s, mv, -2.0f, false, c), 48u);
     EXPECT_LT(c.stats.edges_dispatched * 3, s.clusters.edges.size());
 }
 
 TEST(EdgeCulling, CreasesOfAOneWayClusterAreStillTested) {
     // A box far off: every cluster faces one way, but its 90 degree creases are features.
-    const Scene s(geo::box(glm::vec3(1.0f)));
+    const EdgeScene s(geo::box(glm::vec3(1.0f)));
     const glm::mat4 mv = glm::lookAt(glm::vec3(4, 3, 5), glm::vec3(0.0f), glm::vec3(0, 1, 0));
-    const Culled c = cull(s, mv, 0.5f, true);
+    const CulledEdges c = cull_edges(s, mv, 0.5f, true);
     EXPECT_EQ(expect_features_kept(s, mv, 0.5f, true, c), 9u);  // 6 silhouette + 3 front creases
 }
 
 TEST(EdgeCulling, FlatSubdivisionAddsNoEdgeToTest) {
     // A box split 4^3 times over: 12 creases of 8 pieces each; the rest lie between coplanar
     // faces and are never tested, from any view.
-    const Scene s(geo::subdivide_flat(geo::build_line_mesh(geo::box(glm::vec3(1.0f))), 3));
+    const EdgeScene s(geo::subdivide_flat(geo::build_line_mesh(geo::box(glm::vec3(1.0f))), 3));
     for (const glm::vec3 eye :
          {glm::vec3(4, 3, 5), glm::vec3(0.2f, 6, 0.1f), glm::vec3(-3, -2, 4)}) {
         const glm::mat4 mv = glm::lookAt(eye, glm::vec3(0.0f), glm::vec3(0, 1, 0));
         for (const bool skip : {true, false}) {
-            const Culled c = cull(s, mv, 0.5f, skip);
+            const CulledEdges c = cull_edges(s, mv, 0.5f, skip);
             EXPECT_GT(expect_features_kept(s, mv, 0.5f, skip, c), 0u);
             EXPECT_LE(c.stats.edges_dispatched, 12u * 8u);
         }
@@ -131,11 +131,12 @@ TEST(EdgeCulling, FlatSubdivisionAddsNoEdgeToTest) {
 }
 
 TEST(EdgeCulling, AThinOpenSheetKeepsItsBoundaryFromBothSides) {
-    const Scene s(geo::grid(40, 40, 0.1f, 40));  // 4 units, open: both sides drawn, never skipped
+    const EdgeScene s(
+        geo::grid(40, 40, 0.1f, 40));  // 4 units, open: both sides drawn, never skipped
     for (const float y : {3.0f, -3.0f}) {
         const glm::mat4 mv =
             glm::lookAt(glm::vec3(0.5f, y, 2.0f), glm::vec3(0.0f), glm::vec3(0, 0, -1));
-        const Culled c = cull(s, mv, -2.0f, false);
+        const CulledEdges c = cull_edges(s, mv, -2.0f, false);
         const std::size_t features = expect_features_kept(s, mv, -2.0f, false, c);
         EXPECT_EQ(features, 160u);  // the rim: 4 x 40 boundary edges, nothing else
         // A flat sheet faces one way from anywhere: only the rim is tested.
@@ -146,10 +147,10 @@ TEST(EdgeCulling, AThinOpenSheetKeepsItsBoundaryFromBothSides) {
 TEST(EdgeCulling, ClustersBeyondTheGuardBandAreDroppedAndTheEdgeOnesKept) {
     // A strip 200 units long across the view: the guard band clips to twice the frustum, so
     // a cluster is dropped only when every edge of it lies beyond one of its planes.
-    const Scene s(geo::grid(200, 4, 1.0f, 200));
+    const EdgeScene s(geo::grid(200, 4, 1.0f, 200));
     const CullView v = view_of(40.0f);
     const glm::mat4 mv = glm::lookAt(glm::vec3(0, 30, 30), glm::vec3(0.0f), glm::vec3(0, 1, 0));
-    const Culled c = cull(s, mv, -2.0f, false, v);
+    const CulledEdges c = cull_edges(s, mv, -2.0f, false, v);
     EXPECT_GT(c.stats.outside_frustum, 0u);
     EXPECT_LT(c.stats.outside_frustum, c.stats.clusters);
     // Every edge of a dropped cluster is outside one guard plane at both ends.

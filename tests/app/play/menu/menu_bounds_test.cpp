@@ -12,15 +12,11 @@
 #include "app/play/menu/play_menus.h"
 #include "app/play/play_overlay.h"
 #include "game/hud/hud_layout.h"
+#include "support/default_font.h"
 #include "support/scratch_dir.h"
 
 namespace bz::app::menu {
 namespace {
-
-const scene::VectorFont& font() {
-    static const scene::VectorFont f = scene::VectorFont::load_default();
-    return f;
-}
 
 // The first stroke end outside the screen, as text, or "" when all are inside.
 std::string first_outside(const std::vector<scene::HudLine>& lines, double aspect) {
@@ -64,7 +60,7 @@ TEST(MenuBounds, HostileLevelNamesStayOnTheScreenAtEveryScaleAndShape) {
             PlayMenus menus(env);
             menus.set_context(Context::title);
             std::vector<scene::HudLine> lines;
-            menus.draw(lines, font(), aspect, 0);
+            menus.draw(lines, bz::test::default_font(), aspect, 0);
             ASSERT_FALSE(lines.empty());
             EXPECT_EQ(first_outside(lines, aspect), "")
                 << "title menu, scale " << scale << ", aspect " << aspect;
@@ -74,7 +70,7 @@ TEST(MenuBounds, HostileLevelNamesStayOnTheScreenAtEveryScaleAndShape) {
             ASSERT_EQ(menus.screen(), PlayMenus::Screen::levels);
             for (std::size_t i = 0; i < env.levels.size(); ++i) {
                 lines.clear();
-                menus.draw(lines, font(), aspect, 0);
+                menus.draw(lines, bz::test::default_font(), aspect, 0);
                 EXPECT_EQ(first_outside(lines, aspect), "")
                     << "level list, row " << i << ", scale " << scale << ", aspect " << aspect;
                 menus.handle(platform::MenuKey::down);
@@ -107,7 +103,7 @@ TEST(MenuBounds, PauseShowsEveryRowAndNoRowReachesTheReadout) {
         for (const double aspect : {4.0 / 3.0, 16.0 / 9.0}) {
             const auto a = static_cast<float>(aspect);
             for (const Page* page : {&pause, &title}) {
-                const Placement pl = place(font(), *page, 0, aspect, scale);
+                const Placement pl = place(bz::test::default_font(), *page, 0, aspect, scale);
                 EXPECT_EQ(pl.window.count, page->rows.size())
                     << page->title << " scrolls at " << scale << ", aspect " << aspect;
                 const float readout_top = game::hud::readout_box(a, scale).max.y;
@@ -159,7 +155,7 @@ TEST(MenuBounds, ANoticeOverAMenuTakesTheFooterAndCrossesNoRow) {
                 settings.ui_scale = scale;
                 PlayMenus menus(env);
                 menus.set_context(context);
-                PlayOverlay overlay(font());
+                PlayOverlay overlay(bz::test::default_font());
                 overlay.set_text_scale(scale);
                 overlay.set_footer("60 FPS  16.7 MS  WORST 18.0 MS");
                 overlay.notify("screenshot beamzone-20261127-101500-000.png");
@@ -167,7 +163,7 @@ TEST(MenuBounds, ANoticeOverAMenuTakesTheFooterAndCrossesNoRow) {
                 ASSERT_TRUE(overlay.notice_in_footer());
 
                 std::vector<scene::HudLine> menu_lines, overlay_lines;
-                menus.draw(menu_lines, font(), aspect, 0, FooterLine::overlay);
+                menus.draw(menu_lines, bz::test::default_font(), aspect, 0, FooterLine::overlay);
                 overlay.draw(overlay_lines, aspect);
                 const auto a = static_cast<float>(aspect);
                 const game::hud::Box footer = game::hud::footer_box(a);
@@ -188,7 +184,7 @@ TEST(MenuBounds, ANoticeOverAMenuTakesTheFooterAndCrossesNoRow) {
                 // The strip the notice left: at 2x it would have crossed the menu's rows,
                 // which is why the footer takes it.
                 if (scale == 2.0f) {
-                    PlayOverlay strip(font());
+                    PlayOverlay strip(bz::test::default_font());
                     strip.set_text_scale(scale);
                     strip.notify("screenshot beamzone-20261127-101500-000.png");
                     std::vector<scene::HudLine> in_strip;

@@ -23,13 +23,13 @@
 namespace bz::app::menu {
 namespace {
 
-constexpr int kW = 1280, kH = 720;
+constexpr int kGlowW = 1280, kGlowH = 720;
 // Past the beam's own quad (half-width and lengthened ends, a few pixels at 720 lines).
 constexpr float kClearPx = 8.0f;
 
 // Whether each pixel lies within kClearPx of any of `hud`'s lines.
 std::vector<bool> near_lines(const std::vector<scene::HudLine>& hud) {
-    const std::vector<float> d = test::hud_line_distance(hud, kW, kH, kClearPx + 1.0f);
+    const std::vector<float> d = test::hud_line_distance(hud, kGlowW, kGlowH, kClearPx + 1.0f);
     std::vector<bool> near(d.size());
     for (std::size_t i = 0; i < d.size(); ++i) near[i] = d[i] <= kClearPx;
     return near;
@@ -66,20 +66,20 @@ TEST_F(MenuGlowTest, MenusLeaveNoHazeAroundTheirListsInEitherBeamLook) {
                     std::string(name) + "_" + beam + "_" + std::to_string(int(scale)) + "x";
                 SCOPED_TRACE(label);
                 if (screen != PlayMenus::Screen::title) menus.open_page(screen);
-                const scene::FrameList bare = game.frame(1.0, double(kW) / kH);
+                const scene::FrameList bare = game.frame(1.0, double(kGlowW) / kGlowH);
                 scene::FrameList with_menu = bare;
                 std::vector<scene::HudLine> menu_lines;
-                menus.draw(menu_lines, font, double(kW) / kH, 0);
+                menus.draw(menu_lines, font, double(kGlowW) / kGlowH, 0);
                 ASSERT_FALSE(menu_lines.empty());
                 with_menu.hud.insert(with_menu.hud.end(), menu_lines.begin(), menu_lines.end());
 
-                render::Renderer a(settings, kW, kH, gl::TimingMethod::off);
+                render::Renderer a(settings, kGlowW, kGlowH, gl::TimingMethod::off);
                 a.render(bare, game.meshes(), render::Renderer::kOffscreen);
                 const std::vector<std::uint8_t> plain = a.read_color();
-                render::Renderer b(settings, kW, kH, gl::TimingMethod::off);
+                render::Renderer b(settings, kGlowW, kGlowH, gl::TimingMethod::off);
                 b.render(with_menu, game.meshes(), render::Renderer::kOffscreen);
                 const std::vector<std::uint8_t> shown = b.read_color();
-                write_png(out / ("menu_" + label + ".png"), Image{kW, kH, 4, shown});
+                write_png(out / ("menu_" + label + ".png"), Image{kGlowW, kGlowH, 4, shown});
 
                 const std::vector<bool> near = near_lines(menu_lines);
                 int max_diff = 0, differing = 0, far = 0, lit_near = 0;

@@ -6,6 +6,8 @@
 
 #include <algorithm>
 
+#include "support/default_font.h"
+
 namespace bz::app::menu {
 namespace {
 
@@ -36,11 +38,6 @@ struct Fixture {
         return out;
     }
 };
-
-const scene::VectorFont& font() {
-    static const scene::VectorFont f = scene::VectorFont::load_default();
-    return f;
-}
 
 std::vector<std::string> labels(const Page& p) {
     std::vector<std::string> out;
@@ -231,7 +228,7 @@ TEST(PlayMenus, VolumeStepsStopAtTheEndsAndWrap) {
 
 // The centre of row `row` as the menus place it.
 glm::vec2 centre_of(const PlayMenus& m, std::size_t row, double aspect, float scale) {
-    const Placement pl = place(font(), m.page(), m.selected(), aspect, scale);
+    const Placement pl = place(bz::test::default_font(), m.page(), m.selected(), aspect, scale);
     for (const PlacedRow& r : pl.rows) {
         if (r.row == row) return 0.5f * (r.box.min + r.box.max);
     }
@@ -247,27 +244,30 @@ TEST(PlayMenus, MouseHoverSelectsClickChoosesWheelScrollsRightClickGoesBack) {
             f.menus.set_context(Context::title);
             using P = PlayMenus::Pointer;
             // Hover over OPTIONS selects it; a click opens it.
-            EXPECT_TRUE(
-                f.menus.pointer(P::move, centre_of(f.menus, 2, aspect, scale), font(), aspect)
-                    .empty());
+            EXPECT_TRUE(f.menus
+                            .pointer(P::move, centre_of(f.menus, 2, aspect, scale),
+                                     bz::test::default_font(), aspect)
+                            .empty());
             EXPECT_EQ(f.menus.selected(), 2u);
-            f.menus.pointer(P::click, centre_of(f.menus, 2, aspect, scale), font(), aspect);
+            f.menus.pointer(P::click, centre_of(f.menus, 2, aspect, scale),
+                            bz::test::default_font(), aspect);
             ASSERT_EQ(f.menus.screen(), PlayMenus::Screen::options);
             // Nothing under the pointer: nothing happens.
-            f.menus.pointer(P::move, {0.0f, 0.99f}, font(), aspect);
+            f.menus.pointer(P::move, {0.0f, 0.99f}, bz::test::default_font(), aspect);
             EXPECT_EQ(f.menus.selected(), 0u);
             // The wheel steps down the list, stopping at its end.
-            for (int i = 0; i < 30; ++i) f.menus.pointer(P::wheel_down, {}, font(), aspect);
+            for (int i = 0; i < 30; ++i)
+                f.menus.pointer(P::wheel_down, {}, bz::test::default_font(), aspect);
             EXPECT_EQ(f.menus.page().rows[f.menus.selected()].label, "BACK");
-            f.menus.pointer(P::wheel_up, {}, font(), aspect);
+            f.menus.pointer(P::wheel_up, {}, bz::test::default_font(), aspect);
             EXPECT_EQ(f.menus.page().rows[f.menus.selected()].label, "RESET KEYS AND BUTTONS");
             // A click on a setting changes it.
             const auto fps = centre_of(f.menus, 7, aspect, scale);
-            const auto r = f.menus.pointer(P::click, fps, font(), aspect);
+            const auto r = f.menus.pointer(P::click, fps, bz::test::default_font(), aspect);
             EXPECT_EQ(r, std::vector<Request>{{Kind::settings_changed}});
             EXPECT_TRUE(f.settings.show_fps);
             // Right click goes back.
-            f.menus.pointer(P::back, {}, font(), aspect);
+            f.menus.pointer(P::back, {}, bz::test::default_font(), aspect);
             EXPECT_EQ(f.menus.screen(), PlayMenus::Screen::title);
         }
     }
@@ -287,7 +287,8 @@ TEST(PlayMenus, RowsNeverOverlapOrLeaveTheScreenAtAnyTextSize) {
                     f.menus.set_context(c);
                     f.menus.open_page(s);
                     const Page p = f.menus.page();
-                    const Placement pl = place(font(), p, f.menus.selected(), aspect, scale);
+                    const Placement pl =
+                        place(bz::test::default_font(), p, f.menus.selected(), aspect, scale);
                     ASSERT_FALSE(pl.rows.empty());
                     const game::hud::Box footer = game::hud::footer_box(static_cast<float>(aspect));
                     for (std::size_t i = 0; i < pl.rows.size(); ++i) {
