@@ -13,17 +13,17 @@
 namespace bz::geo {
 namespace {
 
-constexpr int kW = 320, kH = 240;
+constexpr int kMaterialW = 320, kMaterialH = 240;
 
-ReferenceView view() {
+ReferenceView material_view() {
     ReferenceView v;
-    v.width = kW;
-    v.height = kH;
+    v.width = kMaterialW;
+    v.height = kMaterialH;
     v.fov_y_deg = 50.0;
     return v;
 }
 
-AdjacencyMesh two_material_box() {
+AdjacencyMesh two_material_box_lines() {
     TriMesh m = box(glm::vec3(1.0f));
     for (std::size_t t = 0; t < m.triangle_count(); ++t) {
         const glm::vec3 a = m.positions[m.indices[3 * t]], b = m.positions[m.indices[3 * t + 1]],
@@ -36,10 +36,10 @@ AdjacencyMesh two_material_box() {
 // Window position (OpenGL's: origin bottom-left) of a world point seen through `mv`.
 glm::dvec2 project(const glm::dmat4& mv, glm::dvec3 p) {
     const glm::dvec3 q = glm::dvec3(mv * glm::dvec4(p, 1.0));
-    const double f = 1.0 / std::tan(glm::radians(view().fov_y_deg) * 0.5);
-    const double aspect = static_cast<double>(kW) / kH;
+    const double f = 1.0 / std::tan(glm::radians(material_view().fov_y_deg) * 0.5);
+    const double aspect = static_cast<double>(kMaterialW) / kMaterialH;
     const glm::dvec2 ndc(f / aspect * q.x / -q.z, f * q.y / -q.z);
-    return (ndc + 1.0) * 0.5 * glm::dvec2(kW, kH);
+    return (ndc + 1.0) * 0.5 * glm::dvec2(kMaterialW, kMaterialH);
 }
 
 // Distance from point p to the segment a-b.
@@ -50,7 +50,7 @@ double distance(glm::dvec2 p, glm::dvec2 a, glm::dvec2 b) {
 }
 
 TEST(ReferenceMaterialLines, ExactlyTheTopsEdgesThatAreNoSilhouette) {
-    const AdjacencyMesh mesh = two_material_box();
+    const AdjacencyMesh mesh = two_material_box_lines();
     ReferenceInstance inst;
     inst.mesh = &mesh;
     inst.model_view = glm::lookAt(glm::dvec3(2.6, 3.4, 4.2), glm::dvec3(0.0), glm::dvec3(0, 1, 0));
@@ -62,7 +62,7 @@ TEST(ReferenceMaterialLines, ExactlyTheTopsEdgesThatAreNoSilhouette) {
                      ez0 = project(inst.model_view, {-1, 1, 1});
     for (const bool on : {false, true}) {
         inst.material_lines = on;
-        const std::vector<VisibleSegment> segs = reference_segments({&inst, 1}, view());
+        const std::vector<VisibleSegment> segs = reference_segments({&inst, 1}, material_view());
         double length[2] = {0.0, 0.0};  // along the x = 1 and the z = 1 edge
         int silhouettes = 0;
         for (const VisibleSegment& s : segs) {
@@ -83,13 +83,13 @@ TEST(ReferenceMaterialLines, ExactlyTheTopsEdgesThatAreNoSilhouette) {
 TEST(ReferenceMaterialLines, NonePastTheCreasesDistanceLod) {
     // cos_crease below -1 is the renderer's "no creases at all" for a tiny object: no material
     // lines either, as the shaders do.
-    const AdjacencyMesh mesh = two_material_box();
+    const AdjacencyMesh mesh = two_material_box_lines();
     ReferenceInstance inst;
     inst.mesh = &mesh;
     inst.model_view = glm::lookAt(glm::dvec3(2.6, 3.4, 4.2), glm::dvec3(0.0), glm::dvec3(0, 1, 0));
     inst.cos_crease = -2.0;
     inst.material_lines = true;
-    for (const VisibleSegment& s : reference_segments({&inst, 1}, view()))
+    for (const VisibleSegment& s : reference_segments({&inst, 1}, material_view()))
         EXPECT_NE(s.kind, LineKind::material);
 }
 
