@@ -74,17 +74,23 @@ TEST(MaterialEdges, OneMaterialOrNoneMarksNothing) {
     EXPECT_FALSE(build_line_mesh(m).has_material_edges());
 }
 
-TEST(MaterialEdges, CoplanarFacesOfTwoMaterialsMeetAtALine) {
-    // A flat 4x1 strip split down the middle: no crease anywhere, one material line of two
-    // grid edges at x = 0.
+// A flat 4x1 strip whose faces left of x = 0 have material 0 and the rest material 1.
+TriMesh two_material_strip() {
     TriMesh m = grid(4, 1, 1.0f, 4);
-    ASSERT_GT(m.triangle_count(), 0u);
     for (std::size_t t = 0; t < m.triangle_count(); ++t) {
         const glm::vec3 c = (m.positions[m.indices[3 * t]] + m.positions[m.indices[3 * t + 1]] +
                              m.positions[m.indices[3 * t + 2]]) /
                             3.0f;
         m.face_materials.push_back(c.x < 0.0f ? 0u : 1u);
     }
+    return m;
+}
+
+TEST(MaterialEdges, CoplanarFacesOfTwoMaterialsMeetAtALine) {
+    // A flat 4x1 strip split down the middle: no crease anywhere, one material line of two
+    // grid edges at x = 0.
+    const TriMesh m = two_material_strip();
+    ASSERT_GT(m.triangle_count(), 0u);
     const AdjacencyMesh a = build_line_mesh(m);
     const std::set<Edge> got = marked_edges(a);
     ASSERT_FALSE(got.empty());
@@ -130,13 +136,7 @@ TEST(MaterialEdges, WrongMaterialCountIsRefused) {
 }
 
 TEST(MaterialEdges, EdgeListFlagsThemAndClustersAlwaysTestThem) {
-    TriMesh m = grid(4, 1, 1.0f, 4);
-    for (std::size_t t = 0; t < m.triangle_count(); ++t) {
-        const glm::vec3 c = (m.positions[m.indices[3 * t]] + m.positions[m.indices[3 * t + 1]] +
-                             m.positions[m.indices[3 * t + 2]]) /
-                            3.0f;
-        m.face_materials.push_back(c.x < 0.0f ? 0u : 1u);
-    }
+    const TriMesh m = two_material_strip();
     const AdjacencyMesh a = build_line_mesh(m);
     const std::vector<MeshEdge> edges = build_edge_list(a);
     std::set<Edge> flagged;
