@@ -47,8 +47,6 @@ class InstanceClusters {
     explicit InstanceClusters(const glm::mat4& model_view);
     // The cluster's bounding sphere in view space (widened for rounding, as the tests use it).
     ViewSphere view_sphere(const geo::ClusterBounds& k) const;
-    // The largest axis scale of the model-view: view-space radius over object-space radius.
-    double axis_scale() const { return scale_; }
     bool outside(const geo::ClusterBounds& k, const ViewVolume& volume) const;
     // Whether the sphere lies wholly inside: then none of the clusters it holds is outside.
     bool inside(const geo::ClusterBounds& k, const ViewVolume& volume) const;

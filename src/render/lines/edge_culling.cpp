@@ -15,9 +15,6 @@ void append_edge_work(const geo::ClusteredEdges& clusters, const glm::mat4& mode
                       const HizView* hiz, std::vector<HizBounds>* bounds) {
     const ViewVolume guard(view.proj, view.near, view.far, kGuard);
     const InstanceClusters instance_view(model_view);
-    // Sphere radii in view space for hierarchical-Z, widened past float rounding.
-    const float radius_scale =
-        hiz ? static_cast<float>(instance_view.axis_scale() * (1.0 + 1e-5)) : 0.0f;
     // An instance wholly inside the view needs no test per cluster.
     const bool inside = instance_view.inside(clusters.all, guard);
     for (const geo::EdgeCluster& k : clusters.clusters) {
@@ -48,8 +45,9 @@ void append_edge_work(const geo::ClusteredEdges& clusters, const glm::mat4& mode
         ++stats.items;
         work.push_back(EdgeWorkItem(instance, k.first, count, 0u));
         if (hiz && bounds) {
-            const glm::vec3 c(model_view * glm::vec4(k.center, 1.0f));
-            bounds->push_back(hiz_bounds(*hiz, c, k.radius * radius_scale));
+            const ViewSphere sphere = instance_view.view_sphere(k);
+            bounds->push_back(hiz_bounds(*hiz, glm::vec3(sphere.center),
+                                         static_cast<float>(sphere.radius * (1.0 + 1e-5))));
         }
     }
 }

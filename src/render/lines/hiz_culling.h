@@ -11,7 +11,7 @@
 // Conservative by construction: a sphere reaching behind the eye's near plane, or whose
 // rectangle covers more than kMaxHizTiles of the coarse tiles, gets no test. The test is off
 // where hidden lines are drawn (no occlusion) and where the frame is too small for it to pay
-// (hiz_pays).
+// (hiz_culls, render/passes.h).
 #include <cstdint>
 #include <glm/glm.hpp>
 
