@@ -32,6 +32,16 @@ inline constexpr std::size_t kNeverCompute = static_cast<std::size_t>(-1);
 // Where two cost lines cross: the smallest triangle count from which compute costs no more.
 std::size_t crossing_triangles(const MethodCost& geometry_shader, const MethodCost& compute);
 
+// The crossing from the measured points themselves (sizes ascending, each size's fastest
+// frame per method): from the first size after which compute never costs more, interpolated
+// between that size and the one before; outside the measured sizes, the fitted lines'
+// crossing (clamped to below the smallest size when compute already wins there). One frame
+// disturbed by load moves only its neighbourhood, where a line fitted through every point
+// swung its intercept and with it the crossing to 0 or to never.
+std::size_t measured_crossing(const std::vector<std::size_t>& sizes,
+                              const std::vector<double>& geometry_shader_ms,
+                              const std::vector<double>& compute_ms);
+
 // Least squares through (triangles, ms) points.
 MethodCost fit_cost(const std::vector<std::size_t>& triangles, const std::vector<double>& ms);
 

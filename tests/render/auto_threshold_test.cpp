@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
 
 #include "render/settings.h"
 #include "support/gl_test.h"
@@ -29,6 +30,22 @@ TEST(AutoThreshold, CrossesWhereComputeStopsCostingMore) {
     EXPECT_EQ(crossing_triangles({1.0, 0.1}, {4.0, 0.3}), kNeverCompute);  // never
     EXPECT_EQ(crossing_triangles({5.0, 0.1}, {4.0, 0.3}), 0u);             // cheaper, flatter
     EXPECT_EQ(crossing_triangles({1.0, 0.3}, {4.0, 0.3}), kNeverCompute);  // parallel, dearer
+}
+
+TEST(AutoThreshold, CrossesBetweenTheMeasuredSizesWhereComputeStopsLosing) {
+    const std::vector<std::size_t> sizes = {1000, 4000, 16000, 48000};
+    // Compute loses by 1 ms at 1k and saves 2 ms at 4k: a third of the way, 2k triangles.
+    EXPECT_EQ(measured_crossing(sizes, {2.0, 5.0, 9.0, 20.0}, {3.0, 3.0, 5.0, 8.0}), 2000u);
+    // One frame disturbed by load (the geometry shader's 4k frame at 9 ms) moves the fitted
+    // lines' crossing a long way; the measured one stays between 1k and 4k.
+    const std::vector<double> g = {2.0, 9.0, 9.0, 20.0}, c = {3.0, 3.0, 5.0, 8.0};
+    EXPECT_EQ(measured_crossing(sizes, g, c), 1429u);  // 1000 + 3000 * 1 / 7, rounded up
+    // A win at a small size that is lost again later does not count: between 4k and 16k.
+    EXPECT_EQ(measured_crossing(sizes, {3.0, 3.0, 6.0, 20.0}, {2.0, 4.0, 5.0, 8.0}), 10000u);
+    // Compute dearer at every size: the fitted lines decide (here parallel: never).
+    EXPECT_EQ(measured_crossing(sizes, {1.0, 2.0, 3.0, 4.0}, {2.0, 3.0, 4.0, 5.0}), kNeverCompute);
+    // Cheaper at every size: from at most the smallest size.
+    EXPECT_LE(measured_crossing(sizes, {3.0, 5.0, 9.0, 20.0}, {2.0, 3.0, 5.0, 8.0}), 1000u);
 }
 
 TEST(AutoThreshold, AMeasuredCrossingReplacesTheBuiltInRule) {
@@ -70,7 +87,8 @@ TEST_F(AutoThresholdGlTest, MeasuresBothMethodsOnThisContext) {
     EXPECT_EQ(g.per_1k_ms, m.geometry_shader.per_1k_ms);
     for (const MethodCost& c : {m.geometry_shader, m.compute})
         EXPECT_TRUE(std::isfinite(c.fixed_ms) && std::isfinite(c.per_1k_ms));
-    EXPECT_EQ(m.compute_from_triangles, crossing_triangles(m.geometry_shader, m.compute));
+    EXPECT_EQ(m.compute_from_triangles,
+              measured_crossing(m.sizes, m.geometry_shader_ms, m.compute_ms));
     EXPECT_GT(m.seconds, 0.0);
 }
 
