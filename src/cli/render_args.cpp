@@ -20,6 +20,7 @@ const std::string& render_usage() {
             "                       [--mask mask.png] [--repeat N] [--copies N] [--beam "
             "classic|mame]\n"
             "                       [--lit-share] [--no-cluster-culling] [--hiz-culling]\n"
+            "                       [--prepass-raster auto|pipeline|compute]\n"
             "                       [--material-lines]\n"
             "                       [--svg lines.svg]\n"
             "                       [--overwrite]\n"
@@ -42,6 +43,11 @@ const std::string& render_usage() {
             "picture; for timing what culling triangle clusters saves).\n"
             "--hiz-culling skips the edge clusters the depth prepass hides whole (hierarchical-Z;\n"
             "the same picture; off by default, as it did not pay where measured).\n"
+            "--prepass-raster: who rasterises the depth prepass's small triangles: a compute "
+            "shader\n"
+            "on every thread, or the GL pipeline (auto: compute on a software rasteriser for a "
+            "dense\n"
+            "mesh; the same depth up to float rounding).\n"
             "--material-lines draws the edges between faces of different materials as lines too\n"
             "(a model whose parts have their own materials; a level's [render] material_lines).\n"
             "--lit-share prints the share of the picture's pixels whose brightest channel is "
@@ -96,6 +102,17 @@ RenderOptions parse_render_args(Args args) {
             o.smoothing = false;
         } else if (a == "--one-sided") {
             o.one_sided = true;
+        } else if (a == "--prepass-raster") {
+            const std::string_view s = cur.value(a);
+            if (s == "auto")
+                o.prepass_raster = render::PrepassRaster::automatic;
+            else if (s == "pipeline")
+                o.prepass_raster = render::PrepassRaster::pipeline;
+            else if (s == "compute")
+                o.prepass_raster = render::PrepassRaster::compute;
+            else
+                throw UsageError("--prepass-raster: expected auto, pipeline or compute, not " +
+                                 printable(s));
         } else if (a == "--shading") {
             const std::string_view s = cur.value(a);
             if (s != "flat" && s != "smooth")

@@ -31,6 +31,8 @@ struct RenderOptions {
     bool lit_share = false;
     bool cluster_culling = true;  // --no-cluster-culling: whole meshes in prepass and fills
     bool hiz_culling = false;     // --hiz-culling: skip edge clusters the prepass hides
+    // --prepass-raster: who rasterises the prepass's small triangles (lines/prepass_raster.h)
+    render::PrepassRaster prepass_raster = render::PrepassRaster::automatic;
     bool material_lines = false;  // --material-lines: edges between materials are lines too
     bool overwrite = false;       // may replace an existing file that is not a PNG
 };

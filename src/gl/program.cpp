@@ -141,6 +141,9 @@ void Program::set(const char* n, const glm::vec2& v) const {
 void Program::set(const char* n, const glm::ivec2& v) const {
     if (const GLint at = location(n); at >= 0) glProgramUniform2iv(id(), at, 1, glm::value_ptr(v));
 }
+void Program::set(const char* n, const glm::ivec4& v) const {
+    if (const GLint at = location(n); at >= 0) glProgramUniform4iv(id(), at, 1, glm::value_ptr(v));
+}
 void Program::set(const char* n, const glm::vec3& v) const {
     if (const GLint at = location(n); at >= 0) glProgramUniform3fv(id(), at, 1, glm::value_ptr(v));
 }

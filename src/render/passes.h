@@ -69,6 +69,9 @@ struct PassContext {
     int view_rows = 0;
     // Where draw_batch_triangles puts a frame's indirect draws; null: no cluster culling.
     gl::Buffer* triangle_draws = nullptr;
+    // The compute prepass's work items (lines/prepass_raster.h); null: no compute prepass.
+    gl::Buffer* raster_work = nullptr;
+    bool software_rasteriser = false;  // llvmpipe and the like (gl::is_software_renderer)
     // What the passes before this one wrote this frame (frame_passes.h declares it); a held
     // frame starts with what the frame it holds wrote. Null: nothing (the mask passes).
     const FrameResources* frame = nullptr;
@@ -91,10 +94,11 @@ double depth_clear_value(const PassContext& ctx);
 // outside only those not wholly facing away (render/gpu_scene/triangle_culling.h), unless
 // `moves_vertices` (a vertex stage that displaces vertices leaves the clusters' bounds); returns
 // what that culling did.
+// With a `route`, the small clusters go to it instead (the compute prepass, prepass_raster.h).
 TriangleCullStats draw_batch_triangles(const PassContext& ctx, gl::PipelineState state,
                                        bool occluders_only,
                                        gl::VertexArray GpuMesh::*vao = &GpuMesh::prepass_vao,
-                                       bool moves_vertices = false);
+                                       bool moves_vertices = false, RasterRoute* route = nullptr);
 // mask_mode: draw the 1-pixel visible-spine mask into targets.mask instead of shaded lines.
 void pass_lines(const PassContext& ctx, bool mask_mode);
 // Shared by both line methods' draw passes (pass_lines.cpp): binds and clears the lines (or

@@ -51,6 +51,9 @@ Programs load_programs(const RenderSettings& settings) {
     auto stage = [&](GLenum type, const char* file) { return gl::StageFile{type, dir / file}; };
     Programs p;
     p.prepass = program({stage(GL_VERTEX_SHADER, "lines/prepass.vert")});
+    p.prepass_raster = program({stage(GL_COMPUTE_SHADER, "lines/prepass_raster.comp")});
+    p.depth_resolve = program({stage(GL_VERTEX_SHADER, "lines/depth_resolve.vert"),
+                               stage(GL_FRAGMENT_SHADER, "lines/depth_resolve.frag")});
     // The beam's line stages mark the screen tiles they light (shaders/beam/beam_tiles.glsl).
     const std::vector<std::string> beam_tiles = {"BEAM_TILES 1",
                                                  "TILE_SIZE " + std::to_string(kScreenTileSize)};

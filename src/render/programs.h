@@ -10,6 +10,8 @@ namespace bz::render {
 
 struct Programs {
     gl::Program prepass;
+    gl::Program prepass_raster;  // the compute prepass's small clusters (lines/prepass_raster.h)
+    gl::Program depth_resolve;   // ... merged into the depth buffer
     gl::Program lines;
     gl::Program mask;              // lines.* with MASK_MODE
     gl::Program edges;             // LineMethod::compute: edges.comp fills the edge buffer

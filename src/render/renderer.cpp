@@ -41,6 +41,7 @@ struct Renderer::Impl {
     StyleTextures style_textures = make_style_textures();
     gl::Buffer instances;
     gl::Buffer triangle_draws;  // the prepass's and fills' indirect draws (draw_batch_triangles)
+    gl::Buffer raster_work;     // the compute prepass's work items (lines/prepass_raster.h)
     MeshCache gpu_meshes{instances};
     EdgeStorage edges;
     gl::VertexArray empty_vao;
@@ -126,7 +127,9 @@ struct Renderer::Impl {
                            .picture = picture,
                            .seed = frame.seed,
                            .view_rows = view_rows,
-                           .triangle_draws = &triangle_draws};
+                           .triangle_draws = &triangle_draws,
+                           .raster_work = &raster_work,
+                           .software_rasteriser = software};
     }
 
     CameraMatrices camera(const scene::FrameList& frame) const {
@@ -239,6 +242,9 @@ void Renderer::set_settings(const RenderSettings& settings) {
         settings.depth != impl_->settings.depth ||
         settings.bloom_resolution != impl_->settings.bloom_resolution ||
         settings.method != impl_->settings.method || settings.beam.bloom != old_beam.bloom ||
+        // The compute prepass's image is there unless the pipeline draws every triangle.
+        (settings.prepass_raster == PrepassRaster::pipeline) !=
+            (impl_->settings.prepass_raster == PrepassRaster::pipeline) ||
         settings.beam.mip_weights.size() != old_beam.mip_weights.size() ||
         (settings.beam.phosphor == PhosphorDecay::off) != (old_beam.phosphor == PhosphorDecay::off);
     const bool new_kernel = settings.bloom_taps != impl_->settings.bloom_taps ||
@@ -400,6 +406,16 @@ std::vector<std::uint8_t> Renderer::read_bloom(glm::ivec2* size) {
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     glGetTextureImage(bloom.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, static_cast<GLsizei>(out.size()),
                       out.data());
+    return out;
+}
+
+std::vector<float> Renderer::read_depth() {
+    Impl& m = *impl_;
+    std::vector<float> out(static_cast<std::size_t>(m.width) * static_cast<std::size_t>(m.height));
+    if (!m.targets.depth) return out;
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glGetTextureImage(m.targets.depth.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT,
+                      static_cast<GLsizei>(out.size() * sizeof(float)), out.data());
     return out;
 }
 

@@ -68,6 +68,9 @@ class Renderer {
     // The HDR lines target (lines + HUD, before bloom) of the last render(): RGBA float,
     // row 0 at the top. For checks such as "no NaN or Inf pixels".
     std::vector<float> read_lines_hdr();
+    // The depth the last render()'s prepass (or fill) left, one float per pixel in the depth
+    // convention's own values, in GL's order (row 0 at the bottom).
+    std::vector<float> read_depth();
     // The picture of the last render() as bloom and composite saw it: the lines target, or,
     // with phosphor persistence on, this frame's lines over the decayed earlier pictures.
     std::vector<float> read_picture_hdr();

@@ -18,6 +18,13 @@ enum class DepthFormat {
 enum class BloomResolution { full = 1, half = 2, quarter = 4 };
 
 // How feature lines are found.
+// Who rasterises the depth prepass's small triangles (render/lines/prepass_raster.h).
+enum class PrepassRaster {
+    automatic,  // compute on a software rasteriser where the frame has enough triangles
+    pipeline,   // the GL pipeline draws every triangle
+    compute,    // small clusters in a compute shader wherever the depth format allows it
+};
+
 enum class LineMethod {
     geometry_shader,  // a geometry shader per triangle on triangle adjacency (pass_lines.cpp)
     compute,          // a compute shader per unique edge fills the edge buffer, then one quad per
@@ -150,6 +157,10 @@ struct RenderSettings {
     // either way. Off by default: measured, it cost more than it saved on the H100 and gained
     // nothing clear on llvmpipe in the scenes here (docs/measurements/hiz-culling.md).
     bool hiz_culling = false;
+    // The prepass's small clusters rasterised by a compute shader on every thread, where the
+    // GL pipeline would set up each triangle on one (llvmpipe). The same depth at every pixel
+    // centre up to float rounding; automatic chooses it on software rasterisers only.
+    PrepassRaster prepass_raster = PrepassRaster::automatic;
     bool lod = true;           // raise the crease threshold / use simplified meshes far away
     bool count_edges = false;  // count emitted feature edges (costs a query per frame)
     LineMethod method = kDefaultLineMethod;

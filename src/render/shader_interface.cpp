@@ -43,6 +43,8 @@ std::vector<std::string> build_defines() {
         define("SPINE_SPANS_BINDING", kSpineSpansBinding),
         define("EDGE_FACE_NORMALS_BINDING", kFaceNormalsBinding),
         define("EDGE_WORK_BINDING", kEdgeWorkBinding),
+        define("RASTER_TRIANGLES_BINDING", kRasterTrianglesBinding),
+        define("RASTER_WORK_BINDING", kRasterWorkBinding),
         define("TEXTURE_UNIT_DEPTH", kTextureUnitDepth),
         define("TEXTURE_UNIT_SOURCE", kTextureUnitSource),
         define("TEXTURE_UNIT_COARSER", kTextureUnitCoarser),
@@ -66,6 +68,7 @@ std::vector<std::string> build_defines() {
         define("IMAGE_UNIT_LIT_TILES", kImageUnitLitTiles),
         define("IMAGE_UNIT_BEAM_TILES", kImageUnitBeamTiles),
         define("IMAGE_UNIT_DEPTH_TILES", kImageUnitDepthTiles),
+        define("IMAGE_UNIT_RASTER_DEPTH", kImageUnitRasterDepth),
         define("DEPTH_TILE_SIZE", static_cast<unsigned>(kDepthTileSize)),
         define("COARSE_DEPTH_TILES", static_cast<unsigned>(kCoarseDepthTiles)),
     };

@@ -47,6 +47,11 @@ void make_images(Targets& t, Targets& old, const RenderSettings& s, ResourceSet 
                       ? std::move(old.depth)
                       : gl::Texture2D(width, height, depth_format(s), gl::Filter::nearest);
         t.allocated.add(Resource::depth);
+        if (s.depth == DepthFormat::reversed_f32 && s.prepass_raster != PrepassRaster::pipeline) {
+            t.raster_depth = old.raster_depth && kept(Resource::depth)
+                                 ? std::move(old.raster_depth)
+                                 : gl::Texture2D(width, height, GL_R32UI, gl::Filter::nearest);
+        }
     }
     if (wants(Resource::lines)) {
         t.lines = kept(Resource::lines)
@@ -198,7 +203,7 @@ std::size_t allocated_bytes(const Targets& t) {
     for (const gl::Texture2D* tex :
          {&t.depth, &t.lines, &t.bloom_a, &t.bloom_b, &t.bloom_out, &t.mask, &t.output, &t.normals,
           &t.canvas, &t.shrunk_depth, &t.halo, &t.lit_tiles, &t.beam_tiles, &t.depth_tiles,
-          &t.depth_tiles_coarse})
+          &t.depth_tiles_coarse, &t.raster_depth})
         bytes += texture_bytes(*tex);
     for (const gl::Texture2D& level : t.bloom_mips) bytes += texture_bytes(level);
     if (t.lit_tiles) bytes += t.tile_list.size();

@@ -28,6 +28,9 @@ struct Targets {
     int height = 0;
     ResourceSet allocated;  // what make_targets was asked for
     gl::Texture2D depth;    // prepass depth (32F reversed-Z or 24-bit)
+    // The compute prepass's nearest depth per pixel as float bits (R32UI, lines/prepass_raster.h),
+    // merged into `depth` within the prepass; with reversed-Z depth where it may run.
+    gl::Texture2D raster_depth;
     gl::Texture2D lines;    // HDR lines + HUD, RGBA16F, GL_MAX blended
     gl::Texture2D bloom_a;  // Gaussian bloom ping-pong at the bloom resolution
     gl::Texture2D bloom_b;

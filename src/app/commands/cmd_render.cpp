@@ -55,8 +55,9 @@ void print_timings(const render::Renderer& r,
     if (t.clusters > 0) {
         std::fprintf(stdout,
                      "triangle clusters %zu: %zu outside the view, %zu facing away; "
-                     "prepass triangles %zu of %zu\n",
-                     t.clusters, t.outside_frustum, t.facing_away, t.triangles_drawn, t.triangles);
+                     "prepass triangles %zu of %zu (%zu of them rasterised by compute)\n",
+                     t.clusters, t.outside_frustum, t.facing_away, t.triangles_drawn, t.triangles,
+                     t.triangles_computed);
     }
 }
 
@@ -123,6 +124,7 @@ int cmd_render(Args args) {
     settings.one_sided_outlines = o.one_sided;
     settings.cluster_culling = o.cluster_culling;
     settings.hiz_culling = o.hiz_culling;
+    settings.prepass_raster = o.prepass_raster;
     settings.material_lines = o.material_lines;
     // A one-off frame measures nothing: it uses the machine's kept crossing, if any.
     const LineMethodProfile line_methods = user_line_method_profile(Calibration::kept_only);

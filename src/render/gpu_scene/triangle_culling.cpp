@@ -2,10 +2,37 @@
 
 namespace bz::render {
 
+void RasterRoute::take(const RasterRoute& o) {
+    work.insert(work.end(), o.work.begin(), o.work.end());
+    lo = glm::min(lo, o.lo);
+    hi = glm::max(hi, o.hi);
+}
+
+namespace {
+
+// Whether `route` takes cluster `k`, and if so, its work item.
+bool routed(RasterRoute& route, const InstanceClusters& instance_view,
+            const geo::TriangleCluster& k, bool skip_back_faces, std::uint32_t instance) {
+    const ViewSphere s = instance_view.view_sphere(k);
+    const std::optional<ScreenRect> rect =
+        sphere_screen_rect(route.view, glm::vec3(s.center), static_cast<float>(s.radius));
+    if (!rect) return false;
+    const glm::vec2 size = rect->hi - rect->lo;
+    if (!(size.x <= kMaxRasterClusterPx && size.y <= kMaxRasterClusterPx)) return false;
+    route.work.emplace_back(instance, k.first_index / 3, k.index_count / 3,
+                            skip_back_faces ? 1u : 0u);
+    route.lo = glm::min(route.lo, rect->lo);
+    route.hi = glm::max(route.hi, rect->hi);
+    return true;
+}
+
+}  // namespace
+
 void append_triangle_draws(const std::vector<geo::TriangleCluster>& clusters,
                            const geo::ClusterBounds& all, const glm::mat4& model_view,
                            bool skip_back_faces, const ViewVolume& view, std::uint32_t instance,
-                           std::vector<TriangleDraw>& draws, TriangleCullStats& stats) {
+                           std::vector<TriangleDraw>& draws, TriangleCullStats& stats,
+                           RasterRoute* route) {
     const InstanceClusters instance_view(model_view);
     // An instance wholly inside the view needs no test per cluster.
     const bool inside = instance_view.inside(all, view);
@@ -26,6 +53,11 @@ void append_triangle_draws(const std::vector<geo::TriangleCluster>& clusters,
             continue;
         }
         stats.triangles_drawn += k.index_count / 3;
+        if (route && routed(*route, instance_view, k, skip_back_faces, instance)) {
+            stats.triangles_computed += k.index_count / 3;
+            extend = false;
+            continue;
+        }
         if (extend && draws.back().first_index + draws.back().count == k.first_index) {
             draws.back().count += k.index_count;
         } else {

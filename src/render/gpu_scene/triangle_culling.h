@@ -10,6 +10,7 @@
 
 #include "geometry/derived/triangle_clusters.h"
 #include "render/gpu_scene/cluster_culling.h"
+#include "render/lines/hiz_culling.h"
 
 namespace bz::render {
 
@@ -29,21 +30,43 @@ struct TriangleCullStats {
     std::size_t facing_away = 0;      // dropped: every face away, back faces culled
     std::size_t triangles = 0;        // triangles of the clusters looked at
     std::size_t triangles_drawn = 0;  // triangles of the kept clusters
+    // Of those, the triangles of clusters rasterised by the compute prepass (RasterRoute).
+    std::size_t triangles_computed = 0;
     TriangleCullStats& operator+=(const TriangleCullStats& o) {
         clusters += o.clusters;
         outside_frustum += o.outside_frustum;
         facing_away += o.facing_away;
         triangles += o.triangles;
         triangles_drawn += o.triangles_drawn;
+        triangles_computed += o.triangles_computed;
         return *this;
     }
 };
 
-// Appends one draw per run of consecutive kept clusters of instance `instance`.
+// Where the compute prepass takes the clusters it rasterises (render/lines/prepass_raster.h): a
+// kept cluster whose bounding sphere lies wholly beyond the near plane and covers at most
+// kMaxRasterClusterPx window pixels each way becomes a work item here instead of a draw.
+inline constexpr float kMaxRasterClusterPx = 48.0f;
+struct RasterRoute {
+    explicit RasterRoute(const HizView& v) : view(v) {}
+    HizView view;
+    // x instance, y first triangle, z triangles, w flags (1: skip back faces).
+    std::vector<glm::uvec4> work;
+    // The union of the routed clusters' rectangles (empty while lo > hi).
+    glm::vec2 lo{1e30f}, hi{-1e30f};
+    // Filled by draw_batch_triangles (render/passes.h): per batch with work, x the batch's
+    // index in FrameBatches, y its first work item, z its count (one mesh per dispatch).
+    std::vector<glm::uvec3> batches;
+    void take(const RasterRoute& o);  // appends o's work and widens the union
+};
+
+// Appends one draw per run of consecutive kept clusters of instance `instance`, or with a
+// `route`, one work item per small kept cluster to it and draws for the rest.
 // `all`: a sphere around all the clusters (ClusteredTriangles::all).
 void append_triangle_draws(const std::vector<geo::TriangleCluster>& clusters,
                            const geo::ClusterBounds& all, const glm::mat4& model_view,
                            bool skip_back_faces, const ViewVolume& view, std::uint32_t instance,
-                           std::vector<TriangleDraw>& draws, TriangleCullStats& stats);
+                           std::vector<TriangleDraw>& draws, TriangleCullStats& stats,
+                           RasterRoute* route = nullptr);
 
 }  // namespace bz::render

@@ -39,12 +39,13 @@ HizView::HizView(const glm::mat4& proj, float near_plane, int w, int h)
              proj[3][3] == 0.0f && fx > 0.0f && fy > 0.0f && w > 0 && h > 0 && near_plane > 0.0f;
 }
 
-HizBounds hiz_bounds(const HizView& view, const glm::vec3& center, float radius) {
+std::optional<ScreenRect> sphere_screen_rect(const HizView& view, const glm::vec3& center,
+                                             float radius) {
     // Every point of the box around the sphere lies at a view depth d in [dn, df] (beyond
     // the near plane) and at x in [cx - r, cx + r]: its window x, (fx x / d - sx), is
     // extreme at a corner, so two divisions per side bound it.
     const float dn = -(center.z + radius), df = -(center.z - radius);
-    if (!view.usable || !(dn > view.near) || !std::isfinite(df)) return kNoHizTest;
+    if (!view.usable || !(dn > view.near) || !std::isfinite(df)) return std::nullopt;
     const auto span = [&](float c, float f, float s, int size) {
         const float lo = std::min((c - radius) / dn, (c - radius) / df);
         const float hi = std::max((c + radius) / dn, (c + radius) / df);
@@ -53,8 +54,15 @@ HizBounds hiz_bounds(const HizView& view, const glm::vec3& center, float radius)
     };
     const glm::vec2 x = span(center.x, view.fx, view.sx, view.width);
     const glm::vec2 y = span(center.y, view.fy, view.sy, view.height);
-    const glm::vec2 lo = glm::vec2(x.x, y.x) - kRectMargin;
-    const glm::vec2 hi = glm::vec2(x.y, y.y) + kRectMargin;
+    return ScreenRect{glm::vec2(x.x, y.x), glm::vec2(x.y, y.y)};
+}
+
+HizBounds hiz_bounds(const HizView& view, const glm::vec3& center, float radius) {
+    const std::optional<ScreenRect> rect = sphere_screen_rect(view, center, radius);
+    if (!rect) return kNoHizTest;
+    const float dn = -(center.z + radius);  // the sphere's nearest view depth
+    const glm::vec2 lo = rect->lo - kRectMargin;
+    const glm::vec2 hi = rect->hi + kRectMargin;
     const auto w = static_cast<float>(view.width), h = static_cast<float>(view.height);
     // Wholly off screen: the frustum test's business (its guard band keeps such clusters).
     if (!(hi.x >= 0.0f && hi.y >= 0.0f && lo.x < w && lo.y < h)) return kNoHizTest;

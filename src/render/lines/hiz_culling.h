@@ -14,6 +14,7 @@
 // (hiz_culls, render/passes.h).
 #include <cstdint>
 #include <glm/glm.hpp>
+#include <optional>
 
 namespace bz::render {
 
@@ -38,6 +39,15 @@ struct HizView {
     float near = 0.1f;
     int width = 0, height = 0;  // pixels
 };
+
+// The window rectangle (pixels, unclamped, no margin) that a view-space sphere covers, when the
+// sphere lies wholly beyond the near plane; nullopt otherwise. Also what the compute prepass
+// routes clusters by (prepass_raster.h).
+struct ScreenRect {
+    glm::vec2 lo{0.0f}, hi{0.0f};
+};
+std::optional<ScreenRect> sphere_screen_rect(const HizView& view, const glm::vec3& center,
+                                             float radius);
 
 // A cluster's record for edges.comp (one uvec4): x = x0 | y0 << 16 and y = x1 | y1 << 16, the
 // tile rectangle (inclusive) on level w - 1 (0 fine, 1 coarse); z the float bits of the

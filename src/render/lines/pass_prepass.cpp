@@ -1,7 +1,9 @@
+#include <optional>
 #include <vector>
 
 #include "core/parallel_chunks.h"
 #include "render/gpu_scene/cluster_culling.h"
+#include "render/lines/prepass_raster.h"
 #include "render/passes.h"
 
 namespace bz::render {
@@ -45,7 +47,7 @@ bool all_inside(const PassContext& ctx, const Batch& b, const GpuMesh& mesh,
 
 TriangleCullStats draw_batch_triangles(const PassContext& ctx, gl::PipelineState state,
                                        bool occluders_only, gl::VertexArray GpuMesh::*vao,
-                                       bool moves_vertices) {
+                                       bool moves_vertices, RasterRoute* route) {
     // Every culled batch's draws go into one buffer, uploaded once.
     const ViewVolume view(ctx.cam.proj, ctx.cam.near, ctx.cam.far, 1.0);
     TriangleCullStats stats;
@@ -71,8 +73,8 @@ TriangleCullStats draw_batch_triangles(const PassContext& ctx, gl::PipelineState
         if (!culls_clusters(ctx, mesh, moves_vertices)) continue;
         const bool skip_back_faces = b.eye_outside && mesh.outward_closed;
         // Both faces drawn and every instance wholly in view: nothing can be dropped, so the
-        // batch stays one instanced draw.
-        if (!skip_back_faces && all_inside(ctx, b, mesh, view)) {
+        // batch stays one instanced draw (unless the compute prepass may take its clusters).
+        if (!route && !skip_back_faces && all_inside(ctx, b, mesh, view)) {
             ranges[i].whole = true;
             continue;
         }
@@ -88,18 +90,37 @@ TriangleCullStats draw_batch_triangles(const PassContext& ctx, gl::PipelineState
     const std::size_t chunks = chunk_count(jobs.size(), 1, threads);
     std::vector<std::vector<TriangleDraw>> chunk_draws(chunks);
     std::vector<TriangleCullStats> chunk_stats(chunks);
-    std::vector<std::size_t> job_draws(jobs.size());
+    std::vector<std::size_t> job_draws(jobs.size()), job_work(jobs.size());
+    std::vector<RasterRoute> chunk_routes;
+    if (route) chunk_routes.assign(chunks, RasterRoute(route->view));
     parallel_chunks(jobs.size(), 1, threads, [&](std::size_t j, std::size_t c) {
         const Job& job = jobs[j];
         const std::size_t before = chunk_draws[c].size();
+        RasterRoute* chunk_route = route ? &chunk_routes[c] : nullptr;
+        const std::size_t work_before = chunk_route ? chunk_route->work.size() : 0;
         append_triangle_draws(job.mesh->triangle_clusters, job.mesh->triangle_bounds,
                               ctx.batches.instances[job.instance].model_view, job.skip_back_faces,
-                              view, job.instance, chunk_draws[c], chunk_stats[c]);
+                              view, job.instance, chunk_draws[c], chunk_stats[c], chunk_route);
         job_draws[j] = chunk_draws[c].size() - before;
+        job_work[j] = chunk_route ? chunk_route->work.size() - work_before : 0;
     });
     for (std::size_t c = 0; c < chunks; ++c) {
         draws.insert(draws.end(), chunk_draws[c].begin(), chunk_draws[c].end());
         stats += chunk_stats[c];
+        if (route) route->take(chunk_routes[c]);
+    }
+    // Each batch's work items lie together, in job order, as its draws do.
+    if (route) {
+        std::size_t first = route->work.size();
+        for (std::size_t j = 0; j < jobs.size(); ++j) first -= job_work[j];
+        for (std::size_t j = 0; j < jobs.size(); ++j) {
+            if (job_work[j] == 0) continue;
+            const auto batch = static_cast<std::uint32_t>(jobs[j].batch);
+            if (route->batches.empty() || route->batches.back().x != batch)
+                route->batches.emplace_back(batch, static_cast<std::uint32_t>(first), 0u);
+            route->batches.back().z += static_cast<std::uint32_t>(job_work[j]);
+            first += job_work[j];
+        }
     }
     std::size_t next = 0;
     for (std::size_t j = 0; j < jobs.size(); ++j) {
@@ -143,6 +164,7 @@ TriangleCullStats draw_batch_triangles(const PassContext& ctx, gl::PipelineState
 // Early-Z: fill the depth texture the spine test reads. Both faces are drawn so open,
 // single-sided surfaces still hide what is behind them; back faces are culled only for
 // outward-closed meshes seen from outside, whose back faces their front faces hide anyway.
+// On a software rasteriser the small clusters go to a compute shader (prepass_raster.h).
 void pass_prepass(const PassContext& ctx) {
     ctx.targets.depth_fbo.bind();
     const gl::PipelineState state = depth_writing_state(ctx, false);
@@ -152,8 +174,14 @@ void pass_prepass(const PassContext& ctx) {
     if (!ctx.occlusion) return;
     ctx.programs.prepass.use();
     ctx.programs.prepass.set("u_proj", ctx.cam.proj);
-    const TriangleCullStats culled = draw_batch_triangles(ctx, state, true);
-    if (ctx.stats) ctx.stats->triangle_culling = culled;
+    std::optional<RasterRoute> route;
+    if (computes_prepass(ctx))
+        route.emplace(HizView(ctx.cam.proj, ctx.cam.near, ctx.targets.width, ctx.targets.height));
+    const TriangleCullStats culled = draw_batch_triangles(ctx, state, true, &GpuMesh::prepass_vao,
+                                                          false, route ? &*route : nullptr);
+    TriangleCullStats stats = culled;
+    if (route && !raster_routed_clusters(ctx, *route, state)) stats.triangles_computed = 0;
+    if (ctx.stats) ctx.stats->triangle_culling = stats;
 }
 
 }  // namespace bz::render
