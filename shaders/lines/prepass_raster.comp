@@ -4,7 +4,9 @@
 // every triangle on one thread, which a mesh of many tiny triangles pays per triangle; here
 // every thread takes its share. One work group per work item: a cluster of one instance's
 // triangles whose bounding sphere the CPU found small on screen and wholly beyond the near
-// plane, so no triangle needs clipping and each covers few pixel centres.
+// plane, so no triangle needs clipping and each covers few pixel centres. Each of the
+// cluster's vertices is projected once (about 6 triangles share one), as the pipeline's
+// vertex cache would.
 //
 // The same rules as the pipeline's: a pixel is covered when its centre lies inside the
 // triangle or on its edge (edges shared by two triangles are evaluated the same way from both,
@@ -15,11 +17,17 @@
 // nearest surface is an atomic maximum on the bits (0 = the clear: nothing).
 #include "../instance_data.glsl"
 
+// One invocation per vertex of a cluster (at most geo::kClusterVertices = 64), then per
+// triangle.
 layout(local_size_x = 64) in;
 
 layout(std430, binding = EDGE_POSITIONS_BINDING) readonly buffer Positions { float positions[]; };
-layout(std430, binding = RASTER_TRIANGLES_BINDING) readonly buffer Triangles { uint indices[]; };
-// x instance, y first triangle, z triangle count, w flags (1: skip back faces).
+// Each cluster's distinct vertices, and per triangle its corners into its cluster's list
+// (a | b << 8 | c << 16): geo::ClusteredTriangles::vertices and corners.
+layout(std430, binding = RASTER_VERTICES_BINDING) readonly buffer Vertices { uint vertices[]; };
+layout(std430, binding = RASTER_CORNERS_BINDING) readonly buffer Corners { uint corners[]; };
+// render::RasterItem packed: x instance, y first triangle, z triangles | vertices << 8 |
+// skip back faces << 16, w first vertex.
 layout(std430, binding = RASTER_WORK_BINDING) readonly buffer Work { uvec4 work[]; };
 layout(binding = IMAGE_UNIT_RASTER_DEPTH, r32ui) uniform coherent uimage2D u_depth;
 
@@ -54,15 +62,21 @@ float edge_function(Edge e, vec2 q) {
     return e.sign * (e.d.x * (q.y - e.o.y) - e.d.y * (q.x - e.o.x));
 }
 
+// The cluster's vertices in window space, each projected once by one invocation.
+shared vec3 s_points[64];
+
 void main() {
     uvec4 item = work[u_work_base + gl_WorkGroupID.x];
-    mat4 model_view = instance_model_view(item.x);
-    bool skip_back = (item.w & 1u) != 0u;
-    for (uint k = gl_LocalInvocationID.x; k < item.z; k += gl_WorkGroupSize.x) {
-        uint t = item.y + k;
-        vec3 p0 = window_point(indices[3u * t], model_view);
-        vec3 p1 = window_point(indices[3u * t + 1u], model_view);
-        vec3 p2 = window_point(indices[3u * t + 2u], model_view);
+    uint triangles = item.z & 0xFFu, vertex_count = (item.z >> 8) & 0xFFu;
+    bool skip_back = ((item.z >> 16) & 1u) != 0u;
+    uint v = gl_LocalInvocationID.x;
+    if (v < vertex_count) s_points[v] = window_point(vertices[item.w + v], instance_model_view(item.x));
+    barrier();
+    for (uint k = gl_LocalInvocationID.x; k < triangles; k += gl_WorkGroupSize.x) {
+        uint c = corners[item.y + k];
+        vec3 p0 = s_points[c & 0xFFu];
+        vec3 p1 = s_points[(c >> 8) & 0xFFu];
+        vec3 p2 = s_points[(c >> 16) & 0xFFu];
         float area = (p1.x - p0.x) * (p2.y - p0.y) - (p1.y - p0.y) * (p2.x - p0.x);
         if (!(area != 0.0) || (skip_back && area < 0.0)) continue;
         if (area < 0.0) {  // a back face drawn: walk it the other way round

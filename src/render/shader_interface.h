@@ -42,10 +42,11 @@ inline constexpr unsigned kEdgeCosinesBinding = 0;  // lines.geom: 3 crease cosi
 inline constexpr unsigned kInstancesBinding = 1;    // the frame's InstanceData
 inline constexpr unsigned kTileListBinding = 6;  // the composite's lit-tile list (tile_list.comp)
 inline constexpr unsigned kEdgeMaterialsBinding = 11;  // lines.geom: material boundary bits
-// prepass_raster.comp (lines/prepass_raster.h): the mesh's clustered triangle indices and the
-// frame's work items; it reads positions at the edge buffer's kEdgePositionsBinding.
-inline constexpr unsigned kRasterTrianglesBinding = 12;
+// prepass_raster.comp (lines/prepass_raster.h): the mesh's cluster vertex lists and triangle
+// corners, and the frame's work items; it reads positions at kEdgePositionsBinding.
+inline constexpr unsigned kRasterVerticesBinding = 12;
 inline constexpr unsigned kRasterWorkBinding = 13;
+inline constexpr unsigned kRasterCornersBinding = 14;
 
 // Texture units, one per sampler role.
 inline constexpr unsigned kTextureUnitDepth = 0;       // the prepass depth (spine test, outlines)
@@ -68,11 +69,11 @@ inline constexpr unsigned kTextureUnitDepthTiles = 1;  // hierarchical-Z: the fi
 inline constexpr unsigned kTextureUnitDepthTilesCoarse = 2;  // ... and the coarse ones
 
 // Image units.
-inline constexpr unsigned kImageUnitPicture = 0;     // the phosphor picture (composite)
-inline constexpr unsigned kImageUnitPictureLit = 1;  // its lit-tile marks (composite)
-inline constexpr unsigned kImageUnitLitTiles = 2;    // lit_tiles.glsl
-inline constexpr unsigned kImageUnitBeamTiles = 3;   // beam_tiles.glsl
-inline constexpr unsigned kImageUnitDepthTiles = 0;  // depth_tiles.comp's output
+inline constexpr unsigned kImageUnitPicture = 0;      // the phosphor picture (composite)
+inline constexpr unsigned kImageUnitPictureLit = 1;   // its lit-tile marks (composite)
+inline constexpr unsigned kImageUnitLitTiles = 2;     // lit_tiles.glsl
+inline constexpr unsigned kImageUnitBeamTiles = 3;    // beam_tiles.glsl
+inline constexpr unsigned kImageUnitDepthTiles = 0;   // depth_tiles.comp's output
 inline constexpr unsigned kImageUnitRasterDepth = 0;  // the compute prepass's depth (R32UI)
 
 // Every constant above and the edge buffer's bindings as "NAME value" for gl::Program: the

@@ -77,6 +77,8 @@ std::vector<std::pair<std::string, const bz::gl::Program*>> every_program(
     const bz::render::Programs& p) {
     std::vector<std::pair<std::string, const bz::gl::Program*>> all = {
         {"prepass", &p.prepass},
+        {"prepass_raster", &p.prepass_raster},
+        {"depth_resolve", &p.depth_resolve},
         {"lines", &p.lines},
         {"mask", &p.mask},
         {"edges", &p.edges},

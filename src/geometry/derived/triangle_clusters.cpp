@@ -9,7 +9,6 @@ namespace {
 // Meshlets of at most this many vertices and triangles: large enough that a frame's draws stay
 // few (one command per run of kept clusters), small enough that a silhouette's neighbourhood
 // is a small share of them. meshoptimizer wants the triangle count a multiple of 4.
-constexpr std::size_t kClusterVertices = 64;
 constexpr std::size_t kClusterTriangles = 124;
 
 ClusteredTriangles one_cluster(const AdjacencyMesh& mesh) {
@@ -45,15 +44,22 @@ ClusteredTriangles cluster_triangles(const AdjacencyMesh& mesh) {
         cluster_vertices.assign(built.vertices.begin() + ml.vertex_offset,
                                 built.vertices.begin() + ml.vertex_offset + ml.vertex_count);
         cluster_normals.clear();
+        const auto first_vertex = static_cast<std::uint32_t>(out.vertices.size());
+        out.vertices.insert(out.vertices.end(), cluster_vertices.begin(), cluster_vertices.end());
         for (std::size_t t = 0; t < ml.triangle_count; ++t) {
             const std::uint32_t a = built.vertex(ml, t, 0), b = built.vertex(ml, t, 1),
                                 c = built.vertex(ml, t, 2);
             out.indices.insert(out.indices.end(), {a, b, c});
+            const unsigned char* local = &built.local[ml.triangle_offset + 3 * t];
+            out.corners.push_back(std::uint32_t(local[0]) | std::uint32_t(local[1]) << 8 |
+                                  std::uint32_t(local[2]) << 16);
             cluster_normals.push_back(unit_normal(mesh, a, b, c));
         }
         TriangleCluster k{bound_faces(mesh, cluster_vertices, cluster_normals)};
         k.first_index = first;
         k.index_count = static_cast<std::uint32_t>(out.indices.size()) - first;
+        k.first_vertex = first_vertex;
+        k.vertex_count = ml.vertex_count;
         out.clusters.push_back(k);
     }
     out.all = bound_faces(mesh, out.indices, {});

@@ -14,12 +14,25 @@ namespace bz::geo {
 struct TriangleCluster : ClusterBounds {
     std::uint32_t first_index = 0;  // its triangles: [first_index, first_index + index_count)
     std::uint32_t index_count = 0;  // of ClusteredTriangles::indices, 3 per triangle
+    // Its distinct vertices: [first_vertex, first_vertex + vertex_count) of
+    // ClusteredTriangles::vertices (at most kClusterVertices; 0: no list, the one-cluster
+    // fallback).
+    std::uint32_t first_vertex = 0;
+    std::uint32_t vertex_count = 0;
 };
+
+// The most vertices a cluster's list holds (meshoptimizer's meshlet limit).
+inline constexpr std::uint32_t kClusterVertices = 64;
 
 struct ClusteredTriangles {
     // Every triangle of the mesh exactly once, with its winding, cluster by cluster.
     std::vector<std::uint32_t> indices;
     std::vector<TriangleCluster> clusters;
+    // Each cluster's distinct vertices, cluster by cluster, and per triangle (in `indices`'
+    // order) its corners as indices into its cluster's list: a | b << 8 | c << 16. A pass that
+    // works a cluster at a time shades each vertex once (the compute prepass).
+    std::vector<std::uint32_t> vertices;
+    std::vector<std::uint32_t> corners;
     ClusterBounds all;  // a sphere around every triangle (no cone)
 };
 

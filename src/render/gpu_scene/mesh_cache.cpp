@@ -88,6 +88,8 @@ void MeshCache::upload(GpuMesh& gpu, const geo::AdjacencyMesh& mesh) {
     gpu.adjacency.set(std::span<const std::uint32_t>(mesh.adjacency), GL_STATIC_DRAW);
     geo::ClusteredTriangles clustered = geo::cluster_triangles(mesh);
     gpu.triangles.set(std::span<const std::uint32_t>(clustered.indices), GL_STATIC_DRAW);
+    gpu.cluster_vertices.set(std::span<const std::uint32_t>(clustered.vertices), GL_STATIC_DRAW);
+    gpu.cluster_corners.set(std::span<const std::uint32_t>(clustered.corners), GL_STATIC_DRAW);
     gpu.triangle_clusters = std::move(clustered.clusters);
     gpu.triangle_bounds = clustered.all;
     gpu.outward_closed = geo::is_outward_closed(mesh);

@@ -44,6 +44,10 @@ struct GpuMesh {
     // The triangle list cluster by cluster (geo::cluster_triangles), for the prepass and the
     // fills, and the clusters' bounds, for culling them on the CPU each frame.
     gl::Buffer triangles;
+    // Each cluster's distinct vertices and each triangle's corners into them
+    // (geo::ClusteredTriangles::vertices, corners), for the compute prepass.
+    gl::Buffer cluster_vertices;
+    gl::Buffer cluster_corners;
     std::vector<geo::TriangleCluster> triangle_clusters;
     geo::ClusterBounds triangle_bounds;  // a sphere around them all
     gl::Buffer edge_cosines;  // 3 per triangle, read by the geometry shader (kEdgeCosinesBinding)

@@ -13,14 +13,21 @@ namespace {
 // Whether `route` takes cluster `k`, and if so, its work item.
 bool routed(RasterRoute& route, const InstanceClusters& instance_view,
             const geo::TriangleCluster& k, bool skip_back_faces, std::uint32_t instance) {
+    // The shader holds a cluster's vertices in one work group's shared memory.
+    if (k.vertex_count == 0 || k.vertex_count > geo::kClusterVertices || k.index_count > 3 * 255)
+        return false;
     const ViewSphere s = instance_view.view_sphere(k);
     const std::optional<ScreenRect> rect =
         sphere_screen_rect(route.view, glm::vec3(s.center), static_cast<float>(s.radius));
     if (!rect) return false;
     const glm::vec2 size = rect->hi - rect->lo;
     if (!(size.x <= kMaxRasterClusterPx && size.y <= kMaxRasterClusterPx)) return false;
-    route.work.emplace_back(instance, k.first_index / 3, k.index_count / 3,
-                            skip_back_faces ? 1u : 0u);
+    route.work.push_back(pack(RasterItem{.instance = instance,
+                                         .first_triangle = k.first_index / 3,
+                                         .triangles = k.index_count / 3,
+                                         .first_vertex = k.first_vertex,
+                                         .vertices = k.vertex_count,
+                                         .skip_back_faces = skip_back_faces}));
     route.lo = glm::min(route.lo, rect->lo);
     route.hi = glm::max(route.hi, rect->hi);
     return true;

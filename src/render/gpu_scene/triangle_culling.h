@@ -47,11 +47,27 @@ struct TriangleCullStats {
 // kept cluster whose bounding sphere lies wholly beyond the near plane and covers at most
 // kMaxRasterClusterPx window pixels each way becomes a work item here instead of a draw.
 inline constexpr float kMaxRasterClusterPx = 48.0f;
+// One routed cluster of one instance, as prepass_raster.comp reads it (one uvec4).
+struct RasterItem {
+    std::uint32_t instance = 0;
+    std::uint32_t first_triangle = 0;  // into the mesh's triangles and corners
+    std::uint32_t triangles = 0;       // at most 255
+    std::uint32_t first_vertex = 0;    // into the mesh's cluster vertex lists
+    std::uint32_t vertices = 0;        // at most geo::kClusterVertices
+    bool skip_back_faces = false;
+};
+inline glm::uvec4 pack(const RasterItem& i) {
+    return {i.instance, i.first_triangle,
+            i.triangles | i.vertices << 8 | (i.skip_back_faces ? 1u << 16 : 0u), i.first_vertex};
+}
+inline RasterItem unpack(const glm::uvec4& w) {
+    return {w.x, w.y, w.z & 0xFFu, w.w, (w.z >> 8) & 0xFFu, ((w.z >> 16) & 1u) != 0u};
+}
+
 struct RasterRoute {
     explicit RasterRoute(const HizView& v) : view(v) {}
     HizView view;
-    // x instance, y first triangle, z triangles, w flags (1: skip back faces).
-    std::vector<glm::uvec4> work;
+    std::vector<glm::uvec4> work;  // pack(RasterItem)
     // The union of the routed clusters' rectangles (empty while lo > hi).
     glm::vec2 lo{1e30f}, hi{-1e30f};
     // Filled by draw_batch_triangles (render/passes.h): per batch with work, x the batch's

@@ -7,6 +7,9 @@
 
 namespace bz::render {
 
+// prepass_raster.comp projects a cluster's vertices one per invocation of a 64-wide group.
+static_assert(geo::kClusterVertices <= 64);
+
 bool computes_prepass(const PassContext& ctx) {
     const RenderSettings& s = ctx.settings;
     if (!ctx.targets.raster_depth || !ctx.raster_work || !ctx.triangle_draws ||
@@ -36,7 +39,7 @@ namespace {
 
 std::size_t routed_triangles(const RasterRoute& route) {
     std::size_t n = 0;
-    for (const glm::uvec4& w : route.work) n += w.z;
+    for (const glm::uvec4& w : route.work) n += unpack(w).triangles;
     return n;
 }
 
@@ -46,14 +49,17 @@ void draw_routed_clusters(const PassContext& ctx, const RasterRoute& route,
                           gl::PipelineState state) {
     std::vector<TriangleDraw> draws;
     draws.reserve(route.work.size());
-    for (const glm::uvec4& w : route.work) draws.push_back({w.z * 3, 1, w.y * 3, 0, w.x});
+    for (const glm::uvec4& w : route.work) {
+        const RasterItem item = unpack(w);
+        draws.push_back({item.triangles * 3, 1, item.first_triangle * 3, 0, item.instance});
+    }
     ctx.triangle_draws->set(std::span<const TriangleDraw>(draws), GL_STREAM_DRAW);
     glBindBuffer(GL_DRAW_INDIRECT_BUFFER, ctx.triangle_draws->id());
     ctx.programs.prepass.use();
     for (const glm::uvec3& b : route.batches) {
         const Batch& batch = ctx.batches.batches[b.x];
         const GpuMesh& mesh = ctx.gpu_meshes.get(ctx.meshes, batch.mesh, batch.lod);
-        state.cull_back = (route.work[b.y].w & 1u) != 0u;  // one batch, one facing rule
+        state.cull_back = unpack(route.work[b.y]).skip_back_faces;  // one batch, one rule
         gl::apply(state);
         mesh.prepass_vao.bind();
         glMultiDrawElementsIndirect(GL_TRIANGLES, GL_UNSIGNED_INT,
@@ -99,7 +105,10 @@ bool raster_routed_clusters(const PassContext& ctx, const RasterRoute& route,
         const Batch& batch = ctx.batches.batches[b.x];
         const GpuMesh& mesh = ctx.gpu_meshes.get(ctx.meshes, batch.mesh, batch.lod);
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEdgePositionsBinding, mesh.positions.id());
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kRasterTrianglesBinding, mesh.triangles.id());
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kRasterVerticesBinding,
+                         mesh.cluster_vertices.id());
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kRasterCornersBinding,
+                         mesh.cluster_corners.id());
         raster.set("u_work_base", static_cast<unsigned>(b.y));
         glDispatchCompute(b.z, 1, 1);
     }

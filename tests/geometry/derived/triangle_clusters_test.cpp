@@ -40,6 +40,22 @@ void expect_sound(const AdjacencyMesh& mesh, const ClusteredTriangles& c) {
             const glm::vec3 p = mesh.positions[c.indices[i]];
             EXPECT_LE(glm::length(p - k.center), k.radius) << "vertex outside the sphere";
         }
+        // Its vertex list: distinct, within the limit, and each triangle's corners name its
+        // own vertices in its own order (the compute prepass reads only these).
+        if (k.vertex_count > 0) {
+            EXPECT_LE(k.vertex_count, kClusterVertices);
+            ASSERT_LE(k.first_vertex + k.vertex_count, c.vertices.size());
+            std::vector<std::uint32_t> list(c.vertices.begin() + k.first_vertex,
+                                            c.vertices.begin() + k.first_vertex + k.vertex_count);
+            std::sort(list.begin(), list.end());
+            EXPECT_EQ(std::adjacent_find(list.begin(), list.end()), list.end()) << "repeated";
+            ASSERT_EQ(c.corners.size() * 3, c.indices.size());
+            for (std::uint32_t i = k.first_index; i < k.first_index + k.index_count; ++i) {
+                const std::uint32_t local = (c.corners[i / 3] >> (8 * (i % 3))) & 0xFFu;
+                ASSERT_LT(local, k.vertex_count);
+                EXPECT_EQ(c.vertices[k.first_vertex + local], c.indices[i]);
+            }
+        }
         if (!(k.cos_spread > 0.0f)) continue;
         for (std::uint32_t i = k.first_index; i < k.first_index + k.index_count; i += 3) {
             const auto n = unit_normal(mesh, c.indices[i], c.indices[i + 1], c.indices[i + 2]);
@@ -55,6 +71,7 @@ TEST(TriangleClusters, ASphereSplitsIntoBoundedClustersWithTightCones) {
     const AdjacencyMesh mesh = build_line_mesh(uv_sphere(1.0f, 64, 128));
     const ClusteredTriangles c = cluster_triangles(mesh);
     expect_sound(mesh, c);
+    for (const TriangleCluster& k : c.clusters) EXPECT_GT(k.vertex_count, 0u);
     EXPECT_GT(c.clusters.size(), mesh.triangle_count() / 124);
     std::size_t with_cone = 0;
     for (const TriangleCluster& k : c.clusters) with_cone += k.cos_spread > 0.5f;
