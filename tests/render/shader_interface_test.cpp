@@ -77,6 +77,10 @@ std::vector<std::pair<std::string, const bz::gl::Program*>> every_program(
     const bz::render::Programs& p) {
     std::vector<std::pair<std::string, const bz::gl::Program*>> all = {
         {"prepass", &p.prepass},
+        {"occlusion_layer", &p.occlusion_layer},
+        {"lines_dim", &p.lines_dim},
+        {"edge_quads_dim", &p.edge_quads_dim},
+        {"outline_levels_mask", &p.outline_levels_mask},
         {"lines", &p.lines},
         {"mask", &p.mask},
         {"edges", &p.edges},
