@@ -1,7 +1,7 @@
 #version 450 core
-// One layer of depth peeling (pass_occlusion_layers.cpp): only surfaces facing the eye, and
-// from the second layer on only those clearly behind the layer before at this pixel, so layer
-// k holds the (k+1)-th nearest surface facing the eye. A line point's occlusion level is the
+// A layer after the first of depth peeling (pass_occlusion_layers.cpp, which culls back faces):
+// only surfaces facing the eye clearly behind the layer before at this pixel, so layer k holds
+// the (k+1)-th nearest surface facing the eye. A line point's occlusion level is the
 // number of layers in front of it (occlusion_level.glsl).
 //
 // Facing is the rasteriser's: a triangle is front-facing when its window-space winding is
@@ -9,7 +9,6 @@
 // space, the reference's definition (src/geometry/reference/reference.h), mirrored instances
 // included.
 layout(binding = TEXTURE_UNIT_PEEL_PREVIOUS) uniform sampler2D u_previous;
-uniform bool u_first;          // the nearest layer: nothing to peel
 uniform float u_proj_a;        // stored depth -> inverse view depth: (ndc + a) * inv_b
 uniform float u_proj_inv_b;
 uniform bool u_depth_zero_to_one;
@@ -21,8 +20,7 @@ float inv_depth(float d) {
 }
 
 void main() {
-    if (!gl_FrontFacing) discard;
-    if (u_first) return;
+    if (!gl_FrontFacing) discard;  // culled already; kept so the rule reads here whole
     float previous = inv_depth(texelFetch(u_previous, ivec2(gl_FragCoord.xy), 0).r);
     // Inverse depth falls with distance; the cleared layer holds 1/far, which nothing passes.
     if (!(inv_depth(gl_FragCoord.z) < previous * (1.0 - u_peel_rel))) discard;

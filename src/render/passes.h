@@ -90,11 +90,12 @@ double depth_clear_value(const PassContext& ctx);
 // A mesh of many clusters draws only the clusters in view, and of a closed mesh seen from
 // outside only those not wholly facing away (render/gpu_scene/triangle_culling.h), unless
 // `moves_vertices` (a vertex stage that displaces vertices leaves the clusters' bounds); returns
-// what that culling did.
+// what that culling did. `front_faces_only`: every mesh's back faces culled (the occlusion
+// layers count surfaces facing the eye).
 TriangleCullStats draw_batch_triangles(const PassContext& ctx, gl::PipelineState state,
                                        bool occluders_only,
                                        gl::VertexArray GpuMesh::*vao = &GpuMesh::prepass_vao,
-                                       bool moves_vertices = false);
+                                       bool moves_vertices = false, bool front_faces_only = false);
 // Hidden lines by occlusion level (pass_occlusion_layers.cpp): whether the style draws them
 // (technical's dashed hidden lines, vector-xray's dimmer ones), the depth peeling of the
 // surfaces facing the eye into Targets::occlusion_layers, and binding those layers for

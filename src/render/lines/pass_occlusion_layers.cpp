@@ -24,24 +24,31 @@ bool style_needs_occlusion_levels(const StyleDef& style) {
 
 // Depth peeling (Everitt 2001) of the occluders' surfaces facing the eye into
 // kOcclusionLayers depth images: layer k holds the (k+1)-th nearest such surface at each pixel.
-// Three geometry passes, paid only by the styles that draw hidden lines by level.
+// Three geometry passes, paid only by the styles that draw hidden lines by level. Back faces are
+// culled (the rasteriser's facing is the reference's, mirrored instances included), so the
+// clusters wholly facing away are skipped too.
 void pass_occlusion_layers(const PassContext& ctx) {
     gl::PipelineState state = depth_writing_state(ctx, false);
-    const gl::Program& p = ctx.programs.occlusion_layer;
     for (int k = 0; k < kOcclusionLayers; ++k) {
+        // The nearest layer needs no fragment stage (the depth test keeps the early-Z fast
+        // path); the others discard what the layer before holds.
+        const gl::Program& p = k == 0 ? ctx.programs.prepass : ctx.programs.occlusion_layer;
         ctx.targets.occlusion_layer_fbos[k].bind();
         gl::apply(state);
         glClearDepth(depth_clear_value(ctx));
         glClear(GL_DEPTH_BUFFER_BIT);
         p.use();
         p.set("u_proj", ctx.cam.proj);
-        p.set("u_first", k == 0 ? 1 : 0);
+        if (k == 0) {
+            draw_batch_triangles(ctx, state, true, &GpuMesh::prepass_vao, false, true);
+            continue;
+        }
         p.set("u_proj_a", ctx.cam.proj_a);
         p.set("u_proj_inv_b", 1.0f / ctx.cam.proj_b);
         p.set("u_depth_zero_to_one", ctx.cam.zero_to_one ? 1 : 0);
         p.set("u_peel_rel", kPeelRelative);
         if (k > 0) ctx.targets.occlusion_layers[k - 1].bind(kTextureUnitPeelPrevious);
-        draw_batch_triangles(ctx, state, true);
+        draw_batch_triangles(ctx, state, true, &GpuMesh::prepass_vao, false, true);
     }
 }
 
