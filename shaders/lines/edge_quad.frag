@@ -39,6 +39,19 @@ layout(location = 0) out vec4 o_color;
 #ifdef MASK_MODE
 #include "pixel_cross.glsl"
 #endif
+#ifdef OCCLUSION_LEVELS
+// vector-xray: each surface facing the eye in front of the line dims it (StyleDef::hidden).
+#include "occlusion_level.glsl"
+uniform float u_level_dim;
+
+float level_brightness(float t) {
+    EdgeRecord r = records[g_samples.w];
+    vec2 spine = mix(r.screen.xy, r.screen.zw, t);
+    float line_inv = mix(r.depth.x, r.depth.y, t);
+    EdgeFaces faces = EdgeFaces(r.edge_plane.xyz, r.face_pos.xyz, r.face_neg.xyz);
+    return pow(u_level_dim, float(occlusion_level(spine, line_inv, faces, record_nudge(r))));
+}
+#endif
 
 // The spine test of a record that got no samples (the sample buffer was full).
 bool tested_here(float t) {
@@ -73,5 +86,8 @@ void main() {
     if (dist >= g_shade.w) discard;
     if (!spine_point_visible(t)) discard;
     o_color = vec4(g_shade.rgb * beam_profile(dist, g_shade.w, g_stretch.z), 1.0);
+#ifdef OCCLUSION_LEVELS
+    o_color.rgb *= level_brightness(t);
+#endif
 #endif
 }

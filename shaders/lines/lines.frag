@@ -20,6 +20,11 @@ layout(location = 0) out vec4 o_color;
 #ifdef MASK_MODE
 #include "pixel_cross.glsl"
 #endif
+#ifdef OCCLUSION_LEVELS
+// vector-xray: each surface facing the eye in front of the line dims it (StyleDef::hidden).
+#include "occlusion_level.glsl"
+uniform float u_level_dim;
+#endif
 
 void main() {
     vec2 p = gl_FragCoord.xy;
@@ -38,5 +43,9 @@ void main() {
     if (dist >= g_beam.x) discard;
     if (!spine_visible(spine, line_inv, g_edge_plane, g_face_pos, g_face_neg, g_nudge)) discard;
     o_color = vec4(g_color * (g_beam.y * beam_profile(dist, g_beam.x, g_beam.z)), 1.0);
+#ifdef OCCLUSION_LEVELS
+    EdgeFaces faces = EdgeFaces(g_edge_plane, g_face_pos, g_face_neg);
+    o_color.rgb *= pow(u_level_dim, float(occlusion_level(spine, line_inv, faces, g_nudge)));
+#endif
 #endif
 }

@@ -104,6 +104,10 @@ void held_composite(const PassContext& ctx) {
                    ctx.target_fbo, ctx.targets.width, ctx.targets.height);
 }
 
+void outline_levels_mask(const PassContext& ctx) {
+    pass_outline_levels_mask(ctx);
+}
+
 void outline_baseline(const PassContext& ctx) {
     pass_image_outline(ctx, false);
 }
@@ -191,6 +195,17 @@ void beam_tail(std::vector<FramePass>& list, const StyleDef& style, const Render
     list.push_back({"composite", composite, reads, writes, past});
 }
 
+// Hidden lines by occlusion level (technical, vector-xray): the peeled layers, after the depth
+// pass, read by the line or stroke pass. Other styles neither run nor allocate them.
+void add_occlusion_layers(std::vector<FramePass>& list, const StyleDef& style) {
+    if (style_needs_occlusion_levels(style))
+        list.push_back({"layers", pass_occlusion_layers, {}, {R::peel_layers}});
+}
+
+ResourceSet layers_read(const StyleDef& style) {
+    return style_needs_occlusion_levels(style) ? ResourceSet{R::peel_layers} : ResourceSet{};
+}
+
 // A held frame shows the picture its history holds, with the bloom (and the list of lit
 // tiles) of the frame that drew it.
 std::vector<FramePass> held_passes(const StyleDef& style, const RenderSettings& settings) {
@@ -233,6 +248,7 @@ std::vector<FramePass> frame_passes(const StyleDef& style, const RenderSettings&
             // spine test once per spine sample of each, and the quads draw the count the edges
             // pass appended (indirect dispatch and draw, no read-back).
             list.push_back({"prepass", pass_prepass, {}, {R::depth}});
+            add_occlusion_layers(list, style);
             // Hierarchical-Z: the edges pass skips the clusters the prepass hides wholly.
             ResourceSet edges_read;
             if (settings.hiz_culling) {
@@ -241,11 +257,17 @@ std::vector<FramePass> frame_passes(const StyleDef& style, const RenderSettings&
             }
             list.push_back({"edges", edges_sized, edges_read, {R::edges}});
             list.push_back({"visibility", pass_spine_visibility, {R::depth, R::edges}, {R::edges}});
-            list.push_back(
-                {"lines", edge_quads_counted, {R::depth, R::edges}, {R::lines, R::beam_tiles}});
+            list.push_back({"lines",
+                            edge_quads_counted,
+                            ResourceSet{R::depth, R::edges} | layers_read(style),
+                            {R::lines, R::beam_tiles}});
         } else {
             list.push_back({"prepass", pass_prepass, {}, {R::depth}});
-            list.push_back({"lines", lines_counted, {R::depth}, {R::lines, R::beam_tiles}});
+            add_occlusion_layers(list, style);
+            list.push_back({"lines",
+                            lines_counted,
+                            ResourceSet{R::depth} | layers_read(style),
+                            {R::lines, R::beam_tiles}});
         }
         beam_tail(list, style, settings, beam_tiles);
         return list;
@@ -256,7 +278,10 @@ std::vector<FramePass> frame_passes(const StyleDef& style, const RenderSettings&
     // Strokes are drawn from the edge buffer: the edges pass appends every visible feature edge.
     if (style_needs_edge_buffer(style, settings))
         list.push_back({"edges", edges_counted, {}, {R::edges}});
-    const ResourceSet strokes_read{R::depth, R::edges, R::canvas};
+    ResourceSet strokes_read{R::depth, R::edges, R::canvas};
+    // Hidden lines by occlusion level count the peeled layers in front of each line point.
+    add_occlusion_layers(list, style);
+    strokes_read.add(layers_read(style));
     switch (style.lines) {
         case LinePass::outline:
             list.push_back({"outline", pass_outline, strokes_read, {R::canvas}});
@@ -284,6 +309,12 @@ std::vector<FramePass> frame_passes(const StyleDef& style, const RenderSettings&
 }
 
 std::vector<FramePass> mask_passes(const StyleDef& style, const RenderSettings& settings) {
+    if (settings.mask_occlusion_levels && style.hidden.levels > 0 &&
+        style.lines == LinePass::outline)
+        return {{"prepass", pass_prepass, {}, {R::depth}},
+                {"layers", pass_occlusion_layers, {}, {R::peel_layers}},
+                {"edges", edges_complete, {}, {R::edges}},
+                {"outline", outline_levels_mask, {R::depth, R::peel_layers, R::edges}, {R::mask}}};
     if (style.fill == FillPass::none && settings.method == LineMethod::image_outline)
         return {{"prepass", pass_outline_prepass, {}, {R::depth, R::normals}},
                 {"outline", outline_mask, {R::depth, R::normals}, {R::mask}}};

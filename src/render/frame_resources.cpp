@@ -32,6 +32,8 @@ std::string_view resource_name(Resource r) {
             return "mask";
         case Resource::depth_tiles:
             return "depth_tiles";
+        case Resource::peel_layers:
+            return "peel_layers";
         case Resource::target:
             return "target";
         case Resource::phosphor:

@@ -24,6 +24,7 @@ enum class Resource : std::uint8_t {
     halo,          // Targets::halo: the halo's off-screen soft halos
     mask,          // Targets::mask: the 1-pixel accuracy mask
     depth_tiles,   // Targets::depth_tiles(_coarse): hierarchical-Z culling's farthest depths
+    peel_layers,   // Targets::occlusion_layers: the nearest surfaces facing the eye, peeled
     target,        // the frame's destination: the window or Targets::output
     // History (FrameHistory): kept from one frame to the next.
     phosphor,     // the phosphor picture, updated in place by the composite

@@ -93,12 +93,25 @@ double depth_clear_value(const PassContext& ctx);
 // A mesh of many clusters draws only the clusters in view, and of a closed mesh seen from
 // outside only those not wholly facing away (render/gpu_scene/triangle_culling.h), unless
 // `moves_vertices` (a vertex stage that displaces vertices leaves the clusters' bounds); returns
-// what that culling did.
-// With a `route`, the small clusters go to it instead (the compute prepass, prepass_raster.h).
+// what that culling did. `front_faces_only`: every mesh's back faces culled (the occlusion
+// layers count surfaces facing the eye). With a `route`, the small clusters go to it instead
+// (the compute prepass, prepass_raster.h).
 TriangleCullStats draw_batch_triangles(const PassContext& ctx, gl::PipelineState state,
                                        bool occluders_only,
                                        gl::VertexArray GpuMesh::*vao = &GpuMesh::prepass_vao,
-                                       bool moves_vertices = false, RasterRoute* route = nullptr);
+                                       bool moves_vertices = false, bool front_faces_only = false,
+                                       RasterRoute* route = nullptr);
+// Hidden lines by occlusion level (pass_occlusion_layers.cpp): whether the style draws them
+// (technical's dashed hidden lines, vector-xray's dimmer ones), the depth peeling of the
+// surfaces facing the eye into Targets::occlusion_layers, and binding those layers for
+// shaders/lines/occlusion_level.glsl.
+bool style_needs_occlusion_levels(const StyleDef& style);
+void pass_occlusion_layers(const PassContext& ctx);
+void bind_occlusion_layers(const PassContext& ctx);
+// Whether the beam lines of this frame are dimmed by occlusion level (vector-xray), and the
+// uniforms and layers their OCCLUSION_LEVELS programs read.
+bool dims_hidden_lines(const PassContext& ctx);
+void set_level_dim_uniforms(const PassContext& ctx, const gl::Program& program);
 // mask_mode: draw the 1-pixel visible-spine mask into targets.mask instead of shaded lines.
 void pass_lines(const PassContext& ctx, bool mask_mode);
 // Shared by both line methods' draw passes (pass_lines.cpp): binds and clears the lines (or
@@ -183,6 +196,9 @@ void pass_fill(const PassContext& ctx);
 void pass_shrunk_depth(const PassContext& ctx);
 // Ink outlines of the feature edges onto the canvas (toon, pop-art).
 void pass_outline(const PassContext& ctx);
+// The outline's 1-pixel mask of every line up to the style's hidden levels, each pixel marked
+// by its occlusion level (RenderSettings::mask_occlusion_levels).
+void pass_outline_levels_mask(const PassContext& ctx);
 // Pencil strokes onto the canvas (sketch); mask_mode: their 1-pixel spines into targets.mask.
 void pass_sketch(const PassContext& ctx, bool mask_mode);
 // Soft halos (MAX blended off screen), laid over the canvas, then the silhouette strokes.

@@ -54,6 +54,8 @@ Programs load_programs(const RenderSettings& settings) {
     p.prepass_raster = program({stage(GL_COMPUTE_SHADER, "lines/prepass_raster.comp")});
     p.depth_resolve = program({stage(GL_VERTEX_SHADER, "lines/depth_resolve.vert"),
                                stage(GL_FRAGMENT_SHADER, "lines/depth_resolve.frag")});
+    p.occlusion_layer = program({stage(GL_VERTEX_SHADER, "lines/prepass.vert"),
+                                 stage(GL_FRAGMENT_SHADER, "lines/occlusion_layer.frag")});
     // The beam's line stages mark the screen tiles they light (shaders/beam/beam_tiles.glsl).
     const std::vector<std::string> beam_tiles = {"BEAM_TILES 1",
                                                  "TILE_SIZE " + std::to_string(kScreenTileSize)};
@@ -65,6 +67,12 @@ Programs load_programs(const RenderSettings& settings) {
         {stage(GL_VERTEX_SHADER, "lines/lines.vert"), stage(GL_GEOMETRY_SHADER, "lines/lines.geom"),
          stage(GL_FRAGMENT_SHADER, "lines/lines.frag")},
         {"MASK_MODE 1"});
+    std::vector<std::string> beam_levels = beam_tiles;
+    beam_levels.push_back("OCCLUSION_LEVELS 1");
+    p.lines_dim = program(
+        {stage(GL_VERTEX_SHADER, "lines/lines.vert"), stage(GL_GEOMETRY_SHADER, "lines/lines.geom"),
+         stage(GL_FRAGMENT_SHADER, "lines/lines.frag")},
+        beam_levels);
     p.edges = program({stage(GL_COMPUTE_SHADER, "lines/edges.comp")});
     p.spine_visibility = program({stage(GL_COMPUTE_SHADER, "lines/spine_visibility.comp")});
     p.depth_tiles = program({stage(GL_COMPUTE_SHADER, "lines/depth_tiles.comp")});
@@ -74,6 +82,9 @@ Programs load_programs(const RenderSettings& settings) {
     p.edge_quads_mask = program({stage(GL_VERTEX_SHADER, "lines/edge_quad.vert"),
                                  stage(GL_FRAGMENT_SHADER, "lines/edge_quad.frag")},
                                 {"MASK_MODE 1"});
+    p.edge_quads_dim = program({stage(GL_VERTEX_SHADER, "lines/edge_quad.vert"),
+                                stage(GL_FRAGMENT_SHADER, "lines/edge_quad.frag")},
+                               beam_levels);
     p.hud =
         program({stage(GL_VERTEX_SHADER, "hud/hud.vert"), stage(GL_GEOMETRY_SHADER, "hud/hud.geom"),
                  stage(GL_FRAGMENT_SHADER, "hud/hud.frag")},
@@ -145,6 +156,7 @@ Programs load_programs(const RenderSettings& settings) {
             std::move(defines));
     };
     p.outline = stroke("styles/outline.frag", {"STROKE_OUTLINE 1"});
+    p.outline_levels_mask = stroke("styles/outline.frag", {"STROKE_OUTLINE 1", "MASK_MODE 1"});
     p.sketch = stroke("styles/sketch.frag", {"STROKE_SKETCH 1"});
     p.sketch_mask = stroke("styles/sketch.frag", {"STROKE_SKETCH 1", "MASK_MODE 1"});
     // The soft halo's quads mark the tiles they cover; the halo is laid over those alone.

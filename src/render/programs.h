@@ -10,15 +10,18 @@ namespace bz::render {
 
 struct Programs {
     gl::Program prepass;
-    gl::Program prepass_raster;  // the compute prepass's small clusters (lines/prepass_raster.h)
-    gl::Program depth_resolve;   // ... merged into the depth buffer
+    gl::Program prepass_raster;   // the compute prepass's small clusters (lines/prepass_raster.h)
+    gl::Program depth_resolve;    // ... merged into the depth buffer
+    gl::Program occlusion_layer;  // prepass.vert + occlusion_layer.frag: one peeled layer
     gl::Program lines;
     gl::Program mask;              // lines.* with MASK_MODE
+    gl::Program lines_dim;         // lines.* with OCCLUSION_LEVELS: dimmer by level (x-ray)
     gl::Program edges;             // LineMethod::compute: edges.comp fills the edge buffer
     gl::Program spine_visibility;  // ... spine test per spine sample
     gl::Program depth_tiles;       // ... hierarchical-Z culling's depth tiles
     gl::Program edge_quads;        // ... edge_quad.vert + lines.frag draw it
     gl::Program edge_quads_mask;   // ... with MASK_MODE
+    gl::Program edge_quads_dim;    // ... with OCCLUSION_LEVELS
     gl::Program hud;
     gl::Program hud_lit_tiles;  // ... marking the composite's lit tiles (drawn after the bloom)
     gl::Program bloom_down;
@@ -48,6 +51,7 @@ struct Programs {
     gl::Program ink_composite_tiles;  // the same over the HUD's tiles
     // Strokes on the edge buffer: stroke.vert with each look's fragment stage.
     gl::Program outline;
+    gl::Program outline_levels_mask;  // ... with MASK_MODE: each pixel's occlusion level
     gl::Program sketch;
     gl::Program sketch_mask;
     gl::Program halo_glow;

@@ -346,7 +346,9 @@ std::vector<std::uint8_t> Renderer::render_mask(const scene::FrameList& frame,
         std::copy_n(rows.begin() + static_cast<std::ptrdiff_t>(y) * m.width, m.width,
                     out.begin() + static_cast<std::ptrdiff_t>(m.height - 1 - y) * m.width);
     }
-    for (auto& v : out) v = v ? 255 : 0;
+    // The level mask keeps its codes (RenderSettings::mask_occlusion_levels).
+    if (!m.frame_settings.mask_occlusion_levels)
+        for (auto& v : out) v = v ? 255 : 0;
     return out;
 }
 

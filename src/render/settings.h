@@ -192,6 +192,11 @@ struct RenderSettings {
     // and menus leave no haze (render/beam/pass_hud.cpp). Tests that draw analytic screen
     // lines as HUD lines to exercise the bloom set it.
     bool hud_glow = false;
+    // true: in a style that draws hidden lines by occlusion level (technical), render_mask
+    // marks each pixel a line's spine crosses with 255 - 64 x its level (255 visible, 191, 128,
+    // 64 for levels 1 to 3), the lowest level winning, instead of the visible lines alone: the
+    // GPU's levels, for comparing with the exact reference's.
+    bool mask_occlusion_levels = false;
 };
 
 // "fast", "balanced" or "high"; throws UserError naming the valid ones otherwise.

@@ -67,6 +67,10 @@ inline constexpr unsigned kTextureUnitHalo = 3;        // the halo buffer
 inline constexpr unsigned kTextureUnitNoise = 1;       // uniform noise (sketch)
 inline constexpr unsigned kTextureUnitDepthTiles = 1;  // hierarchical-Z: the fine depth tiles
 inline constexpr unsigned kTextureUnitDepthTilesCoarse = 2;  // ... and the coarse ones
+inline constexpr unsigned kTextureUnitPeelPrevious = 1;      // occlusion layers: the layer before
+// The occlusion layers a line's level is counted from (shaders/lines/occlusion_level.glsl):
+// three units from here, clear of every unit a line or stroke stage samples.
+inline constexpr unsigned kTextureUnitOcclusionLayer0 = 4;
 
 // Image units.
 inline constexpr unsigned kImageUnitPicture = 0;      // the phosphor picture (composite)

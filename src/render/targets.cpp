@@ -117,6 +117,13 @@ void make_images(Targets& t, Targets& old, const RenderSettings& s, ResourceSet 
                 gl::Texture2D(grid.coarse.x, grid.coarse.y, GL_R32F, gl::Filter::nearest);
         }
     }
+    if (wants(Resource::peel_layers)) {
+        for (int i = 0; i < kOcclusionLayers; ++i)
+            t.occlusion_layers[i] =
+                kept(Resource::peel_layers)
+                    ? std::move(old.occlusion_layers[i])
+                    : gl::Texture2D(width, height, depth_format(s), gl::Filter::nearest);
+    }
     image(Resource::mask, &Targets::mask, GL_R8, gl::Filter::nearest);
     image(Resource::target, &Targets::output, GL_RGBA8, gl::Filter::nearest);
     image(Resource::canvas, &Targets::canvas, GL_RGBA8, gl::Filter::nearest);
@@ -152,6 +159,8 @@ void make_framebuffers(Targets& t) {
     fbo(t.shrunk_fbo, nullptr, &t.shrunk_depth);
     fbo(t.halo_fbo, &t.halo, &t.shrunk_depth);
     fbo(t.normals_fbo, &t.normals, &t.depth);
+    for (int i = 0; i < kOcclusionLayers; ++i)
+        fbo(t.occlusion_layer_fbos[i], nullptr, &t.occlusion_layers[i]);
     for (const gl::Texture2D& level : t.bloom_mips)
         t.bloom_mip_fbos.emplace_back(std::vector{&level}, nullptr);
     // The bloom's first level: bloom_a, or the chain's first.
@@ -206,6 +215,7 @@ std::size_t allocated_bytes(const Targets& t) {
           &t.depth_tiles_coarse, &t.raster_depth})
         bytes += texture_bytes(*tex);
     for (const gl::Texture2D& level : t.bloom_mips) bytes += texture_bytes(level);
+    for (const gl::Texture2D& layer : t.occlusion_layers) bytes += texture_bytes(layer);
     if (t.lit_tiles) bytes += t.tile_list.size();
     return bytes;
 }

@@ -19,6 +19,9 @@ inline constexpr int kScreenTileSize = 32;
 // a thin line's glow more closely; the list keeps the vertex work to the lit ones.
 inline constexpr int kLitTileSize = 16;
 static_assert(kLitTileSize % static_cast<int>(BloomResolution::quarter) == 0);
+// The depth layers peeled for hidden lines by occlusion level (pass_occlusion_layers.cpp): the
+// level is capped at geo::kMaxOcclusionLevel, so that many layers count every level exactly.
+inline constexpr int kOcclusionLayers = 3;
 
 // The images of one frame, each allocated only when the frame's pass list names it
 // (frame_resources.h: `allocated`); what outlives the frame is in FrameHistory. No pass
@@ -74,6 +77,11 @@ struct Targets {
     // view depth of the farthest surface the prepass left (R32F).
     gl::Texture2D depth_tiles;
     gl::Texture2D depth_tiles_coarse;
+    // Hidden lines by occlusion level (technical, vector-xray): the depth of the nearest, second
+    // and third surfaces facing the eye at each pixel (pass_occlusion_layers.cpp), in the
+    // prepass's depth format, and a depth-only framebuffer over each.
+    std::array<gl::Texture2D, kOcclusionLayers> occlusion_layers;
+    std::array<gl::Framebuffer, kOcclusionLayers> occlusion_layer_fbos;
 };
 
 // The bloom resolution's size of a `width` x `height` frame.

@@ -78,7 +78,8 @@ struct Palette {
 // Hidden lines in a stroke of their own, as technical drawings draw them: `levels` > 0 keeps
 // them up to that occlusion level (geo::kMaxOcclusionLevel at most), `width_scale` as wide as
 // the visible stroke and dashed. The dash pattern starts at each edge's first end, so it stays
-// on the line as the camera moves. Drawn by the vector output (render --svg) only so far.
+// on the line as the camera moves. Drawn by the vector output (render --svg) and on the GPU
+// (render/styles/pass_outline.cpp, from the peeled occlusion layers).
 struct HiddenLines {
     int levels = 0;
     float width_scale = 0.5f;

@@ -74,6 +74,12 @@ struct Row {
 constexpr const char* kBeamCompute = "prepass edges visibility lines bloom hud tiles composite";
 constexpr const char* kBeamGs = "prepass lines bloom hud tiles composite";
 constexpr const char* kBeamOutline = "prepass outline bloom hud tiles composite";
+// vector-xray peels the occlusion layers its lines are dimmed by.
+constexpr const char* kXrayCompute =
+    "prepass layers edges visibility lines bloom hud tiles composite";
+constexpr const char* kXrayGs = "prepass layers lines bloom hud tiles composite";
+// technical peels them for its hidden lines.
+constexpr const char* kTechnical = "fill edges layers outline hud composite";
 constexpr const char* kMaskEdges = "prepass edges visibility lines";
 constexpr const char* kMaskLines = "prepass lines";
 constexpr const char* kMaskOutline = "prepass outline";
@@ -83,8 +89,8 @@ const Row kTable[] = {
     {Style::vector, LineMethod::compute, kBeamCompute, kMaskEdges},
     {Style::vector, LineMethod::geometry_shader, kBeamGs, kMaskLines},
     {Style::vector, LineMethod::image_outline, kBeamOutline, kMaskOutline},
-    {Style::vector_xray, LineMethod::compute, kBeamCompute, kMaskEdges},
-    {Style::vector_xray, LineMethod::geometry_shader, kBeamGs, kMaskLines},
+    {Style::vector_xray, LineMethod::compute, kXrayCompute, kMaskEdges},
+    {Style::vector_xray, LineMethod::geometry_shader, kXrayGs, kMaskLines},
     {Style::vector_xray, LineMethod::image_outline, kBeamOutline, kMaskOutline},
     {Style::toon, LineMethod::compute, "fill edges outline hud composite", kMaskEdges},
     {Style::toon, LineMethod::geometry_shader, "fill edges outline hud composite", kMaskLines},
@@ -98,9 +104,9 @@ const Row kTable[] = {
     {Style::halo, LineMethod::compute, "fill edges shrunk halo hud composite", kMaskEdges},
     {Style::halo, LineMethod::geometry_shader, "fill edges shrunk halo hud composite", kMaskLines},
     {Style::halo, LineMethod::image_outline, "fill edges shrunk halo hud composite", kMaskLines},
-    {Style::technical, LineMethod::compute, "fill edges outline hud composite", kMaskEdges},
-    {Style::technical, LineMethod::geometry_shader, "fill edges outline hud composite", kMaskLines},
-    {Style::technical, LineMethod::image_outline, "fill edges outline hud composite", kMaskLines},
+    {Style::technical, LineMethod::compute, kTechnical, kMaskEdges},
+    {Style::technical, LineMethod::geometry_shader, kTechnical, kMaskLines},
+    {Style::technical, LineMethod::image_outline, kTechnical, kMaskLines},
 };
 
 std::string label(const Row& row, const std::string& beam) {

@@ -19,13 +19,15 @@ using bz::render::ResourceSet;
 using bz::scene::Style;
 
 // Every image the renderer allocated before frames named theirs: all but the normals
-// (image_outline only), with the phosphor's history when the look has one.
+// (image_outline only), with the phosphor's history when the look has one; and the occlusion
+// layers that technical and vector-xray have peeled since.
 std::size_t every_image_bytes(int w, int h, const bz::render::RenderSettings& s) {
     const ResourceSet all{Resource::depth,       Resource::lines,     Resource::beam_tiles,
                           Resource::bloom_chain, Resource::bloom_out, Resource::lit_tiles,
                           Resource::tile_list,   Resource::canvas,    Resource::shrunk_depth,
                           Resource::halo,        Resource::mask,      Resource::target};
-    std::size_t bytes = bz::render::allocated_bytes(bz::render::make_targets(w, h, s, all));
+    const ResourceSet with_layers = all | ResourceSet{Resource::peel_layers};
+    std::size_t bytes = bz::render::allocated_bytes(bz::render::make_targets(w, h, s, with_layers));
     if (s.beam.phosphor != bz::render::PhosphorDecay::off) {
         const std::size_t lit = static_cast<std::size_t>((w + 15) / 16) * ((h + 15) / 16);
         const glm::ivec2 b = bz::render::bloom_size(w, h, s);

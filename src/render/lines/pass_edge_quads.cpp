@@ -6,8 +6,12 @@ namespace bz::render {
 // the compute shader appended (glDrawArraysIndirect, no read-back), shaded by the same
 // fragment stage as the geometry-shader path (spine test, beam).
 void pass_edge_quads(const PassContext& ctx, bool mask_mode) {
-    const gl::Program& program = mask_mode ? ctx.programs.edge_quads_mask : ctx.programs.edge_quads;
+    const bool levels = !mask_mode && dims_hidden_lines(ctx);
+    const gl::Program& program = mask_mode ? ctx.programs.edge_quads_mask
+                                 : levels  ? ctx.programs.edge_quads_dim
+                                           : ctx.programs.edge_quads;
     begin_line_target(ctx, program, mask_mode);
+    if (levels) set_level_dim_uniforms(ctx, program);
     program.set("u_capacity", ctx.edges.capacity());
     program.set("u_sample_capacity", ctx.edges.sample_capacity());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEdgeCommandBinding, ctx.edges.command().id());

@@ -13,6 +13,12 @@ namespace bz::render {
 
 namespace {
 
+// Back faces of an outward-closed mesh seen from outside hold no visible line, so their edges
+// are skipped, unless the style draws hidden lines (technical: a box's back edges, dashed).
+bool skips_back_faces(const PassContext& ctx, const Batch& b, const GpuMesh& mesh) {
+    return ctx.occlusion && ctx.style.hidden.levels == 0 && b.eye_outside && mesh.outward_closed;
+}
+
 // The edge buffer is sized for every edge of the frame when that is small, else for this many
 // and grown when a frame appends more (EdgeStorage::keep_count).
 constexpr std::size_t kInitialRecords = std::size_t{1} << 16;
@@ -53,7 +59,7 @@ void pass_edges(const PassContext& ctx) {
     for (const Batch& b : ctx.batches.batches) {
         const GpuMesh& mesh = ctx.gpu_meshes.get(ctx.meshes, b.mesh, b.lod);
         if (mesh.edge_count == 0) continue;
-        const bool skip_back_faces = ctx.occlusion && b.eye_outside && mesh.outward_closed;
+        const bool skip_back_faces = skips_back_faces(ctx, b, mesh);
         for (GLsizei i = 0; i < b.instance_count; ++i)
             jobs.push_back({.dispatch = dispatches.size(),
                             .mesh = &mesh,
@@ -155,8 +161,7 @@ void pass_edges(const PassContext& ctx) {
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEdgePositionsBinding, mesh.positions.id());
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kVertexNormalsBinding, mesh.vertex_normals.id());
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kFaceNormalsBinding, mesh.face_normals.id());
-        program.set("u_skip_back_faces",
-                    (ctx.occlusion && b.eye_outside && mesh.outward_closed) ? 1 : 0);
+        program.set("u_skip_back_faces", skips_back_faces(ctx, b, mesh) ? 1 : 0);
         program.set("u_mesh_id", static_cast<unsigned>(b.mesh));
         program.set("u_material_lines", material_lines_for(ctx.settings, b, mesh) ? 1 : 0);
         // Chunks keep the work-group count within the limit every implementation allows.

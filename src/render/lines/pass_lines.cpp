@@ -105,8 +105,12 @@ void begin_line_target(const PassContext& ctx, const gl::Program& program, bool 
 // beam. GL_MAX blending keeps overlapping ends and crossings from getting brighter than a
 // single line; additive blending (BeamBlend::additive, MAME's) lets them add, as on a tube.
 void pass_lines(const PassContext& ctx, bool mask_mode) {
-    const gl::Program& program = mask_mode ? ctx.programs.mask : ctx.programs.lines;
+    const bool levels = !mask_mode && dims_hidden_lines(ctx);
+    const gl::Program& program = mask_mode ? ctx.programs.mask
+                                 : levels  ? ctx.programs.lines_dim
+                                           : ctx.programs.lines;
     begin_line_target(ctx, program, mask_mode);
+    if (levels) set_level_dim_uniforms(ctx, program);
     program.set("u_edges_to_test", 3);  // a uniform loop bound: keeps one copy of the emit code
     for (const Batch& b : ctx.batches.batches) {
         const GpuMesh& mesh = ctx.gpu_meshes.get(ctx.meshes, b.mesh, b.lod);

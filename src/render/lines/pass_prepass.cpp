@@ -47,7 +47,8 @@ bool all_inside(const PassContext& ctx, const Batch& b, const GpuMesh& mesh,
 
 TriangleCullStats draw_batch_triangles(const PassContext& ctx, gl::PipelineState state,
                                        bool occluders_only, gl::VertexArray GpuMesh::*vao,
-                                       bool moves_vertices, RasterRoute* route) {
+                                       bool moves_vertices, bool front_faces_only,
+                                       RasterRoute* route) {
     // Every culled batch's draws go into one buffer, uploaded once.
     const ViewVolume view(ctx.cam.proj, ctx.cam.near, ctx.cam.far, 1.0);
     TriangleCullStats stats;
@@ -71,7 +72,7 @@ TriangleCullStats draw_batch_triangles(const PassContext& ctx, gl::PipelineState
         if (occluders_only && !b.occluder) continue;
         const GpuMesh& mesh = ctx.gpu_meshes.get(ctx.meshes, b.mesh, b.lod);
         if (!culls_clusters(ctx, mesh, moves_vertices)) continue;
-        const bool skip_back_faces = b.eye_outside && mesh.outward_closed;
+        const bool skip_back_faces = front_faces_only || (b.eye_outside && mesh.outward_closed);
         // Both faces drawn and every instance wholly in view: nothing can be dropped, so the
         // batch stays one instanced draw (unless the compute prepass may take its clusters).
         if (!route && !skip_back_faces && all_inside(ctx, b, mesh, view)) {
@@ -140,7 +141,7 @@ TriangleCullStats draw_batch_triangles(const PassContext& ctx, gl::PipelineState
         const bool culled = culls_clusters(ctx, mesh, moves_vertices) && !ranges[i].whole;
         if (culled && ranges[i].count == 0) continue;
         // Back faces of an outward-closed mesh seen from outside are hidden by its front faces.
-        const bool cull = b.eye_outside && mesh.outward_closed;
+        const bool cull = front_faces_only || (b.eye_outside && mesh.outward_closed);
         if (cull != state.cull_back) {
             state.cull_back = cull;
             gl::apply(state);
@@ -178,7 +179,7 @@ void pass_prepass(const PassContext& ctx) {
     if (computes_prepass(ctx))
         route.emplace(HizView(ctx.cam.proj, ctx.cam.near, ctx.targets.width, ctx.targets.height));
     const TriangleCullStats culled = draw_batch_triangles(ctx, state, true, &GpuMesh::prepass_vao,
-                                                          false, route ? &*route : nullptr);
+                                                          false, false, route ? &*route : nullptr);
     TriangleCullStats stats = culled;
     if (route && !raster_routed_clusters(ctx, *route, state)) stats.triangles_computed = 0;
     if (ctx.stats) ctx.stats->triangle_culling = stats;
