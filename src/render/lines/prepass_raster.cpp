@@ -83,8 +83,9 @@ bool raster_routed_clusters(const PassContext& ctx, const RasterRoute& route,
     if (x0 >= x1 || y0 >= y1) return false;
     // Too few small triangles for the rectangle's clear and merge: the pipeline draws them.
     const auto pixels = static_cast<std::size_t>(x1 - x0) * static_cast<std::size_t>(y1 - y0);
+    const std::size_t routed = routed_triangles(route);
     if (ctx.settings.prepass_raster == PrepassRaster::automatic &&
-        routed_triangles(route) * kPixelsPerRasterTriangle < pixels) {
+        (routed < kMinRasterTriangles || routed * kPixelsPerRasterTriangle < pixels)) {
         draw_routed_clusters(ctx, route, depth_state);
         return false;
     }

@@ -26,6 +26,11 @@ namespace bz::render {
 // triangle, compute ~90, the merge ~4.6 ns per pixel, so compute pays from about one
 // triangle per 32 pixels.
 inline constexpr std::size_t kPixelsPerRasterTriangle = 32;
+// And below this many routed triangles the compute shader's fixed costs (the clear, the
+// dispatches, the merge's draw: about 1 ms on llvmpipe) outweigh what it saves: the seed's
+// hallway routes 4,492 and its prepass took 7.49 ms with them against 7.01 without (quiet,
+// two threads, docs/measurements/compute-prepass.md).
+inline constexpr std::size_t kMinRasterTriangles = 16384;
 
 // Whether this frame's prepass hands its small clusters to the compute shader: with
 // reversed-Z float depth and cluster culling, as RenderSettings::prepass_raster says (on
@@ -34,8 +39,8 @@ bool computes_prepass(const PassContext& ctx);
 
 // Rasterises `route`'s work items into Targets::raster_depth and merges them into the bound
 // depth target with `depth_state` (the prepass's depth test). Under PrepassRaster::automatic,
-// when the routed triangles number fewer than their rectangle's pixels /
-// kPixelsPerRasterTriangle, the pipeline draws them instead (the prepass's program).
+// when the routed triangles number fewer than kMinRasterTriangles or than their rectangle's
+// pixels / kPixelsPerRasterTriangle, the pipeline draws them instead (the prepass's program).
 // Returns whether the compute shader drew them.
 bool raster_routed_clusters(const PassContext& ctx, const RasterRoute& route,
                             const gl::PipelineState& depth_state);
