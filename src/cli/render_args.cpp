@@ -20,7 +20,7 @@ const std::string& render_usage() {
             "                       [--mask mask.png] [--repeat N] [--copies N] [--beam "
             "classic|mame]\n"
             "                       [--lit-share] [--no-cluster-culling] [--hiz-culling]\n"
-            "                       [--material-lines]\n"
+            "                       [--material-lines] [--intersection-lines]\n"
             "                       [--svg lines.svg]\n"
             "                       [--overwrite]\n"
             "Renders a model file (or builtin:cube, builtin:sphere, builtin:grid) headless to PNG. "
@@ -44,6 +44,9 @@ const std::string& render_usage() {
             "the same picture; off by default, as it did not pay where measured).\n"
             "--material-lines draws the edges between faces of different materials as lines too\n"
             "(a model whose parts have their own materials; a level's [render] material_lines).\n"
+            "--intersection-lines draws where surfaces cross as lines too: two objects (--copies\n"
+            "close enough to overlap) or a model's own parts (a level's [render]\n"
+            "intersection_lines).\n"
             "--lit-share prints the share of the picture's pixels whose brightest channel is "
             "above\n"
             "1/255 (the haze figure; tools/haze measures Bernardoni 2018's hallway with it).\n"
@@ -88,6 +91,8 @@ RenderOptions parse_render_args(Args args) {
             o.hiz_culling = true;
         else if (a == "--material-lines")
             o.material_lines = true;
+        else if (a == "--intersection-lines")
+            o.intersection_lines = true;
         else if (a == "--overwrite")
             o.overwrite = true;
         else if (a == "--style") {

@@ -14,6 +14,7 @@ struct Programs {
     gl::Program mask;              // lines.* with MASK_MODE
     gl::Program edges;             // LineMethod::compute: edges.comp fills the edge buffer
     gl::Program spine_visibility;  // ... spine test per spine sample
+    gl::Program intersections;     // intersections.comp: intersection lines into the edge buffer
     gl::Program depth_tiles;       // ... hierarchical-Z culling's depth tiles
     gl::Program edge_quads;        // ... edge_quad.vert + lines.frag draw it
     gl::Program edge_quads_mask;   // ... with MASK_MODE

@@ -43,6 +43,7 @@ std::vector<std::string> build_defines() {
         define("SPINE_SPANS_BINDING", kSpineSpansBinding),
         define("EDGE_FACE_NORMALS_BINDING", kFaceNormalsBinding),
         define("EDGE_WORK_BINDING", kEdgeWorkBinding),
+        define("INTERSECTIONS_BINDING", kIntersectionsBinding),
         define("TEXTURE_UNIT_DEPTH", kTextureUnitDepth),
         define("TEXTURE_UNIT_SOURCE", kTextureUnitSource),
         define("TEXTURE_UNIT_COARSER", kTextureUnitCoarser),

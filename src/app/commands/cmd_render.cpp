@@ -124,6 +124,7 @@ int cmd_render(Args args) {
     settings.cluster_culling = o.cluster_culling;
     settings.hiz_culling = o.hiz_culling;
     settings.material_lines = o.material_lines;
+    settings.intersection_lines = o.intersection_lines;
     // A one-off frame measures nothing: it uses the machine's kept crossing, if any.
     const LineMethodProfile line_methods = user_line_method_profile(Calibration::kept_only);
     settings.auto_compute_from_triangles = line_methods.threshold();
@@ -152,6 +153,7 @@ int cmd_render(Args args) {
         render::FrameSvgOptions svg;
         svg.reference.crease_angle_deg = settings.crease_angle_deg;
         svg.reference.material_lines = settings.material_lines;
+        svg.reference.intersection_lines = settings.intersection_lines;
         std::fprintf(
             stdout, "%s\n",
             export_frame_svg(o.svg, frame, meshes, o.camera.size.x, o.camera.size.y, svg).c_str());

@@ -37,6 +37,9 @@ struct ReferenceInstance {
     // too, where they are no crease, as long as cos_crease >= -1 (an instance past the
     // creases' distance LOD draws none).
     bool material_lines = false;
+    // Takes part in intersection lines (ReferenceOptions::intersection_lines) as long as it is
+    // an occluder; off for an instance the renderer draws from its simplified mesh.
+    bool intersects = true;
 };
 
 struct ReferenceView {

@@ -81,11 +81,12 @@ void find_feature_edges(const ReferenceInstance& inst, std::uint32_t instance_in
 void find_intersection_edges(std::span<const ReferenceInstance> instances,
                              std::vector<FeatureEdge>& out) {
     // Only occluders: the GPU finds these lines' visibility against the depth prepass, which
-    // holds nothing else, and a surface that hides nothing cuts nothing either.
+    // holds nothing else, and a surface that hides nothing cuts nothing either. Each instance
+    // still hides what lies behind it, whether it takes part or not.
     std::vector<PlacedMesh> placed;
     std::vector<std::uint32_t> index;  // placed -> instance
     for (std::size_t i = 0; i < instances.size(); ++i) {
-        if (!instances[i].occluder) continue;
+        if (!instances[i].occluder || !instances[i].intersects) continue;
         placed.push_back(place_mesh(*instances[i].mesh, instances[i].model_view));
         index.push_back(static_cast<std::uint32_t>(i));
     }
