@@ -22,67 +22,91 @@ Triangle3 triangle(const PlacedMesh& m, std::uint32_t t) {
     return {m.positions[v[0]], m.positions[v[1]], m.positions[v[2]]};
 }
 
-// The triangles of `m` whose bounds meet `box`.
-std::vector<std::uint32_t> triangles_in(const PlacedMesh& m, const DBox& box) {
-    std::vector<std::uint32_t> out;
-    for (std::size_t t = 0; t < m.triangle_bounds.size(); ++t)
-        if (m.triangle_bounds[t].overlaps(box)) out.push_back(static_cast<std::uint32_t>(t));
-    return out;
+// The cells of `g` that `b` meets, as an inclusive range (empty when dims is zero).
+std::pair<glm::ivec3, glm::ivec3> cell_range(const TriangleGridIndex& g, const DBox& b) {
+    glm::ivec3 c0, c1;
+    for (int a = 0; a < 3; ++a) {
+        c0[a] = std::clamp(static_cast<int>(std::floor((b.lo[a] - g.lo[a]) / g.cell[a])), 0,
+                           g.dims[a] - 1);
+        c1[a] = std::clamp(static_cast<int>(std::floor((b.hi[a] - g.lo[a]) / g.cell[a])), 0,
+                           g.dims[a] - 1);
+    }
+    return {c0, c1};
 }
 
-// A uniform grid over a box holding triangle indices: about one cell per triangle, cells
-// shaped after the box. A triangle goes into every cell its bounds meet.
-class TriangleGrid {
-  public:
-    TriangleGrid(const PlacedMesh& m, const std::vector<std::uint32_t>& tris, const DBox& box)
-        : lo_(box.lo) {
-        const glm::dvec3 extent = glm::max(box.hi - box.lo, glm::dvec3(0.0));
-        const double longest = std::max({extent.x, extent.y, extent.z});
-        const double target = std::max(1.0, std::cbrt(static_cast<double>(tris.size())));
-        for (int a = 0; a < 3; ++a) {
-            const double share = longest > 0.0 ? extent[a] / longest : 1.0;
-            dims_[a] = std::clamp(static_cast<int>(std::ceil(target * share)), 1, 64);
-            cell_[a] = extent[a] > 0.0 ? extent[a] / dims_[a] : 1.0;
-        }
-        cells_.resize(static_cast<std::size_t>(dims_.x) * dims_.y * dims_.z);
-        for (const std::uint32_t t : tris) {
-            const auto [c0, c1] = cell_range(m.triangle_bounds[t]);
-            for (int z = c0.z; z <= c1.z; ++z)
-                for (int y = c0.y; y <= c1.y; ++y)
-                    for (int x = c0.x; x <= c1.x; ++x) cells_[index(x, y, z)].push_back(t);
-        }
-    }
+std::size_t cell_index(const TriangleGridIndex& g, int x, int y, int z) {
+    return (static_cast<std::size_t>(z) * static_cast<std::size_t>(g.dims.y) +
+            static_cast<std::size_t>(y)) *
+               static_cast<std::size_t>(g.dims.x) +
+           static_cast<std::size_t>(x);
+}
 
-    // Calls f(t) for each triangle in the cells `b` meets (a triangle may come more than once).
-    template <class F>
-    void for_each_near(const DBox& b, F&& f) const {
-        const auto [c0, c1] = cell_range(b);
+TriangleGridIndex build_grid(const std::vector<DBox>& tris, const DBox& box) {
+    TriangleGridIndex g;
+    if (tris.empty() || box.empty()) return g;
+    g.lo = box.lo;
+    const glm::dvec3 extent = box.hi - box.lo;
+    const double longest = std::max({extent.x, extent.y, extent.z});
+    const double target = std::max(1.0, std::cbrt(static_cast<double>(tris.size())));
+    for (int a = 0; a < 3; ++a) {
+        const double share = longest > 0.0 ? extent[a] / longest : 1.0;
+        g.dims[a] = std::clamp(static_cast<int>(std::ceil(target * share)), 1, 64);
+        g.cell[a] = extent[a] > 0.0 ? extent[a] / g.dims[a] : 1.0;
+    }
+    const std::size_t cells = cell_index(g, 0, 0, g.dims.z);
+    // Two passes (count, then fill): one allocation per placement.
+    std::vector<std::uint32_t> count(cells + 1, 0);
+    auto each_cell = [&](const DBox& b, auto&& f) {
+        const auto [c0, c1] = cell_range(g, b);
         for (int z = c0.z; z <= c1.z; ++z)
             for (int y = c0.y; y <= c1.y; ++y)
-                for (int x = c0.x; x <= c1.x; ++x)
-                    for (const std::uint32_t t : cells_[index(x, y, z)]) f(t);
-    }
+                for (int x = c0.x; x <= c1.x; ++x) f(cell_index(g, x, y, z));
+    };
+    for (const DBox& b : tris) each_cell(b, [&](std::size_t c) { ++count[c + 1]; });
+    for (std::size_t c = 0; c < cells; ++c) count[c + 1] += count[c];
+    g.first = count;
+    g.items.resize(count[cells]);
+    for (std::size_t t = 0; t < tris.size(); ++t)
+        each_cell(tris[t],
+                  [&](std::size_t c) { g.items[count[c]++] = static_cast<std::uint32_t>(t); });
+    return g;
+}
 
-  private:
-    std::pair<glm::ivec3, glm::ivec3> cell_range(const DBox& b) const {
-        glm::ivec3 c0, c1;
-        for (int a = 0; a < 3; ++a) {
-            c0[a] = std::clamp(static_cast<int>(std::floor((b.lo[a] - lo_[a]) / cell_[a])), 0,
-                               dims_[a] - 1);
-            c1[a] = std::clamp(static_cast<int>(std::floor((b.hi[a] - lo_[a]) / cell_[a])), 0,
-                               dims_[a] - 1);
-        }
-        return {c0, c1};
-    }
-    std::size_t index(int x, int y, int z) const {
-        return (static_cast<std::size_t>(z) * dims_.y + y) * dims_.x + x;
-    }
+// Whether any triangle of `m` has bounds that meet `b`: stops at the first.
+bool any_near(const PlacedMesh& m, const DBox& b) {
+    const TriangleGridIndex& g = m.grid;
+    if (g.dims.x == 0 || !m.bounds.overlaps(b)) return false;
+    const auto [c0, c1] = cell_range(g, b);
+    for (int z = c0.z; z <= c1.z; ++z)
+        for (int y = c0.y; y <= c1.y; ++y)
+            for (int x = c0.x; x <= c1.x; ++x) {
+                const std::size_t c = cell_index(g, x, y, z);
+                for (std::uint32_t k = g.first[c]; k < g.first[c + 1]; ++k)
+                    if (m.triangle_bounds[g.items[k]].overlaps(b)) return true;
+            }
+    return false;
+}
 
-    glm::dvec3 lo_;
-    glm::ivec3 dims_{1};
-    glm::dvec3 cell_{1.0};
-    std::vector<std::vector<std::uint32_t>> cells_;
-};
+// Calls f(t) once for each triangle of `m` whose bounds meet `b`; `stamp` (one entry per
+// triangle of m) and `mark` keep a triangle from coming twice.
+template <class F>
+void for_each_near(const PlacedMesh& m, const DBox& b, std::vector<std::uint32_t>& stamp,
+                   std::uint32_t mark, F&& f) {
+    const TriangleGridIndex& g = m.grid;
+    if (g.dims.x == 0 || !m.bounds.overlaps(b)) return;
+    const auto [c0, c1] = cell_range(g, b);
+    for (int z = c0.z; z <= c1.z; ++z)
+        for (int y = c0.y; y <= c1.y; ++y)
+            for (int x = c0.x; x <= c1.x; ++x) {
+                const std::size_t c = cell_index(g, x, y, z);
+                for (std::uint32_t k = g.first[c]; k < g.first[c + 1]; ++k) {
+                    const std::uint32_t t = g.items[k];
+                    if (stamp[t] == mark) continue;
+                    stamp[t] = mark;
+                    if (m.triangle_bounds[t].overlaps(b)) f(t);
+                }
+            }
+}
 
 bool share_vertex(const AdjacencyMesh& m, std::uint32_t s, std::uint32_t t) {
     const std::uint32_t* a = &m.triangles[3 * std::size_t{s}];
@@ -98,20 +122,19 @@ bool share_vertex(const AdjacencyMesh& m, std::uint32_t s, std::uint32_t t) {
 std::vector<IntersectionSegment> crossings(const PlacedMesh& first, const PlacedMesh& second,
                                            const DBox& box, bool same) {
     std::vector<IntersectionSegment> out;
-    const std::vector<std::uint32_t> from_first = triangles_in(first, box);
-    const std::vector<std::uint32_t> from_second = same ? from_first : triangles_in(second, box);
-    if (from_first.empty() || from_second.empty()) return out;
-    const TriangleGrid grid(second, from_second, box);
-    // Which triangle of `first` last tested each one of `second`: each pair once.
-    std::vector<std::uint32_t> tested_by(second.triangle_bounds.size(), ~0u);
+    // A mesh with no triangle in the box (a sparse mesh whose bounds merely hold the other)
+    // ends the pair before any per-triangle work.
+    if (!any_near(first, box) || !any_near(second, box)) return out;
+    std::vector<std::uint32_t> stamp_first(first.triangle_bounds.size(), ~0u);
+    std::vector<std::uint32_t> stamp_second(second.triangle_bounds.size(), ~0u);
+    std::vector<std::uint32_t> from_first;
+    for_each_near(first, box, stamp_first, 0u, [&](std::uint32_t s) { from_first.push_back(s); });
     for (const std::uint32_t s : from_first) {
         const DBox& sb = first.triangle_bounds[s];
         const Triangle3 ts = triangle(first, s);
-        grid.for_each_near(sb, [&](std::uint32_t t) {
-            if (tested_by[t] == s) return;
-            tested_by[t] = s;
+        // Marks above 0 name the triangle of `first` asking: each pair once.
+        for_each_near(second, sb, stamp_second, s + 1, [&](std::uint32_t t) {
             if (same && (t <= s || share_vertex(*first.mesh, s, t))) return;
-            if (!sb.overlaps(second.triangle_bounds[t])) return;
             if (const auto c = triangle_crossing(ts, triangle(second, t)))
                 out.push_back({c->a, c->b, s, t});
         });
@@ -136,6 +159,7 @@ PlacedMesh place_mesh(const AdjacencyMesh& mesh, const glm::dmat4& transform) {
         const DBox& b = p.triangle_bounds.back();
         p.bounds = t == 0 ? b : DBox{glm::min(p.bounds.lo, b.lo), glm::max(p.bounds.hi, b.hi)};
     }
+    p.grid = build_grid(p.triangle_bounds, p.bounds);
     return p;
 }
 

@@ -27,11 +27,25 @@ struct DBox {
     }
 };
 
+// A uniform grid over a placed mesh's bounds, about one cell per triangle, each cell listing
+// the triangles whose bounds meet it (cell c's are items[first[c] .. first[c + 1])). Built
+// once per placement, so that a pair asks only about the triangles near the other mesh: a
+// large sparse mesh (a skyline ring around the eye, whose bounds hold the whole field) costs
+// a pair nothing where none of its triangles lies.
+struct TriangleGridIndex {
+    glm::dvec3 lo{0.0};
+    glm::dvec3 cell{1.0};
+    glm::ivec3 dims{0};
+    std::vector<std::uint32_t> first;
+    std::vector<std::uint32_t> items;
+};
+
 struct PlacedMesh {
     const AdjacencyMesh* mesh = nullptr;
     std::vector<glm::dvec3> positions;  // the mesh's positions, transformed
     std::vector<DBox> triangle_bounds;  // one per triangle
     DBox bounds;
+    TriangleGridIndex grid;
 };
 
 PlacedMesh place_mesh(const AdjacencyMesh& mesh, const glm::dmat4& transform);
