@@ -27,6 +27,7 @@ struct RenderOptions {
     std::string svg;
     int repeat = 0;
     int copies = 1;
+    double copy_step = 1.2;  // --copy-step: copies this many times the model's size apart
     std::string beam{render::kDefaultBeamLook};
     bool lit_share = false;
     bool cluster_culling = true;  // --no-cluster-culling: whole meshes in prepass and fills

@@ -60,6 +60,8 @@ TEST(Parsers, EveryCommandAcceptsAndRefusesWhatItsUsageSays) {
         {"render", "builtin:cube --size 64x48 --style halo --beam classic", ""},
         {"render", "builtin:cube --material-lines --svg l.svg", ""},
         {"render", "builtin:cube --intersection-lines --copies 4", ""},
+        {"render", "builtin:cube --copies 4 --copy-step 0.6", ""},
+        {"render", "builtin:cube --copies 4 --copy-step 0.01", "--copy-step"},
         {"render", "builtin:cube --preset turbo", "turbo"},
         {"render", "builtin:cube --beam neon", "neon"},
         {"render", "builtin:cube --line-method magic", "magic"},

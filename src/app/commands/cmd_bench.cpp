@@ -237,6 +237,7 @@ int run(const BenchOptions& o) {
         so.rounds = o.rounds;
         so.auto_compute_from_triangles = profile.threshold();
         so.material_lines = settings.material_lines;
+        so.intersection_lines = settings.intersection_lines;
         const SweepResult result =
             run_sweep(frames, scene.meshes(), o.size.x, o.size.y, timing, so);
         meta.load_after = load_average();
