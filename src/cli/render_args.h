@@ -33,8 +33,9 @@ struct RenderOptions {
     bool cluster_culling = true;  // --no-cluster-culling: whole meshes in prepass and fills
     bool hiz_culling = false;     // --hiz-culling: skip edge clusters the prepass hides
     bool material_lines = false;  // --material-lines: edges between materials are lines too
-    bool intersection_lines = false;  // --intersection-lines: where surfaces cross, a line
-    bool overwrite = false;       // may replace an existing file that is not a PNG
+    // --intersection-lines: where surfaces cross, a line
+    bool intersection_lines = false;
+    bool overwrite = false;  // may replace an existing file that is not a PNG
 };
 
 // Throws UsageError naming the bad option.

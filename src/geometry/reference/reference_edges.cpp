@@ -95,13 +95,14 @@ void find_intersection_edges(std::span<const ReferenceInstance> instances,
         return ExcludedFace{index[p], v[0], v[1], v[2]};
     };
     for (const SceneIntersection& x : scene_intersections(placed)) {
-        out.push_back({x.segment.a,
-                       x.segment.b,
-                       index[x.first],
-                       ~0u,
-                       ~0u,
-                       FeatureKind::intersection,
-                       {face(x.first, x.segment.triangle_a), face(x.second, x.segment.triangle_b)}});
+        out.push_back(
+            {x.segment.a,
+             x.segment.b,
+             index[x.first],
+             ~0u,
+             ~0u,
+             FeatureKind::intersection,
+             {face(x.first, x.segment.triangle_a), face(x.second, x.segment.triangle_b)}});
     }
 }
 
