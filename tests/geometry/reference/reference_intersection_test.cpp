@@ -49,7 +49,7 @@ struct SunkBox {
 };
 
 // The smallest distance from window point p to a segment of `kind`.
-double nearest(const std::vector<VisibleSegment>& segs, LineKind kind, glm::dvec2 p) {
+double nearest_of_kind(const std::vector<VisibleSegment>& segs, LineKind kind, glm::dvec2 p) {
     double best = 1e30;
     for (const VisibleSegment& s : segs)
         if (s.kind == kind) best = std::min(best, xsect_distance(p, s.a, s.b));
@@ -64,17 +64,22 @@ TEST(ReferenceIntersectionLines, TheGroundLineInFrontShowsTheOneBehindTheBoxDoes
     // The square's front side (z = 1) and its +x side lie on surfaces that face the eye:
     // visible, though both surfaces they lie on pass through them.
     for (const double x : {-0.8, -0.3, 0.0, 0.4, 0.9})
-        EXPECT_LT(nearest(segs, LineKind::intersection, xsect_project(scene.view, {x, 0, 1})), 1e-6)
+        EXPECT_LT(
+            nearest_of_kind(segs, LineKind::intersection, xsect_project(scene.view, {x, 0, 1})),
+            1e-6)
             << x;
     for (const double z : {-0.8, 0.0, 0.8})
-        EXPECT_LT(nearest(segs, LineKind::intersection, xsect_project(scene.view, {1, 0, z})),
-                  1e-6);
+        EXPECT_LT(
+            nearest_of_kind(segs, LineKind::intersection, xsect_project(scene.view, {1, 0, z})),
+            1e-6);
     // The back (z = -1) and -x sides are behind the box.
     for (const double t : {-0.5, 0.0, 0.5}) {
-        EXPECT_GT(nearest(segs, LineKind::intersection, xsect_project(scene.view, {t, 0, -1})),
-                  1.0);
-        EXPECT_GT(nearest(segs, LineKind::intersection, xsect_project(scene.view, {-1, 0, t})),
-                  1.0);
+        EXPECT_GT(
+            nearest_of_kind(segs, LineKind::intersection, xsect_project(scene.view, {t, 0, -1})),
+            1.0);
+        EXPECT_GT(
+            nearest_of_kind(segs, LineKind::intersection, xsect_project(scene.view, {-1, 0, t})),
+            1.0);
     }
     for (const VisibleSegment& s : segs) {
         if (s.kind == LineKind::intersection) {
@@ -104,9 +109,12 @@ TEST(ReferenceIntersectionLines, AnotherObjectInFrontHidesThem) {
     ReferenceOptions o;
     o.intersection_lines = true;
     const std::vector<VisibleSegment> segs = reference_segments(inst, xsect_view(), o);
-    EXPECT_GT(nearest(segs, LineKind::intersection, xsect_project(scene.view, {0, 0, 1})), 1.0);
+    EXPECT_GT(nearest_of_kind(segs, LineKind::intersection, xsect_project(scene.view, {0, 0, 1})),
+              1.0);
     // Its own crossing with the ground is there, in front of everything.
-    EXPECT_LT(nearest(segs, LineKind::intersection, xsect_project(scene.view, {0, 0, 2.55})), 1e-6);
+    EXPECT_LT(
+        nearest_of_kind(segs, LineKind::intersection, xsect_project(scene.view, {0, 0, 2.55})),
+        1e-6);
 }
 
 }  // namespace
