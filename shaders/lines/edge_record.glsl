@@ -27,6 +27,7 @@ const uint EDGE_INCONSISTENT = 1u << 8;
 const uint EDGE_CLIPPED_START = 1u << 9;
 const uint EDGE_CLIPPED_END = 1u << 10;
 const uint EDGE_MATERIAL = 1u << 11;
+const uint EDGE_INTERSECTION = 1u << 12;
 
 // The DrawArraysIndirectCommand of the quad draw; vertex_count doubles as the append counter
 // (EDGE_VERTICES per record). Then the spine-sample append counter and the count of work items

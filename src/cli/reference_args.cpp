@@ -7,8 +7,8 @@ namespace bz::app {
 const char* const kReferenceUsage =
     "usage: beamzone reference INPUT [--eye x,y,z] [--target x,y,z] [--up x,y,z] [--fov DEG]\n"
     "                          [--near N] [--far F] [--size WxH] [--style NAME]\n"
-    "                          [--crease DEG] [--material-lines] [--mask ref.png]\n"
-    "                          [--svg lines.svg] [--overwrite]\n"
+    "                          [--crease DEG] [--material-lines] [--intersection-lines]\n"
+    "                          [--mask ref.png] [--svg lines.svg] [--overwrite]\n"
     "       beamzone reference --level LEVEL.toml --time SECONDS [--size WxH] [--mask ref.png]\n"
     "                          [--svg lines.svg]\n"
     "Computes the exact line mask on the CPU in double precision: the geometry shader's\n"
@@ -20,6 +20,8 @@ const char* const kReferenceUsage =
     "--crease sets the crease angle (default 60, the renderer's).\n"
     "--material-lines: edges between faces of different materials are lines too (as 'render\n"
     "--material-lines'); a level's [render] material_lines = true turns them on too.\n"
+    "--intersection-lines: where two surfaces cross, a line (as 'render --intersection-lines');\n"
+    "a level's [render] intersection_lines = true turns them on too.\n"
     "--svg also writes the same visible lines as SVG (see 'render --svg').\n";
 
 ReferenceOptions parse_reference_args(Args args) {
@@ -40,6 +42,8 @@ ReferenceOptions parse_reference_args(Args args) {
             o.svg = cur.value(a);
         } else if (a == "--material-lines") {
             o.material_lines = true;
+        } else if (a == "--intersection-lines") {
+            o.intersection_lines = true;
         } else if (a == "--overwrite") {
             o.overwrite = true;
         } else if (a == "--style") {

@@ -19,6 +19,8 @@ struct ReferenceOptions {
     scene::Style style = scene::Style::vector;
     double crease = 60.0;
     bool material_lines = false;  // --material-lines: edges between materials are lines too
+    // --intersection-lines: where surfaces cross, a line
+    bool intersection_lines = false;
     std::string mask = "reference.png";
     std::string svg;         // also the visible lines as SVG
     bool overwrite = false;  // --mask may replace an existing file that is not a PNG

@@ -17,11 +17,12 @@ const std::string& render_usage() {
             "                       [--style NAME] [--shading flat|smooth] [--no-smoothing] "
             "[--one-sided]\n"
             "                       [--color r,g,b] [--out frame.png]\n"
-            "                       [--mask mask.png] [--repeat N] [--copies N] [--beam "
+            "                       [--mask mask.png] [--repeat N] [--copies N] [--copy-step F] "
+            "[--beam "
             "classic|mame]\n"
             "                       [--lit-share] [--no-cluster-culling] [--hiz-culling]\n"
             "                       [--prepass-raster auto|pipeline|compute]\n"
-            "                       [--material-lines]\n"
+            "                       [--material-lines] [--intersection-lines]\n"
             "                       [--svg lines.svg]\n"
             "                       [--overwrite]\n"
             "Renders a model file (or builtin:cube, builtin:sphere, builtin:grid) headless to PNG. "
@@ -37,7 +38,9 @@ const std::string& render_usage() {
             "--repeat N renders N timed frames and prints the mean milliseconds of each pass.\n"
             "--copies N draws N instances of the model on a square grid in the xz plane (a scene "
             "of a\n"
-            "chosen size for timing; the camera frames them all).\n"
+            "chosen size for timing; the camera frames them all). --copy-step F spaces them F "
+            "times\n"
+            "the model's size apart (default 1.2; below 1 they overlap, for intersection lines).\n"
             "--beam picks the vector beam's look (default mame, as `play` and `bench`).\n"
             "--no-cluster-culling draws whole meshes in the depth prepass and the fills (the same\n"
             "picture; for timing what culling triangle clusters saves).\n"
@@ -50,6 +53,9 @@ const std::string& render_usage() {
             "mesh; the same depth up to float rounding).\n"
             "--material-lines draws the edges between faces of different materials as lines too\n"
             "(a model whose parts have their own materials; a level's [render] material_lines).\n"
+            "--intersection-lines draws where surfaces cross as lines too: two objects (--copies\n"
+            "close enough to overlap) or a model's own parts (a level's [render]\n"
+            "intersection_lines).\n"
             "--lit-share prints the share of the picture's pixels whose brightest channel is "
             "above\n"
             "1/255 (the haze figure; tools/haze measures Bernardoni 2018's hallway with it).\n"
@@ -82,7 +88,11 @@ RenderOptions parse_render_args(Args args) {
             o.repeat = parse_int(a, cur.value(a), 1, 100000);
         else if (a == "--copies")
             o.copies = parse_int(a, cur.value(a), 1, budget::kRenderCopies);
-        else if (a == "--beam")
+        else if (a == "--copy-step") {
+            o.copy_step = parse_number(a, cur.value(a));
+            if (!(o.copy_step >= 0.05 && o.copy_step <= 100.0))
+                throw UsageError("--copy-step must be between 0.05 and 100");
+        } else if (a == "--beam")
             o.beam = cur.value(a);
         else if (a == "--svg")
             o.svg = cur.value(a);
@@ -94,6 +104,8 @@ RenderOptions parse_render_args(Args args) {
             o.hiz_culling = true;
         else if (a == "--material-lines")
             o.material_lines = true;
+        else if (a == "--intersection-lines")
+            o.intersection_lines = true;
         else if (a == "--overwrite")
             o.overwrite = true;
         else if (a == "--style") {

@@ -27,6 +27,7 @@ struct RenderOptions {
     std::string svg;
     int repeat = 0;
     int copies = 1;
+    double copy_step = 1.2;  // --copy-step: copies this many times the model's size apart
     std::string beam{render::kDefaultBeamLook};
     bool lit_share = false;
     bool cluster_culling = true;  // --no-cluster-culling: whole meshes in prepass and fills
@@ -34,7 +35,9 @@ struct RenderOptions {
     // --prepass-raster: who rasterises the prepass's small triangles (lines/prepass_raster.h)
     render::PrepassRaster prepass_raster = render::PrepassRaster::automatic;
     bool material_lines = false;  // --material-lines: edges between materials are lines too
-    bool overwrite = false;       // may replace an existing file that is not a PNG
+    // --intersection-lines: where surfaces cross, a line
+    bool intersection_lines = false;
+    bool overwrite = false;  // may replace an existing file that is not a PNG
 };
 
 // Throws UsageError naming the bad option.

@@ -96,6 +96,9 @@ struct RenderSettings {
     // Edges between faces of different materials (imported models' parts) drawn as lines;
     // unset: off (render::RenderSettings::material_lines).
     std::optional<bool> material_lines;
+    // Where objects' surfaces cross (an obstacle sunk into another, a model's parts pushed
+    // into each other) drawn as lines; unset: off (render::RenderSettings::intersection_lines).
+    std::optional<bool> intersection_lines;
     // Whether the file set style / preset (else the defaults above): `play` lets a level's
     // own choice win over the player's settings file, but not a default.
     bool style_given = false;

@@ -64,6 +64,13 @@ void edge_quads_mask(const PassContext& ctx) {
     pass_edge_quads(ctx, true);
 }
 
+void intersection_quads(const PassContext& ctx) {
+    pass_intersection_quads(ctx, false);
+}
+void intersection_quads_mask(const PassContext& ctx) {
+    pass_intersection_quads(ctx, true);
+}
+
 void sketch_strokes(const PassContext& ctx) {
     pass_sketch(ctx, false);
 }
@@ -149,6 +156,16 @@ bool style_needs_edge_buffer(const StyleDef& style, const RenderSettings& settin
 namespace {
 
 using R = Resource;
+
+// After the geometry shader's line pass (`draws` its output): with intersection lines on, the
+// segments fill the edge buffer, which that method does not use otherwise, and are drawn as
+// quads over its lines with the same spine test and beam.
+void add_intersection_passes(std::vector<FramePass>& list, const RenderSettings& settings,
+                             ResourceSet draws, void (*quads)(const PassContext&)) {
+    if (!settings.intersection_lines) return;
+    list.push_back({"intersections", pass_intersection_edges, {}, {R::edges}});
+    list.push_back({"intersection lines", quads, ResourceSet{R::depth, R::edges} | draws, draws});
+}
 
 // The beam frame's tail: HUD, bloom, lit tiles and composite, reading the lines whichever
 // line pass drew them; `beam_tiles` says whether that pass marked the beam's tiles.
@@ -268,6 +285,7 @@ std::vector<FramePass> frame_passes(const StyleDef& style, const RenderSettings&
                             lines_counted,
                             ResourceSet{R::depth} | layers_read(style),
                             {R::lines, R::beam_tiles}});
+            add_intersection_passes(list, settings, {R::lines, R::beam_tiles}, intersection_quads);
         }
         beam_tail(list, style, settings, beam_tiles);
         return list;
@@ -299,6 +317,7 @@ std::vector<FramePass> frame_passes(const StyleDef& style, const RenderSettings&
             break;
         case LinePass::beam:
             list.push_back({"lines", lines_counted, {R::depth}, {R::lines, R::beam_tiles}});
+            add_intersection_passes(list, settings, {R::lines, R::beam_tiles}, intersection_quads);
             break;
     }
     list.push_back({"hud", pass_hud, {R::lines, R::beam_tiles}, {R::lines, R::beam_tiles}});
@@ -327,8 +346,10 @@ std::vector<FramePass> mask_passes(const StyleDef& style, const RenderSettings& 
         return {{"prepass", pass_prepass, {}, {R::depth}},
                 {"edges", edges_complete, {}, {R::edges}},
                 {"strokes", sketch_mask, {R::depth, R::edges}, {R::mask}}};
-    return {{"prepass", pass_prepass, {}, {R::depth}},
-            {"lines", lines_mask, {R::depth}, {R::mask}}};
+    std::vector<FramePass> list{{"prepass", pass_prepass, {}, {R::depth}},
+                                {"lines", lines_mask, {R::depth}, {R::mask}}};
+    add_intersection_passes(list, settings, {R::mask}, intersection_quads_mask);
+    return list;
 }
 
 }  // namespace bz::render

@@ -75,6 +75,9 @@ struct PassContext {
     // What the passes before this one wrote this frame (frame_passes.h declares it); a held
     // frame starts with what the frame it holds wrote. Null: nothing (the mask passes).
     const FrameResources* frame = nullptr;
+    // The frame's intersection segments (intersection_records.h), when intersection lines are on.
+    const gl::Buffer* intersections = nullptr;
+    std::uint32_t intersection_count = 0;
 };
 
 // Whether an earlier pass of this frame wrote `r`.
@@ -118,7 +121,9 @@ void pass_lines(const PassContext& ctx, bool mask_mode);
 // mask) target with the beam's blending, binds the depth texture and the instance buffer, uses
 // `program` and sets the uniforms of the line fragment stage, the beam and the shared edge
 // geometry.
-void begin_line_target(const PassContext& ctx, const gl::Program& program, bool mask_mode);
+// `clear` false draws over what an earlier pass of the frame drew there (and its tile marks).
+void begin_line_target(const PassContext& ctx, const gl::Program& program, bool mask_mode,
+                       bool clear = true);
 // Binds Targets::beam_tiles where the beam's fragment stages mark the tiles they light
 // (shaders/beam/beam_tiles.glsl, kImageUnitBeamTiles).
 void bind_beam_tiles(const Targets& targets);
@@ -148,6 +153,14 @@ void pass_spine_visibility(const PassContext& ctx);
 // LineMethod::compute: one quad per edge-buffer record (pass_edge_quads.cpp), with the same
 // fragment stage as pass_lines.
 void pass_edge_quads(const PassContext& ctx, bool mask_mode);
+// Intersection lines (pass_intersections.cpp). Appends the frame's intersection segments to
+// the edge buffer as records (intersections.comp), with spine samples when the frame wants
+// them; the edges pass calls it after the meshes' edges, with the buffer's state bound.
+void append_intersections(const PassContext& ctx, bool samples);
+// LineMethod::geometry_shader: the edge buffer filled with the intersection segments alone...
+void pass_intersection_edges(const PassContext& ctx);
+// ... and drawn as quads over what the line pass drew (no clear).
+void pass_intersection_quads(const PassContext& ctx, bool mask_mode);
 void pass_hud(const PassContext& ctx);
 // Beam passes (the vector-monitor look, BeamSettings); each reads the image it is given, so a
 // style may skip any of them. Phosphor persistence is no pass of its own: on llvmpipe every

@@ -75,6 +75,7 @@ Programs load_programs(const RenderSettings& settings) {
         beam_levels);
     p.edges = program({stage(GL_COMPUTE_SHADER, "lines/edges.comp")});
     p.spine_visibility = program({stage(GL_COMPUTE_SHADER, "lines/spine_visibility.comp")});
+    p.intersections = program({stage(GL_COMPUTE_SHADER, "lines/intersections.comp")});
     p.depth_tiles = program({stage(GL_COMPUTE_SHADER, "lines/depth_tiles.comp")});
     p.edge_quads = program({stage(GL_VERTEX_SHADER, "lines/edge_quad.vert"),
                             stage(GL_FRAGMENT_SHADER, "lines/edge_quad.frag")},

@@ -18,6 +18,7 @@ struct Programs {
     gl::Program lines_dim;         // lines.* with OCCLUSION_LEVELS: dimmer by level (x-ray)
     gl::Program edges;             // LineMethod::compute: edges.comp fills the edge buffer
     gl::Program spine_visibility;  // ... spine test per spine sample
+    gl::Program intersections;     // intersections.comp: intersection lines into the edge buffer
     gl::Program depth_tiles;       // ... hierarchical-Z culling's depth tiles
     gl::Program edge_quads;        // ... edge_quad.vert + lines.frag draw it
     gl::Program edge_quads_mask;   // ... with MASK_MODE

@@ -55,7 +55,10 @@ FrameInstances frame_instances(const scene::FrameList& frame, const scene::MeshL
             const double radius_px = radius * cot / depth * height * 0.5;
             inst.cos_crease = static_cast<double>(lod_cos_crease(lod_settings, radius_px));
             // Far objects get the one-material simplified mesh (material_lines_for).
-            if (lod_level(lod_settings, radius_px) > 0) inst.material_lines = false;
+            if (lod_level(lod_settings, radius_px) > 0) {
+                inst.material_lines = false;
+                inst.intersects = false;  // its simplified surface is in the prepass
+            }
         }
         instances.push_back(inst);
         out.item_of.push_back(static_cast<std::uint32_t>(i));
@@ -67,6 +70,7 @@ FrameInstances frame_instances(const scene::FrameList& frame, const scene::MeshL
     v.near = c.near;
     v.far = c.far;
     out.sampling = o.sampling;
+    if (o.intersection_lines) out.sampling.intersection_lines = true;
     if (frame.style == scene::LineStyle::arcade) out.sampling.occlusion = false;
     return out;
 }

@@ -19,6 +19,9 @@ struct ReferenceFrameOptions {
     // Material boundaries are lines too (RenderSettings::material_lines); with
     // mirror_lod_creases, only on objects the renderer draws at full detail (material_lines_for).
     bool material_lines = false;
+    // Intersection lines too (RenderSettings::intersection_lines); with mirror_lod_creases,
+    // only between objects the renderer draws at full detail (intersection_records.h).
+    bool intersection_lines = false;
     geo::ReferenceOptions sampling;
 };
 

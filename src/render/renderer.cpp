@@ -7,6 +7,7 @@
 #include "core/error.h"
 #include "gl/driver.h"
 #include "render/frame_passes.h"
+#include "render/lines/intersection_records.h"
 #include "render/styles/palette.h"
 
 namespace bz::render {
@@ -44,6 +45,11 @@ struct Renderer::Impl {
     gl::Buffer raster_work;     // the compute prepass's work items (lines/prepass_raster.h)
     MeshCache gpu_meshes{instances};
     EdgeStorage edges;
+    // Intersection lines: the crossings, kept while nothing moves, and the frame's segments
+    // in view space for intersections.comp.
+    IntersectionCache intersection_cache;
+    gl::Buffer intersection_buffer;
+    std::uint32_t intersection_count = 0;
     gl::VertexArray empty_vao;
     gl::Buffer hud_vertices;
     gl::VertexArray hud_vao;
@@ -129,7 +135,9 @@ struct Renderer::Impl {
                            .view_rows = view_rows,
                            .triangle_draws = &triangle_draws,
                            .raster_work = &raster_work,
-                           .software_rasteriser = software};
+                           .software_rasteriser = software,
+                           .intersections = &intersection_buffer,
+                           .intersection_count = intersection_count};
     }
 
     CameraMatrices camera(const scene::FrameList& frame) const {
@@ -160,7 +168,24 @@ struct Renderer::Impl {
                 gpu_meshes.get(meshes, batch.mesh, batch.lod).triangle_count() *
                 static_cast<std::size_t>(batch.instance_count);
         }
+        prepare_intersections(frame, meshes, cam, b);
         return b;
+    }
+
+    // Intersection lines: the cache catches up with the frame (computing only what moved or
+    // is new), and the segments of the objects drawn go to the GPU in view space.
+    void prepare_intersections(const scene::FrameList& frame, const scene::MeshLibrary& meshes,
+                               const CameraMatrices& cam, FrameBatches& b) {
+        intersection_count = 0;
+        if (!settings.intersection_lines) return;
+        intersection_cache.update(frame.items, meshes);
+        const std::vector<IntersectionRecord> records =
+            intersection_records(intersection_cache.segments(), b, frame.items, cam.view);
+        b.stats.intersections = intersection_cache.stats();
+        b.stats.intersection_records = records.size();
+        intersection_count = static_cast<std::uint32_t>(records.size());
+        if (!records.empty())
+            intersection_buffer.set(std::span<const IntersectionRecord>(records), GL_STREAM_DRAW);
     }
 
     // Picks the frame's line method (LineMethod::automatic: by the triangles it submits) and

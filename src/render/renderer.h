@@ -10,6 +10,7 @@
 #include "gl/texture.h"
 #include "render/frame_history.h"
 #include "render/frame_resources.h"
+#include "render/gpu_scene/intersection_cache.h"
 #include "render/gpu_scene/triangle_culling.h"
 #include "render/lines/edge_culling.h"
 #include "render/settings.h"
@@ -33,6 +34,10 @@ struct FrameStats {
     EdgeCullStats edge_culling;
     // What cluster culling left to the depth prepass (render/gpu_scene/triangle_culling.h).
     TriangleCullStats triangle_culling;
+    // Intersection lines (RenderSettings::intersection_lines): what the cache did this frame,
+    // and how many segments went to the GPU (those whose objects are drawn at full detail).
+    IntersectionStats intersections;
+    std::size_t intersection_records = 0;
 };
 
 class Renderer {

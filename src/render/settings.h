@@ -142,6 +142,11 @@ struct RenderSettings {
     // as lines, like creases. Off by default: a model's materials often split flat surfaces
     // for textures the vector look never shows; a level turns it on ([render] material_lines).
     bool material_lines = false;
+    // Draw where the surfaces of two occluding objects cross (or two faces of one that share
+    // no vertex) as lines, like creases (render/gpu_scene/intersection_cache.h). Off by
+    // default, like material lines: a model built from parts pushed into each other would get
+    // lines its author never saw; a level turns it on ([render] intersection_lines).
+    bool intersection_lines = false;
     BloomResolution bloom_resolution = BloomResolution::half;
     int bloom_taps = 9;           // linear-sampled taps per direction (odd)
     float bloom_sigma_px = 4.0f;  // Gaussian sigma, in pixels of the bloom target

@@ -46,6 +46,7 @@ std::vector<std::string> build_defines() {
         define("RASTER_VERTICES_BINDING", kRasterVerticesBinding),
         define("RASTER_WORK_BINDING", kRasterWorkBinding),
         define("RASTER_CORNERS_BINDING", kRasterCornersBinding),
+        define("INTERSECTIONS_BINDING", kIntersectionsBinding),
         define("TEXTURE_UNIT_DEPTH", kTextureUnitDepth),
         define("TEXTURE_UNIT_SOURCE", kTextureUnitSource),
         define("TEXTURE_UNIT_COARSER", kTextureUnitCoarser),

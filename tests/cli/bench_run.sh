@@ -41,7 +41,7 @@ expect 0 "goal high: mean F1" bench "$level" --sweep --frames 4 --warmup 2 --rou
 for f in sweep.json tradeoff.png summary.json frames.csv frametime.png masks/reference_frame0001.png; do
   [ -s "$work/sweep/$f" ] || fail "sweep wrote no $f"
 done
-for cfg in fast balanced high fast-compute balanced-compute high-compute fast-geometry-shader balanced-geometry-shader high-geometry-shader balanced-per-fragment image-outline balanced-no-culling balanced-no-lod balanced-no-instancing balanced-material-lines balanced-material-lines-compute balanced-material-lines-geometry-shader; do
+for cfg in fast balanced high fast-compute balanced-compute high-compute fast-geometry-shader balanced-geometry-shader high-geometry-shader balanced-per-fragment image-outline balanced-no-culling balanced-no-lod balanced-no-instancing balanced-material-lines balanced-material-lines-compute balanced-material-lines-geometry-shader balanced-intersection-lines balanced-intersection-lines-compute balanced-intersection-lines-geometry-shader; do
   grep -q "\"label\": \"$cfg\"" "$work/sweep/sweep.json" || fail "sweep.json lacks $cfg"
 done
 

@@ -59,6 +59,9 @@ TEST(Parsers, EveryCommandAcceptsAndRefusesWhatItsUsageSays) {
     const Case cases[] = {
         {"render", "builtin:cube --size 64x48 --style halo --beam classic", ""},
         {"render", "builtin:cube --material-lines --svg l.svg", ""},
+        {"render", "builtin:cube --intersection-lines --copies 4", ""},
+        {"render", "builtin:cube --copies 4 --copy-step 0.6", ""},
+        {"render", "builtin:cube --copies 4 --copy-step 0.01", "--copy-step"},
         {"render", "builtin:cube --preset turbo", "turbo"},
         {"render", "builtin:cube --beam neon", "neon"},
         {"render", "builtin:cube --line-method magic", "magic"},
@@ -70,6 +73,7 @@ TEST(Parsers, EveryCommandAcceptsAndRefusesWhatItsUsageSays) {
         {"reference", "--level l.toml --time 3 --eye 1,2,3", "only --size applies"},
         {"reference", "m.obj --crease 0", "--crease"},
         {"reference", "m.obj --material-lines", ""},
+        {"reference", "m.obj --intersection-lines", ""},
         {"bench", "levels/classic.toml --sweep", ""},
         {"bench", "levels/classic.toml --sweep --preset fast", "exclude each other"},
         {"bench", "levels/classic.toml --preset turbo", "turbo"},

@@ -56,6 +56,25 @@ if grep -A1 '<g id="material"' "$work/plain.svg" | grep -q '<path'; then
   fail "material lines drawn without --material-lines"
 fi
 
+# Intersection lines: the intersections level turns them on itself ([render]
+# intersection_lines); its crossings go to a group of their own, and the SVG still matches the
+# mask of the same frame. Copies of a cube overlapping (--copy-step below 1) get them from
+# --intersection-lines, and none without it.
+expect 0 "" reference --level "$root/levels/intersections.toml" --time 3 --size 320x240 \
+  --mask "$work/intersection-ref.png" --svg "$work/intersection.svg"
+score intersection 320 240
+grep -A1 '<g id="intersection"' "$work/intersection.svg" | grep -q '<path' ||
+  fail "intersection SVG has no path in its intersection group"
+expect 0 "" render builtin:cube --copies 4 --copy-step 0.7 --intersection-lines --size 320x240 \
+  --out "$work/i.png" --svg "$work/copies.svg"
+grep -A1 '<g id="intersection"' "$work/copies.svg" | grep -q '<path' ||
+  fail "overlapping copies have no intersection lines"
+expect 0 "" render builtin:cube --copies 4 --copy-step 0.7 --size 320x240 --out "$work/i.png" \
+  --svg "$work/copies-plain.svg"
+if grep -A1 '<g id="intersection"' "$work/copies-plain.svg" | grep -q '<path'; then
+  fail "intersection lines drawn without --intersection-lines"
+fi
+
 # Another view, another style: the x-ray style hides nothing, in the SVG as in the mask.
 expect 0 "" render builtin:sphere --size 200x150 --eye 0,1,4 --style vector-xray \
   --out "$work/x.png" --svg "$work/xray.svg"

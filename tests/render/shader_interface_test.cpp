@@ -87,6 +87,7 @@ std::vector<std::pair<std::string, const bz::gl::Program*>> every_program(
         {"mask", &p.mask},
         {"edges", &p.edges},
         {"spine_visibility", &p.spine_visibility},
+        {"intersections", &p.intersections},
         {"depth_tiles", &p.depth_tiles},
         {"edge_quads", &p.edge_quads},
         {"edge_quads_mask", &p.edge_quads_mask},

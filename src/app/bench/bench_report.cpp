@@ -177,6 +177,16 @@ Json run_json(const RunResult& r) {
         mean_of(r.frames, [](const FrameRecord& f) { return f.stats.feature_edges; });
     scene["feature_edges_max"] =
         max_of(r.frames, [](const FrameRecord& f) { return f.stats.feature_edges; });
+    // Intersection lines (zero when off): the CPU's update of the cached crossings, the pairs
+    // it had to compute (objects that moved into each other) and the segments drawn.
+    scene["intersection_update_ms_mean"] =
+        mean_of(r.frames, [](const FrameRecord& f) { return f.stats.intersections.update_ms; });
+    scene["intersection_update_ms_max"] =
+        max_of(r.frames, [](const FrameRecord& f) { return f.stats.intersections.update_ms; });
+    scene["intersection_pairs_computed_mean"] = mean_of(
+        r.frames, [](const FrameRecord& f) { return f.stats.intersections.pairs_computed; });
+    scene["intersection_segments_mean"] =
+        mean_of(r.frames, [](const FrameRecord& f) { return f.stats.intersection_records; });
     j["scene_per_frame"] = std::move(scene);
     return j;
 }

@@ -111,6 +111,23 @@ std::vector<SweepConfig> sweep_configs() {
         c.settings.method = m;
         out.push_back(c);
     }
+    // Intersection lines likewise: the CPU's crossings drawn by each method.
+    SweepConfig intersection{"balanced-intersection-lines",
+                             "balanced with intersection lines on (where surfaces cross)",
+                             render::preset("balanced")};
+    intersection.settings.intersection_lines = true;
+    out.push_back(intersection);
+    for (const render::LineMethod m : render::feature_line_methods()) {
+        std::string suffix = render::line_method_name(m);
+        std::replace(suffix.begin(), suffix.end(), '_', '-');
+        SweepConfig c{"balanced-intersection-lines-" + suffix,
+                      std::string("balanced with intersection lines on, line method ") +
+                          render::line_method_name(m),
+                      render::preset("balanced")};
+        c.settings.intersection_lines = true;
+        c.settings.method = m;
+        out.push_back(c);
+    }
     // Every style on the same frames (balanced preset): "balanced" is the level's own style,
     // so a level in the vector style needs no row of its own for it.
     for (const scene::Style style : scene::all_styles()) {
@@ -152,31 +169,38 @@ SweepResult run_sweep(const BenchFrames& bf, const scene::MeshLibrary& meshes, i
     };
 
     std::vector<SweepConfig> configs = sweep_configs();
-    for (SweepConfig& c : configs) c.settings.material_lines |= o.material_lines;
-    const bool any_material = std::any_of(configs.begin(), configs.end(), [](const SweepConfig& c) {
-        return c.settings.material_lines;
-    });
-    // Per sampled frame, the reference without material lines ([0]) and with them ([1]); each
-    // row is scored against the one that draws what it draws. The rows' own mesh data says
-    // whether there are any: a level without multi-material models gets equal masks.
-    std::vector<std::vector<std::uint8_t>> refs[2];
+    for (SweepConfig& c : configs) {
+        c.settings.material_lines |= o.material_lines;
+        c.settings.intersection_lines |= o.intersection_lines;
+    }
+    // Per sampled frame, the reference for each mix of the extra kinds the rows draw (bit 0:
+    // material lines, bit 1: intersection lines); each row is scored against the one that
+    // draws what it draws. The scene says whether there are any: a level without
+    // multi-material models or crossings gets equal masks.
+    const auto kinds_of = [](const SweepConfig& c) {
+        return (c.settings.material_lines ? 1 : 0) | (c.settings.intersection_lines ? 2 : 0);
+    };
+    std::vector<std::vector<std::uint8_t>> refs[4];
+    bool wanted[4] = {false, false, false, false};
+    for (const SweepConfig& c : configs) wanted[kinds_of(c)] = true;
     const auto t0 = std::chrono::steady_clock::now();
     ProgressBar ref_bar("reference masks (CPU)",
-                        static_cast<int>(result.sampled.size()) * (any_material ? 2 : 1));
-    for (int with = 0; with < 2; ++with) {
-        const bool wanted = std::any_of(configs.begin(), configs.end(), [&](const SweepConfig& c) {
-            return c.settings.material_lines == (with == 1);
-        });
-        if (!wanted) continue;
+                        static_cast<int>(result.sampled.size()) *
+                            static_cast<int>(std::count(wanted, wanted + 4, true)));
+    const char* const ref_names[4] = {"reference", "reference-material", "reference-intersection",
+                                      "reference-material-intersection"};
+    for (int with = 0; with < 4; ++with) {
+        if (!wanted[with]) continue;
         render::ReferenceFrameOptions ro;
-        ro.material_lines = with == 1;
+        ro.material_lines = (with & 1) != 0;
+        ro.intersection_lines = (with & 2) != 0;
         for (std::size_t k = 0; k < result.sampled.size(); ++k) {
             geo::ReferenceStats st;
             refs[with].push_back(render::reference_frame_mask(frame_of(result.sampled[k]), meshes,
                                                               width, height, ro, &st));
             result.reference_rays += st.rays;
             if (!o.masks_dir.empty())
-                write_png(mask_path(with ? "reference-material" : "reference", result.sampled[k]),
+                write_png(mask_path(ref_names[with], result.sampled[k]),
                           Image{width, height, 1, refs[with].back()});
             if (o.progress) ref_bar();
         }
@@ -209,7 +233,7 @@ SweepResult run_sweep(const BenchFrames& bf, const scene::MeshLibrary& meshes, i
         finish_run(runs[c]);
         std::vector<geo::MaskScore> scores;
         std::vector<geo::MaskScore> wide[2];
-        const auto& ref = refs[configs[c].settings.material_lines ? 1 : 0];
+        const auto& ref = refs[kinds_of(configs[c])];
         for (std::size_t k = 0; k < result.sampled.size(); ++k) {
             const std::vector<std::uint8_t> mask =
                 renderers[c]->render_mask(frame_of(result.sampled[k]), meshes);

@@ -60,6 +60,8 @@ struct SweepOptions {
     // The level's [render] material_lines: every row but the material-lines ones (which turn
     // them on) draws them as the level asks, and is scored against a reference that does too.
     bool material_lines = false;
+    // The level's [render] intersection_lines, likewise.
+    bool intersection_lines = false;
 };
 
 struct SweepResult {

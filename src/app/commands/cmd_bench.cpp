@@ -166,6 +166,7 @@ int run(const BenchOptions& o) {
         settings.method = render::parse_line_method(*loaded.level->render.line_method);
     settings.count_edges = true;
     settings.material_lines = loaded.level->render.material_lines.value_or(false);
+    settings.intersection_lines = loaded.level->render.intersection_lines.value_or(false);
     const std::string beam_name =
         !o.beam.empty() ? o.beam
                         : loaded.level->render.beam.value_or(std::string(render::kDefaultBeamLook));
@@ -236,6 +237,7 @@ int run(const BenchOptions& o) {
         so.rounds = o.rounds;
         so.auto_compute_from_triangles = profile.threshold();
         so.material_lines = settings.material_lines;
+        so.intersection_lines = settings.intersection_lines;
         const SweepResult result =
             run_sweep(frames, scene.meshes(), o.size.x, o.size.y, timing, so);
         meta.load_after = load_average();

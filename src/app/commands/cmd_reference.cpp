@@ -42,6 +42,7 @@ int run(const ReferenceOptions& o) {
     render::ReferenceFrameOptions ro;
     ro.crease_angle_deg = o.crease;
     ro.material_lines = o.material_lines;
+    ro.intersection_lines = o.intersection_lines;
     geo::ReferenceStats stats;
     std::vector<std::uint8_t> mask;
     std::string svg_log;
@@ -60,6 +61,7 @@ int run(const ReferenceOptions& o) {
         }
         // The level's own switch draws them as the game would.
         if (loaded.level->render.material_lines.value_or(false)) ro.material_lines = true;
+        if (loaded.level->render.intersection_lines.value_or(false)) ro.intersection_lines = true;
         BenchScene scene(std::move(*loaded.level), std::nullopt);
         const scene::FrameList frame = level_frame(scene, *o.time, aspect);
         mask = render::reference_frame_mask(frame, scene.meshes(), size.x, size.y, ro, &stats);

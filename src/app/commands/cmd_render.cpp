@@ -63,9 +63,9 @@ void print_timings(const render::Renderer& r,
 
 // Lays out `copies` instances on a square grid in the xz plane; returns their joint bounds.
 geo::Bounds place_copies(scene::FrameList& frame, scene::MeshId id, const geo::Bounds& one,
-                         int copies, glm::vec3 color, bool smooth) {
+                         int copies, double spacing, glm::vec3 color, bool smooth) {
     const int side = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(copies))));
-    const glm::dvec3 step = glm::dvec3(one.max - one.min) * 1.2;
+    const glm::dvec3 step = glm::dvec3(one.max - one.min) * spacing;
     geo::Bounds all = one;
     for (int i = 0; i < copies; ++i) {
         const glm::dvec3 offset(step.x * (i % side), 0.0, -step.z * (i / side));
@@ -115,7 +115,8 @@ int cmd_render(Args args) {
     scene::FrameList frame;
     const geo::Bounds one = geo::compute_bounds(mesh.positions);
     const scene::MeshId id = meshes.add(o.input, std::move(mesh));
-    const geo::Bounds bounds = place_copies(frame, id, one, o.copies, glm::vec3(o.color), o.smooth);
+    const geo::Bounds bounds =
+        place_copies(frame, id, one, o.copies, o.copy_step, glm::vec3(o.color), o.smooth);
     frame.camera = camera_for(o.camera, bounds);
     frame.style = o.style;
 
@@ -126,6 +127,7 @@ int cmd_render(Args args) {
     settings.hiz_culling = o.hiz_culling;
     settings.prepass_raster = o.prepass_raster;
     settings.material_lines = o.material_lines;
+    settings.intersection_lines = o.intersection_lines;
     // A one-off frame measures nothing: it uses the machine's kept crossing, if any.
     const LineMethodProfile line_methods = user_line_method_profile(Calibration::kept_only);
     settings.auto_compute_from_triangles = line_methods.threshold();
@@ -135,10 +137,14 @@ int cmd_render(Args args) {
     std::vector<std::vector<gl::PassTime>> timings;
     const int frames = std::max(o.repeat, 1) + (o.repeat > 0 ? 2 : 0);  // 2 warm-up frames
     scene::PresentationClock clock;  // --repeat: one nominal 60 Hz frame per picture
+    render::IntersectionStats first_intersections;
+    double later_intersection_ms = 0.0;
     for (int i = 0; i < frames; ++i) {
         clock.advance_nominal();
         clock.stamp(frame);
         renderer.render(frame, meshes, render::Renderer::kOffscreen);
+        if (i == 0) first_intersections = renderer.stats().intersections;
+        if (i > 0) later_intersection_ms += renderer.stats().intersections.update_ms;
         if (o.repeat > 0 && i >= 2) timings.push_back(renderer.pass_times());
     }
     const Image picture{o.camera.size.x, o.camera.size.y, 4, renderer.read_color()};
@@ -154,11 +160,25 @@ int cmd_render(Args args) {
         render::FrameSvgOptions svg;
         svg.reference.crease_angle_deg = settings.crease_angle_deg;
         svg.reference.material_lines = settings.material_lines;
+        svg.reference.intersection_lines = settings.intersection_lines;
         std::fprintf(
             stdout, "%s\n",
             export_frame_svg(o.svg, frame, meshes, o.camera.size.x, o.camera.size.y, svg).c_str());
     }
     print_timings(renderer, timings);
+    if (o.repeat > 0 && settings.intersection_lines) {
+        // The crossings are computed on the first frame and kept: what that costs, and what
+        // a frame costs once they are.
+        const render::FrameStats& s = renderer.stats();
+        std::fprintf(stdout,
+                     "intersection lines: %zu segments (%zu drawn) from %zu overlapping pairs of "
+                     "%zu objects; first frame %.2f ms CPU (%zu pairs, %zu meshes computed), "
+                     "later frames %.3f ms mean\n",
+                     s.intersections.segments, s.intersection_records, s.intersections.pairs,
+                     s.intersections.placements, first_intersections.update_ms,
+                     first_intersections.pairs_computed, first_intersections.meshes_computed,
+                     later_intersection_ms / std::max(1, frames - 1));
+    }
     if (context->debug().error_count() > 0) {
         std::fprintf(stderr, "beamzone render: %d OpenGL error(s) reported\n",
                      context->debug().error_count());

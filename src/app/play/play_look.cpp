@@ -110,6 +110,11 @@ PlayLook choose_look(const LookSources& s, const level::Level* level) {
         look.summary +=
             std::string(", material lines ") + (*lv->material_lines ? "on" : "off") + " (level)";
     }
+    if (lv->intersection_lines) {
+        look.render.intersection_lines = *lv->intersection_lines;
+        look.summary += std::string(", intersection lines ") +
+                        (*lv->intersection_lines ? "on" : "off") + " (level)";
+    }
     return look;
 }
 

@@ -603,10 +603,12 @@ class Loop {
             std::filesystem::create_directories(config_.screenshots, ec);
             if (ec) throw UserError("cannot create " + config_.screenshots.string());
             const auto path = platform::next_screenshot_path(config_.screenshots, ".svg");
-            // The lines the look draws: its crease angle, and material lines if it asks.
+            // The lines the look draws: its crease angle, material and intersection lines if
+            // it asks.
             render::FrameSvgOptions svg;
             svg.reference.crease_angle_deg = look_.render.crease_angle_deg;
             svg.reference.material_lines = look_.render.material_lines;
+            svg.reference.intersection_lines = look_.render.intersection_lines;
             const std::string line = export_frame_svg(path, frame, session_.meshes(),
                                                       renderer_->width(), renderer_->height(), svg);
             p_.log.info("vector screenshot saved: " + line);

@@ -67,7 +67,7 @@ class Visibility {
         // Only what lies at or beyond the near plane is in the depth buffer the GPU tests.
         const double t_min = proj_.near / depth;
         const double t_max = 1.0 - options_.relative_epsilon;
-        const detail::ExcludedEdge own{f.instance, f.va, f.vb};
+        const detail::ExcludedEdge own{f.instance, f.va, f.vb, {f.faces[0], f.faces[1]}};
         if (!bvh_.any_hit(glm::dvec3(0.0), point, t_min, t_max, own)) return 0;
         if (options_.hidden_levels <= 1) return 1;
         const int front = bvh_.count_front_hits(glm::dvec3(0.0), point, t_min, t_max, own,
@@ -154,6 +154,7 @@ std::vector<VisibleSegment> reference_segments(std::span<const ReferenceInstance
         detail::find_feature_edges(inst, index, vp, edges);
         if (inst.occluder && options.occlusion) add_occluders(inst, index, vp, occluders);
     }
+    if (options.intersection_lines) detail::find_intersection_edges(instances, edges);
     stats.feature_edges = edges.size();
     stats.occluder_triangles = occluders.size();
     const detail::TriangleBvh bvh(std::move(occluders));

@@ -11,6 +11,9 @@
 //    not; nothing if their facing differs the other way; else a crease iff the object-space unit
 //    normals have dot < cos_crease (emitted once, by the face that sees the edge low -> high);
 //    failing that, with material_lines, a material boundary when the faces' materials differ.
+//  - With intersection_lines, where two occluders' triangles cross (or two of one occluder
+//    that share no vertex: geometry/intersect/), the crossing is a line; its own faces are
+//    the two triangles it lies on.
 //  - A point of an edge is visible iff the segment eye -> point hits no occluder triangle,
 //    other than the faces on that edge, whose hit lies at or beyond the near plane and before
 //    the point by more than a relative epsilon.
@@ -34,6 +37,9 @@ struct ReferenceInstance {
     // too, where they are no crease, as long as cos_crease >= -1 (an instance past the
     // creases' distance LOD draws none).
     bool material_lines = false;
+    // Takes part in intersection lines (ReferenceOptions::intersection_lines) as long as it is
+    // an occluder; off for an instance the renderer draws from its simplified mesh.
+    bool intersects = true;
 };
 
 struct ReferenceView {
@@ -52,6 +58,9 @@ struct ReferenceOptions {
     // Hidden lines too, by occlusion level, up to this level (0: visible lines only; at most
     // kMaxOcclusionLevel, which then stands for "that many or more").
     int hidden_levels = 0;
+    // Where the surfaces of two occluding instances (or two faces of one that share no
+    // vertex) cross, the crossing is a line too (LineKind::intersection).
+    bool intersection_lines = false;
 };
 
 // A point's occlusion level: 0 when visible, else the number of surfaces facing the eye that
@@ -61,7 +70,8 @@ inline constexpr int kMaxOcclusionLevel = 3;
 // The kinds of feature line, as the geometry shader classifies them. `material` is an edge
 // between faces of different materials that is neither a silhouette nor a crease (drawn with
 // ReferenceInstance::material_lines; the GPU draws it as a crease flagged material).
-enum class LineKind : std::uint8_t { crease, silhouette, boundary, material };
+// `intersection` is where two surfaces cross (ReferenceOptions::intersection_lines).
+enum class LineKind : std::uint8_t { crease, silhouette, boundary, material, intersection };
 
 // One visible stretch of a feature edge, split at its exact visibility changes: window
 // coordinates in pixels (OpenGL's: origin at the bottom-left, y up), on or just beyond the
@@ -70,7 +80,7 @@ struct VisibleSegment {
     glm::dvec2 a{0.0};
     glm::dvec2 b{0.0};
     LineKind kind = LineKind::crease;
-    std::uint32_t instance = 0;  // index into the instances given
+    std::uint32_t instance = 0;  // index into the instances given (an intersection: the first)
     std::uint8_t level = 0;      // occlusion level (0: visible); see hidden_levels
     // Window pixels along the edge's on-screen projection from its first end to `a`: a dash
     // pattern that starts there stays fixed to the edge as the camera moves.

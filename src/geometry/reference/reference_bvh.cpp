@@ -19,7 +19,12 @@ glm::dvec3 centroid(const BvhTriangle& t) {
     return (t.p0 + t.p1 + t.p2) / 3.0;
 }
 
+bool is_face(const BvhTriangle& t, const ExcludedFace& f) {
+    return t.instance == f.instance && t.v0 == f.v0 && t.v1 == f.v1 && t.v2 == f.v2;
+}
+
 bool excluded_by(const BvhTriangle& t, const ExcludedEdge& e) {
+    if (is_face(t, e.faces[0]) || is_face(t, e.faces[1])) return true;
     if (t.instance != e.instance) return false;
     const bool has_a = t.v0 == e.va || t.v1 == e.va || t.v2 == e.va;
     const bool has_b = t.v0 == e.vb || t.v1 == e.vb || t.v2 == e.vb;

@@ -13,11 +13,19 @@ struct BvhTriangle {
     std::uint32_t v0 = 0, v1 = 0, v2 = 0;  // welded vertex ids within the instance's mesh
 };
 
-// Triangles that hold both vertices of this edge, in this instance, are skipped.
+// One triangle of one instance, by its welded vertex ids in the mesh's order.
+struct ExcludedFace {
+    std::uint32_t instance = ~0u;
+    std::uint32_t v0 = ~0u, v1 = ~0u, v2 = ~0u;
+};
+
+// Triangles that hold both vertices of this edge, in this instance, are skipped, and so are
+// the faces named (an intersection line's two faces: it lies on both).
 struct ExcludedEdge {
     std::uint32_t instance = ~0u;
     std::uint32_t va = ~0u;
     std::uint32_t vb = ~0u;
+    ExcludedFace faces[2];
 };
 
 class TriangleBvh {

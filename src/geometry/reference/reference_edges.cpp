@@ -4,6 +4,8 @@
 #include <cmath>
 #include <unordered_set>
 
+#include "geometry/intersect/intersection_lines.h"
+
 namespace bz::geo::detail {
 
 namespace {
@@ -49,7 +51,7 @@ void find_feature_edges(const ReferenceInstance& inst, std::uint32_t instance_in
             unit(face_normal(object_pos(m, adj[0]), object_pos(m, adj[2]), object_pos(m, adj[4])));
         for (int e = 0; e < 3; ++e) {
             const std::uint32_t v0 = adj[2 * e], va = adj[2 * e + 1], v1 = adj[(2 * e + 2) % 6];
-            FeatureEdge fe{vp[v0], vp[v1], instance_index, v0, v1, FeatureKind::boundary};
+            FeatureEdge fe{vp[v0], vp[v1], instance_index, v0, v1, FeatureKind::boundary, {}};
             if (va == v0) {
                 if (open_edges.insert(edge_key(v0, v1)).second) out.push_back(fe);
                 continue;
@@ -73,6 +75,34 @@ void find_feature_edges(const ReferenceInstance& inst, std::uint32_t instance_in
                 out.push_back(fe);
             }
         }
+    }
+}
+
+void find_intersection_edges(std::span<const ReferenceInstance> instances,
+                             std::vector<FeatureEdge>& out) {
+    // Only occluders: the GPU finds these lines' visibility against the depth prepass, which
+    // holds nothing else, and a surface that hides nothing cuts nothing either. Each instance
+    // still hides what lies behind it, whether it takes part or not.
+    std::vector<PlacedMesh> placed;
+    std::vector<std::uint32_t> index;  // placed -> instance
+    for (std::size_t i = 0; i < instances.size(); ++i) {
+        if (!instances[i].occluder || !instances[i].intersects) continue;
+        placed.push_back(place_mesh(*instances[i].mesh, instances[i].model_view));
+        index.push_back(static_cast<std::uint32_t>(i));
+    }
+    auto face = [&](std::uint32_t p, std::uint32_t t) {
+        const std::uint32_t* v = &placed[p].mesh->triangles[3 * std::size_t{t}];
+        return ExcludedFace{index[p], v[0], v[1], v[2]};
+    };
+    for (const SceneIntersection& x : scene_intersections(placed)) {
+        out.push_back(
+            {x.segment.a,
+             x.segment.b,
+             index[x.first],
+             ~0u,
+             ~0u,
+             FeatureKind::intersection,
+             {face(x.first, x.segment.triangle_a), face(x.second, x.segment.triangle_b)}});
     }
 }
 

@@ -36,9 +36,9 @@ constexpr std::array<std::string_view, 3> kDifficulties = {"easy", "normal", "ar
 constexpr std::size_t kMaxBonusScores = 16;
 constexpr std::array<std::string_view, 4> kEnemyTypes = {"slow_tank", "super_tank", "missile",
                                                          "saucer"};
-constexpr std::array<std::string_view, 10> kRenderKeys = {
-    "style", "preset",  "line_width", "crease_angle", "bloom_strength",
-    "beam",  "overlay", "hold_41hz",  "line_method",  "material_lines"};
+constexpr std::array<std::string_view, 11> kRenderKeys = {
+    "style",   "preset",    "line_width",  "crease_angle",   "bloom_strength",    "beam",
+    "overlay", "hold_41hz", "line_method", "material_lines", "intersection_lines"};
 // Must match bz::render::beam_look_names().
 constexpr std::array<std::string_view, 2> kBeamLooks = {"classic", "mame"};
 // Must match bz::render::parse_line_method ("geometry" is the old name of geometry_shader).
@@ -254,6 +254,7 @@ void read_render(const toml::table& root, Level& level, Diagnostics& diag) {
     if (auto v = r.boolean("hold_41hz")) s.hold_41hz = *v;
     if (auto v = r.choice("line_method", kLineMethods)) s.line_method = *v;
     if (auto v = r.boolean("material_lines")) s.material_lines = *v;
+    if (auto v = r.boolean("intersection_lines")) s.intersection_lines = *v;
 }
 
 }  // namespace bz::level::detail

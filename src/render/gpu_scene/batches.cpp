@@ -102,7 +102,9 @@ FrameBatches build_batches(const scene::FrameList& frame, const scene::MeshLibra
         return ia.occluder > ib.occluder;
     });
     out.instances.reserve(visible.size());
+    out.instance_of_item.assign(frame.items.size(), FrameBatches::kNotDrawn);
     for (const Visible& v : visible) {
+        out.instance_of_item[v.item] = static_cast<std::uint32_t>(out.instances.size());
         const auto& item = frame.items[v.item];
         if (out.batches.empty() || !settings.instancing || out.batches.back().mesh != item.mesh ||
             out.batches.back().lod != v.lod || out.batches.back().occluder != item.occluder ||

@@ -25,6 +25,9 @@ struct Batch {
 struct FrameBatches {
     std::vector<InstanceData> instances;
     std::vector<Batch> batches;
+    // Per item of the frame list, its index in `instances`; kNotDrawn when culled or skipped.
+    std::vector<std::uint32_t> instance_of_item;
+    static constexpr std::uint32_t kNotDrawn = ~0u;
     FrameStats stats;
 };
 

@@ -38,6 +38,9 @@ inline constexpr std::uint32_t clipped_start = 1u
 inline constexpr std::uint32_t clipped_end = 1u << 10;  // end b was moved
 // A crease record drawn only because its faces have different materials (material lines on).
 inline constexpr std::uint32_t material = 1u << 11;
+// A crease record that is no mesh edge but where two surfaces cross (intersection lines on:
+// shaders/lines/intersections.comp); its vertex ids are the segment's own.
+inline constexpr std::uint32_t intersection = 1u << 12;
 }  // namespace edge_flags
 
 // One visible feature edge, 176 bytes (std430: 11 x 16). "a -> b" is the edge's direction:
@@ -98,5 +101,7 @@ inline constexpr unsigned kSpineSamplesBinding = 7;   // one visibility word per
 inline constexpr unsigned kSpineSpansBinding = 8;     // per record: first and last visible sample
 inline constexpr unsigned kFaceNormalsBinding = 9;    // the mesh's face normals (geo::face_normals)
 inline constexpr unsigned kEdgeWorkBinding = 10;      // eyes and work items (edge_culling.h)
+// The frame's intersection segments (intersections.comp; render/lines/intersection_records.h).
+inline constexpr unsigned kIntersectionsBinding = 12;
 
 }  // namespace bz::render

@@ -101,15 +101,16 @@ void pass_edges(const PassContext& ctx) {
 
     // A previous frame that overflowed asks for more; a frame that cannot overflow gets it all.
     const EdgeDrawCommand previous = ctx.edges.previous();
-    // At most one record per dispatched edge.
+    // At most one record per dispatched edge and intersection segment.
     ctx.edges.reserve(std::min(
-        cull.edges_dispatched,
+        cull.edges_dispatched + ctx.intersection_count,
         std::max(kInitialRecords, std::size_t{previous.vertex_count / kVerticesPerEdge} + 1024)));
     const bool samples = wants_spine_samples(ctx);
     if (samples)
         ctx.edges.reserve_samples(std::size_t{previous.samples_used} + previous.samples_used / 4);
     ctx.edges.reset();
     if (dispatches.empty()) {
+        append_intersections(ctx, samples);
         glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
         return;
     }
@@ -172,6 +173,7 @@ void pass_edges(const PassContext& ctx) {
             glDispatchCompute(groups, 1, 1);
         }
     }
+    append_intersections(ctx, samples);
     // The quad pass reads the records in its vertex shader and the count as its draw command.
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
 }

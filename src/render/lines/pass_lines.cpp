@@ -70,19 +70,22 @@ void bind_beam_tiles(const Targets& targets) {
                        GL_R8UI);
 }
 
-void begin_line_target(const PassContext& ctx, const gl::Program& program, bool mask_mode) {
+void begin_line_target(const PassContext& ctx, const gl::Program& program, bool mask_mode,
+                       bool clear) {
     (mask_mode ? ctx.targets.mask_fbo : ctx.targets.lines_fbo).bind();
     gl::PipelineState state;
     state.blend = !mask_mode && ctx.settings.beam.blend == BeamBlend::additive ? gl::Blend::add
                                                                                : gl::Blend::max;
     state.depth_zero_to_one = ctx.cam.zero_to_one;
     gl::apply(state);
-    glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
-    glClear(GL_COLOR_BUFFER_BIT);
+    if (clear) {
+        glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+        glClear(GL_COLOR_BUFFER_BIT);
+    }
     if (!mask_mode) {
         // The beam's fragments mark the tiles they light, afresh each frame.
         Targets& t = ctx.targets;
-        glClearTexImage(t.beam_tiles.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_BYTE, nullptr);
+        if (clear) glClearTexImage(t.beam_tiles.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_BYTE, nullptr);
         bind_beam_tiles(t);
     }
     if (!mask_mode && ctx.view_rows > 0 && ctx.view_rows < ctx.targets.height) {

@@ -19,11 +19,12 @@ double ms_since(Clock::time_point t0) {
 }
 
 // The group order in the document, and each kind's name there.
-constexpr std::array<std::pair<geo::LineKind, const char*>, 4> kKinds{{
+constexpr std::array<std::pair<geo::LineKind, const char*>, 5> kKinds{{
     {geo::LineKind::silhouette, "silhouette"},
     {geo::LineKind::crease, "crease"},
     {geo::LineKind::boundary, "boundary"},
     {geo::LineKind::material, "material"},
+    {geo::LineKind::intersection, "intersection"},
 }};
 
 // The style's stroke: beam styles draw each object in its own colour on black; the paper

@@ -15,7 +15,7 @@ import xml.etree.ElementTree as ET
 from PIL import Image
 
 SVG = "{http://www.w3.org/2000/svg}"
-KINDS = {"silhouette", "crease", "boundary", "material", "hud", "hidden-1", "hidden-2", "hidden-3"}
+KINDS = {"silhouette", "crease", "boundary", "material", "intersection", "hud", "hidden-1", "hidden-2", "hidden-3"}
 NUMBER = r"-?\d+(?:\.\d+)?"
 PATH_D = re.compile(rf"^M {NUMBER} {NUMBER}(?: L(?: {NUMBER} {NUMBER})+)?$")
 COLOUR = re.compile(r"^#[0-9a-f]{6}$")

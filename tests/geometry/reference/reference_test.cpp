@@ -273,7 +273,8 @@ TEST(ReferenceBvh, AnswersLikeBruteForce) {
         const glm::dvec3 end(u(rng), u(rng), u(rng) - 20.0);
         const detail::ExcludedEdge ex{static_cast<std::uint32_t>(q % 3),
                                       static_cast<std::uint32_t>(q),
-                                      static_cast<std::uint32_t>(q + 1)};
+                                      static_cast<std::uint32_t>(q + 1),
+                                      {}};
         bool brute = false;
         for (const auto& t : tris) {
             const bool own = t.instance == ex.instance &&
