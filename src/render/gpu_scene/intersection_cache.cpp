@@ -7,7 +7,9 @@
 
 namespace bz::render {
 
-namespace {
+// Named, not anonymous: IntersectionCache::State holds these types, and a unity build
+// (CI) warns of a class whose members have internal linkage.
+namespace intersection_cache_detail {
 
 // What decides a placed mesh's triangles: the mesh, its version, the model matrix.
 struct PlacementKey {
@@ -89,7 +91,9 @@ geo::DBox world_bounds(const geo::Bounds& b, const glm::dmat4& model) {
     return out;
 }
 
-}  // namespace
+}  // namespace intersection_cache_detail
+
+using namespace intersection_cache_detail;
 
 struct IntersectionCache::State {
     struct Placement {
