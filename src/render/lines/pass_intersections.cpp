@@ -44,16 +44,7 @@ void pass_intersection_quads(const PassContext& ctx, bool mask_mode) {
     if (ctx.intersection_count == 0) return;
     const gl::Program& program = mask_mode ? ctx.programs.edge_quads_mask : ctx.programs.edge_quads;
     begin_line_target(ctx, program, mask_mode, false);
-    program.set("u_capacity", ctx.edges.capacity());
-    program.set("u_sample_capacity", 0u);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEdgeCommandBinding, ctx.edges.command().id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEdgeRecordsBinding, ctx.edges.records().id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSpineSamplesBinding, ctx.edges.samples().id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSpineSpansBinding, ctx.edges.spans().id());
-    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, ctx.edges.command().id());
-    ctx.empty_vao.bind();
-    glDrawArraysIndirect(GL_TRIANGLES, nullptr);
-    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
+    draw_edge_record_quads(ctx, program, 0u);  // no spine samples: the fragments test
 }
 
 }  // namespace bz::render
