@@ -93,41 +93,30 @@ std::vector<SweepConfig> sweep_configs() {
         render::preset("balanced")};
     mame.settings.beam = render::beam_look("mame");
     out.push_back(mame);
-    // Material boundaries as lines, with each line method given outright: what the extra
-    // kind costs, and that both methods agree with the reference that draws it too.
-    SweepConfig material{"balanced-material-lines",
-                         "balanced with material lines on (edges between materials)",
-                         render::preset("balanced")};
-    material.settings.material_lines = true;
-    out.push_back(material);
-    for (const render::LineMethod m : render::feature_line_methods()) {
-        std::string suffix = render::line_method_name(m);
-        std::replace(suffix.begin(), suffix.end(), '_', '-');
-        SweepConfig c{"balanced-material-lines-" + suffix,
-                      std::string("balanced with material lines on, line method ") +
-                          render::line_method_name(m),
-                      render::preset("balanced")};
-        c.settings.material_lines = true;
-        c.settings.method = m;
-        out.push_back(c);
-    }
-    // Intersection lines likewise: the CPU's crossings drawn by each method.
-    SweepConfig intersection{"balanced-intersection-lines",
-                             "balanced with intersection lines on (where surfaces cross)",
-                             render::preset("balanced")};
-    intersection.settings.intersection_lines = true;
-    out.push_back(intersection);
-    for (const render::LineMethod m : render::feature_line_methods()) {
-        std::string suffix = render::line_method_name(m);
-        std::replace(suffix.begin(), suffix.end(), '_', '-');
-        SweepConfig c{"balanced-intersection-lines-" + suffix,
-                      std::string("balanced with intersection lines on, line method ") +
-                          render::line_method_name(m),
-                      render::preset("balanced")};
-        c.settings.intersection_lines = true;
-        c.settings.method = m;
-        out.push_back(c);
-    }
+    // An extra line kind on: one row as balanced draws it, then one per line method given
+    // outright: what the kind costs, and that both methods agree with the reference that
+    // draws it too.
+    const auto add_kind_rows = [&](const std::string& name, const std::string& what,
+                                   bool render::RenderSettings::*kind) {
+        SweepConfig plain{"balanced-" + name, "balanced with " + what, render::preset("balanced")};
+        plain.settings.*kind = true;
+        out.push_back(plain);
+        for (const render::LineMethod m : render::feature_line_methods()) {
+            std::string suffix = render::line_method_name(m);
+            std::replace(suffix.begin(), suffix.end(), '_', '-');
+            SweepConfig c{"balanced-" + name + "-" + suffix,
+                          "balanced with " + name.substr(0, name.find('-')) + " lines on, " +
+                              "line method " + render::line_method_name(m),
+                          render::preset("balanced")};
+            c.settings.*kind = true;
+            c.settings.method = m;
+            out.push_back(c);
+        }
+    };
+    add_kind_rows("material-lines", "material lines on (edges between materials)",
+                  &render::RenderSettings::material_lines);
+    add_kind_rows("intersection-lines", "intersection lines on (where surfaces cross)",
+                  &render::RenderSettings::intersection_lines);
     // Every style on the same frames (balanced preset): "balanced" is the level's own style,
     // so a level in the vector style needs no row of its own for it.
     for (const scene::Style style : scene::all_styles()) {
