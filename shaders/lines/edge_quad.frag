@@ -53,15 +53,23 @@ float level_brightness(float t) {
 }
 #endif
 
-// The spine test of a record that got no samples (the sample buffer was full).
+#ifndef SPINE_SAMPLES_ONLY
+// The spine test of a record that got no samples (the sample buffer was full, or the frame
+// takes none).
 bool tested_here(float t) {
     EdgeRecord r = records[g_samples.w];
     return record_spine_visible(r, t, record_nudge(r));
 }
+#endif
 
-// Whether the spine point at parameter t is visible.
+// Whether the spine point at parameter t is visible. SPINE_SAMPLES_ONLY: the program of the
+// draw whose records all have samples leaves the test out: llvmpipe runs both sides of a
+// branch for every fragment, and the test's code alone, never taken, cost 5 of the 12 ms
+// of the seed's hallway's quads (pass_edge_quads.cpp).
 bool spine_point_visible(float t) {
+#ifndef SPINE_SAMPLES_ONLY
     if (g_samples.y == 0u) return tested_here(t);
+#endif
     if (t < g_stretch.x || t >= g_stretch.y) return false;
     if (g_stretch.w == 0.0) return true;  // no hidden sample inside the stretch
     uint k = clamp(spine_sample_index(t, g_samples.y), g_samples.z, g_samples.z + uint(g_stretch.w) - 1u);

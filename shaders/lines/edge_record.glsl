@@ -31,7 +31,10 @@ const uint EDGE_INTERSECTION = 1u << 12;
 
 // The DrawArraysIndirectCommand of the quad draw; vertex_count doubles as the append counter
 // (EDGE_VERTICES per record). Then the spine-sample append counter and the count of work items
-// hierarchical-Z culling skipped (render::EdgeDrawCommand).
+// hierarchical-Z culling skipped (render::EdgeDrawCommand). Then the two quad draws
+// spine_visibility.comp writes: the records with spine samples, and the records tested per
+// fragment (each the count and instance count of a DrawArraysIndirectCommand; first vertex
+// and base instance stay 0).
 // A shader declares the block as `buffer Command { EDGE_COMMAND_MEMBERS; };`.
 #define EDGE_COMMAND_MEMBERS \
     uint vertex_count;       \
@@ -39,7 +42,15 @@ const uint EDGE_INTERSECTION = 1u << 12;
     uint first_vertex;       \
     uint base_instance;      \
     uint samples_used;       \
-    uint hidden_items
+    uint hidden_items;       \
+    uint sampled_draw_count; \
+    uint sampled_draw_instances; \
+    uint sampled_draw_first; \
+    uint sampled_draw_base;  \
+    uint tested_draw_count;  \
+    uint tested_draw_instances; \
+    uint tested_draw_first;  \
+    uint tested_draw_base
 const uint EDGE_VERTICES = 6u;
 
 // The binding points (EDGE_LIST_BINDING, EDGE_RECORDS_BINDING, ...) are #defines injected from

@@ -13,7 +13,12 @@
 #include "edge_record.glsl"
 #include "spine_samples.glsl"
 
-layout(local_size_x = 64) in;
+// EDGE_GROUP_SIZE invocations per work group (programs.cpp: 64 on a GPU, 8 on llvmpipe, where
+// every invocation costs a start-up of its own), each looping over its item's edges.
+#ifndef EDGE_GROUP_SIZE
+#define EDGE_GROUP_SIZE 64
+#endif
+layout(local_size_x = EDGE_GROUP_SIZE) in;
 
 struct MeshEdge {
     uint a, b;        // in face A's winding
@@ -42,6 +47,7 @@ layout(std430, binding = SPINE_SPANS_BINDING) writeonly buffer Spans { uvec4 spa
 layout(std430, binding = EDGE_COMMAND_BINDING) buffer Command { EDGE_COMMAND_MEMBERS; };
 
 uniform uint u_work_base;       // this dispatch's first work item in `work`
+uniform uint u_work_end;        // one past its last
 uniform uint u_capacity;        // records the buffer holds; later appends are counted, not written
 uniform uint u_sample_capacity; // spine samples the sample buffer holds (0: none wanted)
 uniform float u_sample_margin;  // pixels around the viewport that spine samples cover
@@ -113,7 +119,8 @@ bool faces_eye_object(uint inst, float det_sign, vec3 n, vec3 to_eye, vec3 pa, u
 // Whether every tile under the item's rectangle holds a surface nearer than the nearest point
 // of its bounding sphere, by more than the spine test would forgive: then no spine sample of
 // any of its edges can pass. Every invocation of the group reads the same record and tiles,
-// so the whole group returns together.
+// so the whole group returns together (listed work: each invocation reads its entry's
+// cluster's record).
 bool hidden_by_prepass(uint item_index) {
     uvec4 b = work[u_bounds_offset + item_index];
     if (b.w == 0u) return false;
@@ -129,18 +136,10 @@ bool hidden_by_prepass(uint item_index) {
     return true;
 }
 
-void main() {
-    uint item_index = u_work_base + gl_WorkGroupID.x;
-    if (u_hiz && hidden_by_prepass(item_index)) {
-        if (gl_LocalInvocationID.x == 0u) atomicAdd(hidden_items, 1u);
-        return;
-    }
-    uvec4 item = work[item_index];
-    if (gl_LocalInvocationID.x >= item.z) return;
-    uint e = item.y + gl_LocalInvocationID.x;
-    uint inst = item.x;
+// Classifies edge e of instance inst (its object-space eye `eye`) and appends it when it is a
+// visible feature edge.
+void test_edge(uint inst, vec4 eye, uint e) {
     MeshEdge me = edges[e];
-    vec4 eye = uintBitsToFloat(work[inst]);
     vec3 pa = position(me.a);
     vec3 to_eye = eye.xyz - pa;  // both faces hold vertex a
     vec3 obj_na = face_normals[me.face_a].xyz;
@@ -246,3 +245,33 @@ void main() {
         spans[2u * slot + 1u] = uvec4(0u);
     }
 }
+
+#ifdef EDGE_WORK_LISTED
+// Listed work (render/lines/edge_prefilter.h): one edge per entry, x the instance, y the edge,
+// z where its cluster's hierarchical-Z bounds record is (as an item index), w 1 on its
+// cluster's first entry; one entry per invocation.
+void main() {
+    uint index = u_work_base + gl_GlobalInvocationID.x;
+    if (index >= u_work_end) return;
+    uvec4 entry = work[index];
+    if (u_hiz && hidden_by_prepass(entry.z)) {
+        if (entry.w != 0u) atomicAdd(hidden_items, 1u);
+        return;
+    }
+    test_edge(entry.x, uintBitsToFloat(work[entry.x]), entry.y);
+}
+#else
+// One work item (a cluster's edges, or its crease prefix) per group, each invocation taking
+// every EDGE_GROUP_SIZE-th edge of it.
+void main() {
+    uint item_index = u_work_base + gl_WorkGroupID.x;
+    if (u_hiz && hidden_by_prepass(item_index)) {
+        if (gl_LocalInvocationID.x == 0u) atomicAdd(hidden_items, 1u);
+        return;
+    }
+    uvec4 item = work[item_index];
+    vec4 eye = uintBitsToFloat(work[item.x]);
+    for (uint i = gl_LocalInvocationID.x; i < item.z; i += EDGE_GROUP_SIZE)
+        test_edge(item.x, eye, item.y + i);
+}
+#endif

@@ -12,7 +12,7 @@
 layout(local_size_x = 8) in;
 
 layout(std430, binding = EDGE_RECORDS_BINDING) readonly buffer Records { EdgeRecord records[]; };
-layout(std430, binding = EDGE_COMMAND_BINDING) readonly buffer Command { EDGE_COMMAND_MEMBERS; };
+layout(std430, binding = EDGE_COMMAND_BINDING) buffer Command { EDGE_COMMAND_MEMBERS; };
 layout(std430, binding = SPINE_SAMPLES_BINDING) writeonly buffer Samples { uint spine_samples[]; };
 layout(std430, binding = SPINE_SPANS_BINDING) buffer Spans { uvec4 spans[]; };  // from edges.comp
 
@@ -28,8 +28,18 @@ uniform float u_far;
 #include "record_spine_test.glsl"
 
 void main() {
+    // The quad pass's two draws (pass_edge_quads.cpp): the records' quads with their samples,
+    // or, when the frame asked for more samples than the buffer holds, every record's quad
+    // tested per fragment (edge_quad.vert).
+    bool overflow = samples_used > u_sample_capacity;
+    if (gl_WorkGroupID.x == 0u && gl_LocalInvocationID.x == 0u) {
+        sampled_draw_count = overflow ? 0u : vertex_count;
+        sampled_draw_instances = 1u;
+        tested_draw_count = overflow ? vertex_count : 0u;
+        tested_draw_instances = 1u;
+    }
     // Too many samples for the buffer: the quads test every record per fragment instead.
-    if (samples_used > u_sample_capacity) return;
+    if (overflow) return;
     uint records_n = min(vertex_count / EDGE_VERTICES, u_capacity);
     uint lane = gl_LocalInvocationID.x;
     for (uint index = gl_WorkGroupID.x; index < records_n; index += gl_NumWorkGroups.x) {

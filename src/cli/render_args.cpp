@@ -21,7 +21,8 @@ const std::string& render_usage() {
             "[--beam "
             "classic|mame]\n"
             "                       [--lit-share] [--no-cluster-culling] [--hiz-culling]\n"
-            "                       [--prepass-raster auto|pipeline|compute]\n"
+            "                       [--prepass-raster auto|pipeline|compute] "
+            "[--edge-prefilter auto|gpu|cpu]\n"
             "                       [--material-lines] [--intersection-lines]\n"
             "                       [--svg lines.svg]\n"
             "                       [--overwrite]\n"
@@ -51,6 +52,11 @@ const std::string& render_usage() {
             "on every thread, or the GL pipeline (auto: compute on a software rasteriser for a "
             "dense\n"
             "mesh; the same depth up to float rounding).\n"
+            "--edge-prefilter: who rules out the edges that cannot be feature edges before the "
+            "edge\n"
+            "shader classifies the rest: the CPU, or none (auto: the CPU on a software "
+            "rasteriser;\n"
+            "the same lines).\n"
             "--material-lines draws the edges between faces of different materials as lines too\n"
             "(a model whose parts have their own materials; a level's [render] material_lines).\n"
             "--intersection-lines draws where surfaces cross as lines too: two objects (--copies\n"
@@ -124,6 +130,17 @@ RenderOptions parse_render_args(Args args) {
                 o.prepass_raster = render::PrepassRaster::compute;
             else
                 throw UsageError("--prepass-raster: expected auto, pipeline or compute, not " +
+                                 printable(s));
+        } else if (a == "--edge-prefilter") {
+            const std::string_view s = cur.value(a);
+            if (s == "auto")
+                o.edge_prefilter = render::EdgePrefilter::automatic;
+            else if (s == "gpu")
+                o.edge_prefilter = render::EdgePrefilter::gpu;
+            else if (s == "cpu")
+                o.edge_prefilter = render::EdgePrefilter::cpu;
+            else
+                throw UsageError("--edge-prefilter: expected auto, gpu or cpu, not " +
                                  printable(s));
         } else if (a == "--shading") {
             const std::string_view s = cur.value(a);

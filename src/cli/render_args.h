@@ -34,6 +34,8 @@ struct RenderOptions {
     bool hiz_culling = false;     // --hiz-culling: skip edge clusters the prepass hides
     // --prepass-raster: who rasterises the prepass's small triangles (lines/prepass_raster.h)
     render::PrepassRaster prepass_raster = render::PrepassRaster::automatic;
+    // --edge-prefilter: who rules out edges before edges.comp (lines/edge_prefilter.h)
+    render::EdgePrefilter edge_prefilter = render::EdgePrefilter::automatic;
     bool material_lines = false;  // --material-lines: edges between materials are lines too
     // --intersection-lines: where surfaces cross, a line
     bool intersection_lines = false;

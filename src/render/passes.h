@@ -153,11 +153,17 @@ void pass_spine_visibility(const PassContext& ctx);
 // LineMethod::compute: one quad per edge-buffer record (pass_edge_quads.cpp), with the same
 // fragment stage as pass_lines.
 void pass_edge_quads(const PassContext& ctx, bool mask_mode);
+// Which of the edge buffer's indirect draws (EdgeDrawCommand) a quad draw takes.
+enum class QuadDraw {
+    every_record,  // the append count itself: the records have no spine samples
+    sampled,       // spine_visibility.comp's: every record, when the frame's samples fit
+    tested,        // ... every record, when they did not
+};
 // Shared by it and the intersection quads (pass_intersections.cpp): with `program` in use and
 // its line target begun, one quad per edge-buffer record, drawn with the count the buffer's
 // command holds; `sample_capacity` 0 when the records have no spine samples.
 void draw_edge_record_quads(const PassContext& ctx, const gl::Program& program,
-                            unsigned sample_capacity);
+                            unsigned sample_capacity, QuadDraw draw = QuadDraw::every_record);
 // Intersection lines (pass_intersections.cpp). Appends the frame's intersection segments to
 // the edge buffer as records (intersections.comp), with spine samples when the frame wants
 // them; the edges pass calls it after the meshes' edges, with the buffer's state bound.

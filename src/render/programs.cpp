@@ -3,7 +3,9 @@
 #include <sstream>
 
 #include "core/paths.h"
+#include "gl/driver.h"
 #include "render/beam/bloom_kernel.h"
+#include "render/lines/edge_culling.h"
 #include "render/shader_interface.h"
 #include "render/targets.h"
 
@@ -73,19 +75,26 @@ Programs load_programs(const RenderSettings& settings) {
         {stage(GL_VERTEX_SHADER, "lines/lines.vert"), stage(GL_GEOMETRY_SHADER, "lines/lines.geom"),
          stage(GL_FRAGMENT_SHADER, "lines/lines.frag")},
         beam_levels);
-    p.edges = program({stage(GL_COMPUTE_SHADER, "lines/edges.comp")});
+    const std::string edge_group =
+        "EDGE_GROUP_SIZE " + std::to_string(edge_group_size(gl::is_software_renderer()));
+    p.edges = program({stage(GL_COMPUTE_SHADER, "lines/edges.comp")}, {edge_group});
+    p.edges_listed =
+        program({stage(GL_COMPUTE_SHADER, "lines/edges.comp")}, {edge_group, "EDGE_WORK_LISTED 1"});
     p.spine_visibility = program({stage(GL_COMPUTE_SHADER, "lines/spine_visibility.comp")});
     p.intersections = program({stage(GL_COMPUTE_SHADER, "lines/intersections.comp")});
     p.depth_tiles = program({stage(GL_COMPUTE_SHADER, "lines/depth_tiles.comp")});
-    p.edge_quads = program({stage(GL_VERTEX_SHADER, "lines/edge_quad.vert"),
-                            stage(GL_FRAGMENT_SHADER, "lines/edge_quad.frag")},
-                           beam_tiles);
-    p.edge_quads_mask = program({stage(GL_VERTEX_SHADER, "lines/edge_quad.vert"),
-                                 stage(GL_FRAGMENT_SHADER, "lines/edge_quad.frag")},
-                                {"MASK_MODE 1"});
-    p.edge_quads_dim = program({stage(GL_VERTEX_SHADER, "lines/edge_quad.vert"),
-                                stage(GL_FRAGMENT_SHADER, "lines/edge_quad.frag")},
-                               beam_levels);
+    auto quads = [&](std::vector<std::string> defines) {
+        const std::vector<gl::StageFile> stages = {
+            stage(GL_VERTEX_SHADER, "lines/edge_quad.vert"),
+            stage(GL_FRAGMENT_SHADER, "lines/edge_quad.frag")};
+        std::vector<std::string> sampled = defines;
+        sampled.push_back("SPINE_SAMPLES_ONLY 1");
+        return QuadPrograms{.sampled = program(stages, sampled),
+                            .tested = program(stages, defines)};
+    };
+    p.edge_quads = quads(beam_tiles);
+    p.edge_quads_mask = quads({"MASK_MODE 1"});
+    p.edge_quads_dim = quads(beam_levels);
     p.hud =
         program({stage(GL_VERTEX_SHADER, "hud/hud.vert"), stage(GL_GEOMETRY_SHADER, "hud/hud.geom"),
                  stage(GL_FRAGMENT_SHADER, "hud/hud.frag")},

@@ -8,6 +8,11 @@
 
 namespace bz::render {
 
+struct QuadPrograms {
+    gl::Program sampled;
+    gl::Program tested;
+};
+
 struct Programs {
     gl::Program prepass;
     gl::Program prepass_raster;   // the compute prepass's small clusters (lines/prepass_raster.h)
@@ -17,12 +22,16 @@ struct Programs {
     gl::Program mask;              // lines.* with MASK_MODE
     gl::Program lines_dim;         // lines.* with OCCLUSION_LEVELS: dimmer by level (x-ray)
     gl::Program edges;             // LineMethod::compute: edges.comp fills the edge buffer
+    gl::Program edges_listed;      // the same for the edges the CPU listed (lines/edge_prefilter.h)
     gl::Program spine_visibility;  // ... spine test per spine sample
     gl::Program intersections;     // intersections.comp: intersection lines into the edge buffer
     gl::Program depth_tiles;       // ... hierarchical-Z culling's depth tiles
-    gl::Program edge_quads;        // ... edge_quad.vert + lines.frag draw it
-    gl::Program edge_quads_mask;   // ... with MASK_MODE
-    gl::Program edge_quads_dim;    // ... with OCCLUSION_LEVELS
+    // ... edge_quad.vert + edge_quad.frag draw it: each as two programs, for records with
+    // spine samples (SPINE_SAMPLES_ONLY) and for records whose fragments run the spine test
+    // (pass_edge_quads.cpp)
+    QuadPrograms edge_quads;
+    QuadPrograms edge_quads_mask;  // ... with MASK_MODE
+    QuadPrograms edge_quads_dim;   // ... with OCCLUSION_LEVELS
     gl::Program hud;
     gl::Program hud_lit_tiles;  // ... marking the composite's lit tiles (drawn after the bloom)
     gl::Program bloom_down;

@@ -7,6 +7,7 @@
 #include "core/error.h"
 #include "gl/driver.h"
 #include "render/frame_passes.h"
+#include "render/lines/edge_prefilter.h"
 #include "render/lines/intersection_records.h"
 #include "render/styles/palette.h"
 
@@ -323,6 +324,7 @@ void Renderer::render(const scene::FrameList& frame, const scene::MeshLibrary& m
         return;
     }
     m.gpu_meshes.set_edge_lists(style_needs_edge_buffer(style, m.settings));
+    m.gpu_meshes.set_edge_facing_tables(uses_edge_prefilter(m.settings, m.software));
     const FrameBatches batches = m.prepare(frame, meshes, cam);
     m.choose_line_method(batches, style, style_needs_edge_buffer);
     const std::vector<FramePass> list = frame_passes(style, m.frame_settings);
@@ -354,6 +356,7 @@ std::vector<std::uint8_t> Renderer::render_mask(const scene::FrameList& frame,
     const CameraMatrices cam = m.camera(frame);
     const StyleDef& style = m.style_of(frame);
     m.gpu_meshes.set_edge_lists(mask_needs_edge_buffer(style, m.settings));
+    m.gpu_meshes.set_edge_facing_tables(uses_edge_prefilter(m.settings, m.software));
     const FrameBatches batches = m.prepare(frame, meshes, cam);
     m.choose_line_method(batches, style, mask_needs_edge_buffer);
     const std::vector<FramePass> list = mask_passes(style, m.frame_settings);

@@ -17,7 +17,6 @@ enum class DepthFormat {
 
 enum class BloomResolution { full = 1, half = 2, quarter = 4 };
 
-// How feature lines are found.
 // Who rasterises the depth prepass's small triangles (render/lines/prepass_raster.h).
 enum class PrepassRaster {
     automatic,  // compute on a software rasteriser where the frame has enough triangles
@@ -25,6 +24,15 @@ enum class PrepassRaster {
     compute,    // small clusters in a compute shader wherever the depth format allows it
 };
 
+// Who rules out, before edges.comp classifies them, the edges of the kept clusters that
+// cannot be feature edges (render/lines/edge_prefilter.h). The same lines either way.
+enum class EdgePrefilter {
+    automatic,  // the CPU on a software rasteriser, where the shader's every branch runs
+    gpu,        // none: edges.comp tests every edge of the kept clusters
+    cpu,        // the CPU tests them first and lists only those that may be feature edges
+};
+
+// How feature lines are found.
 enum class LineMethod {
     geometry_shader,  // a geometry shader per triangle on triangle adjacency (pass_lines.cpp)
     compute,          // a compute shader per unique edge fills the edge buffer, then one quad per
@@ -166,6 +174,7 @@ struct RenderSettings {
     // GL pipeline would set up each triangle on one (llvmpipe). The same depth at every pixel
     // centre up to float rounding; automatic chooses it on software rasterisers only.
     PrepassRaster prepass_raster = PrepassRaster::automatic;
+    EdgePrefilter edge_prefilter = EdgePrefilter::automatic;
     bool lod = true;           // raise the crease threshold / use simplified meshes far away
     bool count_edges = false;  // count emitted feature edges (costs a query per frame)
     LineMethod method = kDefaultLineMethod;

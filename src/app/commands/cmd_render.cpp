@@ -47,9 +47,12 @@ void print_timings(const render::Renderer& r,
     if (c.clusters > 0) {
         std::fprintf(stdout,
                      "edge clusters %zu: %zu outside the view, %zu facing away, %zu one way, "
-                     "%zu hidden by the prepass; edges tested %zu of %zu\n",
+                     "%zu hidden by the prepass; edges tested %zu of %zu",
                      c.clusters, c.outside_frustum, c.facing_away, c.one_way,
                      r.hiz_hidden_clusters(), c.edges_dispatched, c.edges);
+        if (c.edges_prefiltered > 0)
+            std::fprintf(stdout, " (of %zu the CPU tested first)", c.edges_prefiltered);
+        std::fprintf(stdout, "\n");
     }
     const render::TriangleCullStats& t = s.triangle_culling;
     if (t.clusters > 0) {
@@ -126,6 +129,7 @@ int cmd_render(Args args) {
     settings.cluster_culling = o.cluster_culling;
     settings.hiz_culling = o.hiz_culling;
     settings.prepass_raster = o.prepass_raster;
+    settings.edge_prefilter = o.edge_prefilter;
     settings.material_lines = o.material_lines;
     settings.intersection_lines = o.intersection_lines;
     // A one-off frame measures nothing: it uses the machine's kept crossing, if any.

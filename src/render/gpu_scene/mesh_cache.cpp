@@ -47,8 +47,9 @@ const GpuMesh& MeshCache::get(const scene::MeshLibrary& library, scene::MeshId i
         upload(*slot.full, library.mesh(id));
         slot.full->version = version;
     }
-    // A mesh uploaded before the compute line method was chosen gets its edge list now.
-    if (edge_lists_ && !slot.full->has_edge_list) upload_edges(*slot.full, library.mesh(id));
+    // A mesh uploaded before the compute line method (or the prefilter) was chosen gets its
+    // edge list (and facing table) now.
+    if (lacks_edges(*slot.full)) upload_edges(*slot.full, library.mesh(id));
     if (lod <= 0) return *slot.full;
     if (!slot.simplify_tried) {
         slot.simplify_tried = true;
@@ -58,7 +59,7 @@ const GpuMesh& MeshCache::get(const scene::MeshLibrary& library, scene::MeshId i
             slot.simplified->version = version;
         }
     }
-    if (slot.simplified && edge_lists_ && !slot.simplified->has_edge_list) {
+    if (slot.simplified && lacks_edges(*slot.simplified)) {
         if (auto reduced = geo::simplify_line_mesh(library.mesh(id)))
             upload_edges(*slot.simplified, *reduced);
     }
@@ -69,14 +70,26 @@ void MeshCache::set_edge_lists(bool on) {
     edge_lists_ = on;
 }
 
+void MeshCache::set_edge_facing_tables(bool on) {
+    edge_facing_tables_ = on;
+}
+
+bool MeshCache::lacks_edges(const GpuMesh& gpu) const {
+    return edge_lists_ && (!gpu.has_edge_list || (edge_facing_tables_ && !gpu.has_edge_facing));
+}
+
 void MeshCache::upload_edges(GpuMesh& gpu, const geo::AdjacencyMesh& mesh) {
     gpu.edge_clusters = geo::cluster_edges(mesh, geo::build_edge_list(mesh));
     std::vector<geo::MeshEdge>& edges = gpu.edge_clusters.edges;
     gpu.edge_list.set(std::span<const geo::MeshEdge>(edges), GL_STATIC_DRAW);
     gpu.edge_count = static_cast<GLuint>(edges.size());
-    edges = {};
     const std::vector<glm::vec4> normals = geo::face_normals(mesh);
     gpu.face_normals.set(std::span<const glm::vec4>(normals), GL_STATIC_DRAW);
+    if (edge_facing_tables_) {
+        gpu.edge_facing = build_edge_facing_table(mesh, gpu.edge_clusters, normals);
+        gpu.has_edge_facing = true;
+    }
+    edges = {};
     gpu.has_edge_list = true;
 }
 

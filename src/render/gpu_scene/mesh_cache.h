@@ -13,6 +13,7 @@
 #include "geometry/derived/triangle_clusters.h"
 #include "gl/buffer.h"
 #include "gl/vertex_array.h"
+#include "render/lines/edge_prefilter.h"
 #include "scene/mesh_library.h"
 
 namespace bz::render {
@@ -40,6 +41,8 @@ struct GpuMesh {
     // The clusters' bounds and crease keys, for culling on the CPU each frame
     // (render/lines/edge_culling.h); `edges` is emptied once uploaded.
     geo::ClusteredEdges edge_clusters;
+    // With the CPU edge prefilter (MeshCache::set_edge_facing_tables): what it tests per edge.
+    EdgeFacingTable edge_facing;
     gl::Buffer adjacency;
     // The triangle list cluster by cluster (geo::cluster_triangles), for the prepass and the
     // fills, and the clusters' bounds, for culling them on the CPU each frame.
@@ -56,7 +59,8 @@ struct GpuMesh {
     // the mesh has none (has_material_edges false: the shader is told not to read it).
     gl::Buffer edge_materials;
     bool has_material_edges = false;
-    bool has_edge_list = false;  // edge_list is filled (uploaded on first use with edge lists on)
+    bool has_edge_list = false;    // edge_list is filled (uploaded on first use with edge lists on)
+    bool has_edge_facing = false;  // edge_facing is built (it may be empty: a mesh without edges)
     gl::VertexArray lines_vao;
     gl::VertexArray prepass_vao;
     gl::VertexArray fill_vao;  // triangles with normals, colour and parameters
@@ -78,6 +82,8 @@ class MeshCache {
     // Build each mesh's edge list too (the compute line method); meshes uploaded without one
     // get it on their next use (not counted as an upload).
     void set_edge_lists(bool on);
+    // Build each edge list's facing table too (the CPU edge prefilter, lines/edge_prefilter.h).
+    void set_edge_facing_tables(bool on);
     // GPU meshes uploaded so far (each model once, plus its simplified version if used).
     std::size_t uploads() const { return uploads_; }
 
@@ -89,10 +95,12 @@ class MeshCache {
     };
     void upload(GpuMesh& gpu, const geo::AdjacencyMesh& mesh);
     void upload_edges(GpuMesh& gpu, const geo::AdjacencyMesh& mesh);
+    bool lacks_edges(const GpuMesh& gpu) const;
     const gl::Buffer* instances_;
     std::vector<Slot> meshes_;
     std::size_t uploads_ = 0;
     bool edge_lists_ = false;
+    bool edge_facing_tables_ = false;
 };
 
 }  // namespace bz::render

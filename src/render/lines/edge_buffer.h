@@ -81,6 +81,12 @@ static_assert(offsetof(EdgeRecord, ids) == 144,
 // atomically adding kVerticesPerEdge to vertex_count, so the count needs no fix-up pass:
 // edges appended = vertex_count / kVerticesPerEdge (capped at the buffer's capacity).
 // After it, the spine-sample append counter.
+struct DrawArraysCommand {
+    std::uint32_t count = 0;
+    std::uint32_t instance_count = 1;
+    std::uint32_t first = 0;
+    std::uint32_t base_instance = 0;
+};
 struct EdgeDrawCommand {
     std::uint32_t vertex_count = 0;
     std::uint32_t instance_count = 1;
@@ -88,7 +94,15 @@ struct EdgeDrawCommand {
     std::uint32_t base_instance = 0;
     std::uint32_t samples_used = 0;  // spine samples asked for, including any past capacity
     std::uint32_t hidden_items = 0;  // work items hierarchical-Z culling skipped (hiz_culling.h)
+    // Written by spine_visibility.comp, read as the quad pass's two indirect draws: the
+    // records with spine samples (the frame's samples fit) and those whose fragments run the
+    // spine test (they did not); one of the two draws nothing (pass_edge_quads.cpp).
+    DrawArraysCommand sampled_draw;
+    DrawArraysCommand tested_draw;
 };
+static_assert(offsetof(EdgeDrawCommand, sampled_draw) == 24 &&
+                  offsetof(EdgeDrawCommand, tested_draw) == 40,
+              "must match shaders/lines/edge_record.glsl (EDGE_COMMAND_MEMBERS)");
 inline constexpr std::uint32_t kVerticesPerEdge = 6;  // two triangles per quad
 
 // Binding points of the edge-extraction and quad programs (shaders/lines/edge_record.glsl).

@@ -1,5 +1,7 @@
 #include "render/lines/edge_culling.h"
 
+#include <algorithm>
+
 namespace bz::render {
 
 namespace {
@@ -12,12 +14,18 @@ constexpr double kGuard = 2.0;
 void append_edge_work(const geo::ClusteredEdges& clusters, const glm::mat4& model_view,
                       float cos_crease, bool skip_back_faces, const CullView& view,
                       std::uint32_t instance, std::vector<EdgeWorkItem>& work, EdgeCullStats& stats,
-                      const HizView* hiz, std::vector<HizBounds>* bounds) {
+                      const EdgeWorkOptions& options) {
+    const HizView* hiz = options.hiz;
+    std::vector<HizBounds>* bounds = options.bounds;
+    const EdgeFacingTable* prefilter = options.prefilter;
     const ViewVolume guard(view.proj, view.near, view.far, kGuard);
     const InstanceClusters instance_view(model_view);
     // An instance wholly inside the view needs no test per cluster.
     const bool inside = instance_view.inside(clusters.all, guard);
-    for (const geo::EdgeCluster& k : clusters.clusters) {
+    const glm::vec3 eye(object_space_eye(model_view));  // as edges.comp gets it
+    const std::size_t end = std::min(options.end_cluster, clusters.clusters.size());
+    for (std::size_t i = options.first_cluster; i < end; ++i) {
+        const geo::EdgeCluster& k = clusters.clusters[i];
         ++stats.clusters;
         stats.edges += k.count;
         if (k.candidates == 0) continue;  // flat edges only: never a feature edge
@@ -41,9 +49,22 @@ void append_edge_work(const geo::ClusteredEdges& clusters, const glm::mat4& mode
                 break;
         }
         if (count == 0) continue;
+        const auto bounds_index = static_cast<std::uint32_t>(bounds ? bounds->size() : 0);
+        if (prefilter) {
+            stats.edges_prefiltered += count;
+            std::uint32_t listed = 0;
+            for (std::uint32_t e = k.first; e < k.first + count; ++e) {
+                if (!may_be_feature(*prefilter, e, eye, cos_crease)) continue;
+                work.push_back(EdgeWorkItem(instance, e, bounds_index, listed == 0 ? 1u : 0u));
+                ++listed;
+            }
+            if (listed == 0) continue;
+            count = listed;
+        } else {
+            work.push_back(EdgeWorkItem(instance, k.first, count, 0u));
+        }
         stats.edges_dispatched += count;
         ++stats.items;
-        work.push_back(EdgeWorkItem(instance, k.first, count, 0u));
         if (hiz && bounds) {
             const ViewSphere sphere = instance_view.view_sphere(k);
             bounds->push_back(hiz_bounds(*hiz, glm::vec3(sphere.center),

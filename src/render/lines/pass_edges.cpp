@@ -6,6 +6,7 @@
 #include "render/gpu_scene/batches.h"
 #include "render/gpu_scene/cluster_culling.h"
 #include "render/lines/edge_culling.h"
+#include "render/lines/edge_prefilter.h"
 #include "render/lines/hiz_culling.h"
 #include "render/passes.h"
 
@@ -23,12 +24,16 @@ bool skips_back_faces(const PassContext& ctx, const Batch& b, const GpuMesh& mes
 // and grown when a frame appends more (EdgeStorage::keep_count).
 constexpr std::size_t kInitialRecords = std::size_t{1} << 16;
 constexpr GLuint kMaxGroups = 65535;  // the smallest GL_MAX_COMPUTE_WORK_GROUP_COUNT allowed
+// A big instance's clusters are culled (and prefiltered) by several threads, this many a job.
+constexpr std::size_t kClustersPerJob = 1024;
 
 }  // namespace
 
 // Edge extraction for LineMethod::compute: the CPU culls each instance's edge clusters
 // (edge_culling.h) into work items, then one dispatch per batch runs one work group per item
-// (edges.comp), appending the visible feature edges to the edge buffer.
+// (edges.comp), appending the visible feature edges to the edge buffer. With the CPU
+// prefilter (edge_prefilter.h, software rasterisers) the items' edges that may be feature
+// edges are listed instead, EDGE_GROUP_SIZE to a group.
 void pass_edges(const PassContext& ctx) {
     // The work buffer: every instance's object-space eye first, then the batches' items.
     const std::vector<InstanceData>& instances = ctx.batches.instances;
@@ -40,18 +45,23 @@ void pass_edges(const PassContext& ctx) {
     // Hierarchical-Z: the depth tiles pass ran before this one and found the frame worth it.
     const bool hiz = frame_wrote(ctx, Resource::depth_tiles) && hiz_culls(ctx);
     const HizView hiz_view(ctx.cam.proj, ctx.cam.near, ctx.targets.width, ctx.targets.height);
+    // On a software rasteriser the CPU lists the edges that may be feature edges
+    // (edge_prefilter.h).
+    const bool listed = uses_edge_prefilter(ctx.settings, ctx.software_rasteriser);
     EdgeCullStats cull;
     struct Dispatch {
         const Batch* batch;
         const GpuMesh* mesh;
         std::size_t first, count;  // its items in `work`
     };
-    // One job per instance; the meshes are fetched (and uploaded) here, on the GL thread.
+    // One job per instance, or per stretch of a big instance's clusters; the meshes are
+    // fetched (and uploaded) here, on the GL thread.
     struct Job {
         std::size_t dispatch;  // its batch's entry in `dispatches`
         const GpuMesh* mesh;
         GLuint instance;
         bool skip_back_faces;
+        std::size_t first_cluster, end_cluster;
     };
     std::vector<Dispatch> dispatches;
     std::vector<Job> jobs;
@@ -60,11 +70,16 @@ void pass_edges(const PassContext& ctx) {
         const GpuMesh& mesh = ctx.gpu_meshes.get(ctx.meshes, b.mesh, b.lod);
         if (mesh.edge_count == 0) continue;
         const bool skip_back_faces = skips_back_faces(ctx, b, mesh);
-        for (GLsizei i = 0; i < b.instance_count; ++i)
-            jobs.push_back({.dispatch = dispatches.size(),
-                            .mesh = &mesh,
-                            .instance = b.first_instance + static_cast<GLuint>(i),
-                            .skip_back_faces = skip_back_faces});
+        const std::size_t n = mesh.edge_clusters.clusters.size();
+        for (GLsizei i = 0; i < b.instance_count; ++i) {
+            for (std::size_t first = 0; first < n; first += kClustersPerJob)
+                jobs.push_back({.dispatch = dispatches.size(),
+                                .mesh = &mesh,
+                                .instance = b.first_instance + static_cast<GLuint>(i),
+                                .skip_back_faces = skip_back_faces,
+                                .first_cluster = first,
+                                .end_cluster = std::min(n, first + kClustersPerJob)});
+        }
         clusters += mesh.edge_clusters.clusters.size() * static_cast<std::size_t>(b.instance_count);
         dispatches.push_back({.batch = &b, .mesh = &mesh, .first = 0, .count = 0});
     }
@@ -81,11 +96,21 @@ void pass_edges(const PassContext& ctx) {
         const std::size_t before = chunk_work[c].size();
         append_edge_work(job.mesh->edge_clusters, instances[job.instance].model_view,
                          instances[job.instance].params.x, job.skip_back_faces, view, job.instance,
-                         chunk_work[c], chunk_stats[c], hiz ? &hiz_view : nullptr,
-                         &chunk_bounds[c]);
+                         chunk_work[c], chunk_stats[c],
+                         {.hiz = hiz ? &hiz_view : nullptr,
+                          .bounds = &chunk_bounds[c],
+                          .prefilter = listed ? &job.mesh->edge_facing : nullptr,
+                          .first_cluster = job.first_cluster,
+                          .end_cluster = job.end_cluster});
         job_items[j] = chunk_work[c].size() - before;
     });
+    // Listed entries name their bounds record by its place among the chunk's; the records
+    // follow one (unread) per eye, as an item's record sits where the item sits.
+    auto bounds_before = static_cast<std::uint32_t>(instances.size());
     for (std::size_t c = 0; c < chunks; ++c) {
+        if (listed)
+            for (EdgeWorkItem& entry : chunk_work[c]) entry.z += bounds_before;
+        bounds_before += static_cast<std::uint32_t>(chunk_bounds[c].size());
         work.insert(work.end(), chunk_work[c].begin(), chunk_work[c].end());
         cull += chunk_stats[c];
     }
@@ -124,7 +149,7 @@ void pass_edges(const PassContext& ctx) {
     }
     ctx.edges.set_work(work);
 
-    const gl::Program& program = ctx.programs.edges;
+    const gl::Program& program = listed ? ctx.programs.edges_listed : ctx.programs.edges;
     program.use();
     program.set("u_proj", ctx.cam.proj);
     program.set("u_viewport", glm::vec2(static_cast<float>(ctx.targets.width),
@@ -155,6 +180,8 @@ void pass_edges(const PassContext& ctx) {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEdgeCommandBinding, ctx.edges.command().id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSpineSpansBinding, ctx.edges.spans().id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEdgeWorkBinding, ctx.edges.work().id());
+    // A group takes one item, or EDGE_GROUP_SIZE listed entries.
+    const std::size_t per_group = listed ? edge_group_size(ctx.software_rasteriser) : 1;
     for (const Dispatch& d : dispatches) {
         const Batch& b = *d.batch;
         const GpuMesh& mesh = *d.mesh;
@@ -165,12 +192,13 @@ void pass_edges(const PassContext& ctx) {
         program.set("u_skip_back_faces", skips_back_faces(ctx, b, mesh) ? 1 : 0);
         program.set("u_mesh_id", static_cast<unsigned>(b.mesh));
         program.set("u_material_lines", material_lines_for(ctx.settings, b, mesh) ? 1 : 0);
+        program.set("u_work_end", static_cast<GLuint>(d.first + d.count));
         // Chunks keep the work-group count within the limit every implementation allows.
-        for (std::size_t item0 = 0; item0 < d.count; item0 += kMaxGroups) {
-            const auto groups =
-                static_cast<GLuint>(std::min<std::size_t>(kMaxGroups, d.count - item0));
+        const std::size_t chunk = kMaxGroups * per_group;
+        for (std::size_t item0 = 0; item0 < d.count; item0 += chunk) {
+            const std::size_t items = std::min(chunk, d.count - item0);
             program.set("u_work_base", static_cast<GLuint>(d.first + item0));
-            glDispatchCompute(groups, 1, 1);
+            glDispatchCompute(static_cast<GLuint>((items + per_group - 1) / per_group), 1, 1);
         }
     }
     append_intersections(ctx, samples);

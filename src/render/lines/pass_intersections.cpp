@@ -42,7 +42,8 @@ void pass_intersection_edges(const PassContext& ctx) {
 
 void pass_intersection_quads(const PassContext& ctx, bool mask_mode) {
     if (ctx.intersection_count == 0) return;
-    const gl::Program& program = mask_mode ? ctx.programs.edge_quads_mask : ctx.programs.edge_quads;
+    const gl::Program& program =
+        mask_mode ? ctx.programs.edge_quads_mask.tested : ctx.programs.edge_quads.tested;
     begin_line_target(ctx, program, mask_mode, false);
     draw_edge_record_quads(ctx, program, 0u);  // no spine samples: the fragments test
 }

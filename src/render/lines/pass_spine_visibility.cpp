@@ -47,8 +47,9 @@ void pass_spine_visibility(const PassContext& ctx) {
     glDispatchCompute(static_cast<GLuint>(std::clamp<std::size_t>(
                           previous / 2, kMinVisibilityGroups, kMaxVisibilityGroups)),
                       1, 1);
-    // The quad pass reads the samples in its fragments and the spans in its vertices.
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    // The quad pass reads the samples in its fragments, the spans in its vertices and its two
+    // draws' counts as indirect commands.
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
 }
 
 }  // namespace bz::render

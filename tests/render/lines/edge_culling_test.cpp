@@ -7,6 +7,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "geometry/derived/edge_list.h"
 #include "geometry/generated/primitives.h"
 #include "geometry/generated/subdivide.h"
 #include "geometry/line_mesh/line_mesh.h"
@@ -65,6 +66,26 @@ CulledEdges cull_edges(const EdgeScene& s, const glm::mat4& mv, float cos_crease
         EXPECT_LE(w.z, geo::kMaxClusterEdges);
         for (std::uint32_t i = w.y; i < w.y + w.z; ++i) out.dispatched[i] = true;
     }
+    return out;
+}
+
+// The same with the CPU prefilter (edge_prefilter.h): the edges it lists, one entry each.
+CulledEdges list_edges(const EdgeScene& s, const glm::mat4& mv, float cos_crease,
+                       bool skip_back_faces, const CullView& v = view_of()) {
+    const EdgeFacingTable table =
+        build_edge_facing_table(s.mesh, s.clusters, geo::face_normals(s.mesh));
+    CulledEdges out;
+    std::vector<EdgeWorkItem> work;
+    append_edge_work(s.clusters, mv, cos_crease, skip_back_faces, v, 7u, work, out.stats,
+                     {.prefilter = &table});
+    out.dispatched.assign(s.clusters.edges.size(), false);
+    for (const EdgeWorkItem& w : work) {
+        EXPECT_EQ(w.x, 7u);
+        EXPECT_LT(w.y, s.clusters.edges.size());
+        EXPECT_FALSE(out.dispatched[w.y]) << "edge " << w.y << " listed twice";
+        out.dispatched[w.y] = true;
+    }
+    EXPECT_EQ(work.size(), out.stats.edges_dispatched);
     return out;
 }
 
@@ -168,6 +189,89 @@ TEST(EdgeCulling, ClustersBeyondTheGuardBandAreDroppedAndTheEdgeOnesKept) {
             EXPECT_TRUE(beyond) << "boundary edge " << e.id << " dropped inside the guard band";
         }
     }
+}
+
+// The CPU prefilter may only ever list more than edges.comp draws: every feature edge (the
+// shader's tests in double, above) is listed, from views chosen to put faces near grazing,
+// and it lists little besides.
+TEST(EdgePrefilter, ListsEverySpheresSilhouetteEdgeAndLittleElse) {
+    const EdgeScene s(geo::uv_sphere(1.0f, 96, 192));
+    for (const glm::vec3 eye : {glm::vec3(0, 0, 4), glm::vec3(3, 2, 1), glm::vec3(0, 5, 0.01f),
+                                glm::vec3(-1.3f, -1.1f, 0.9f), glm::vec3(0, 1.05f, 0)}) {
+        // (Nearer the surface the float eye - vertex of the shader, and of the prefilter,
+        // loses digits the double reference here keeps: edge_prefilter_test.cpp compares the
+        // prefilter with the shader itself there.) A wide view, so that from 1.05 the whole
+        // silhouette lies inside the guard band.
+        const glm::mat4 mv = glm::lookAt(eye, glm::vec3(0.0f), glm::vec3(0, 0.6f, 0.8f));
+        const CullView wide = view_of(150.0f);
+        for (const bool skip : {true, false}) {
+            const std::string where = "eye " + std::to_string(eye.x) + "," + std::to_string(eye.y) +
+                                      "," + std::to_string(eye.z) +
+                                      (skip ? " skipping back faces" : "");
+            SCOPED_TRACE(where);
+            const CulledEdges clusters = cull_edges(s, mv, -2.0f, skip, wide);
+            const CulledEdges c = list_edges(s, mv, -2.0f, skip, wide);
+            const std::size_t silhouette = expect_features_kept(s, mv, -2.0f, skip, c);
+            EXPECT_EQ(c.stats.edges_prefiltered, clusters.stats.edges_dispatched) << where;
+            // Only the edges near the silhouette are unsure: a few times the loop at most.
+            EXPECT_LE(c.stats.edges_dispatched, 3 * silhouette + 16) << where;
+            EXPECT_LT(c.stats.edges_dispatched * 4, clusters.stats.edges_dispatched) << where;
+        }
+    }
+}
+
+TEST(EdgePrefilter, AMirroredAndStretchedInstanceKeepsItsSilhouette) {
+    const EdgeScene s(geo::uv_sphere(1.0f, 48, 96));
+    const glm::mat4 mv = glm::lookAt(glm::vec3(2, 1, 3), glm::vec3(0.0f), glm::vec3(0, 1, 0)) *
+                         glm::scale(glm::mat4(1.0f), glm::vec3(-1.0f, 1.0f, 2.0f));
+    const CulledEdges c = list_edges(s, mv, -2.0f, false);
+    EXPECT_GE(expect_features_kept(s, mv, -2.0f, false, c), 48u);
+}
+
+TEST(EdgePrefilter, CreasesAndTheRimOfAnOpenSheetAreListedFromBothSidesAndEdgeOn) {
+    const EdgeScene box(geo::subdivide_flat(geo::build_line_mesh(geo::box(glm::vec3(1.0f))), 2));
+    const glm::mat4 corner = glm::lookAt(glm::vec3(4, 3, 5), glm::vec3(0.0f), glm::vec3(0, 1, 0));
+    for (const bool skip : {true, false}) {
+        const CulledEdges c = list_edges(box, corner, 0.5f, skip);
+        EXPECT_GT(expect_features_kept(box, corner, 0.5f, skip, c), 0u);
+    }
+    const EdgeScene sheet(geo::grid(40, 40, 0.1f, 40));
+    // Above, below, and with the eye in the sheet's plane, where every face is a tie that the
+    // shader decides in view space: then everything is listed.
+    for (const glm::vec3 eye :
+         {glm::vec3(0.5f, 3, 2), glm::vec3(0.5f, -3, 2), glm::vec3(0, 0, 5)}) {
+        const glm::mat4 mv = glm::lookAt(eye, glm::vec3(0.0f), glm::vec3(0, 1, 0.01f));
+        const CulledEdges clusters = cull_edges(sheet, mv, -2.0f, false);
+        const CulledEdges c = list_edges(sheet, mv, -2.0f, false);
+        expect_features_kept(sheet, mv, -2.0f, false, c);
+        if (eye.y == 0.0f)
+            EXPECT_EQ(c.stats.edges_dispatched, clusters.stats.edges_dispatched) << "edge-on";
+        else
+            EXPECT_EQ(c.stats.edges_dispatched, 160u) << "the rim alone";
+    }
+}
+
+TEST(EdgePrefilter, ListedEntriesNameTheirClustersBoundsRecordAndFirstEdge) {
+    const EdgeScene s(geo::uv_sphere(1.0f, 48, 96));
+    const glm::mat4 mv = glm::lookAt(glm::vec3(0, 0, 4), glm::vec3(0.0f), glm::vec3(0, 1, 0));
+    const EdgeFacingTable table =
+        build_edge_facing_table(s.mesh, s.clusters, geo::face_normals(s.mesh));
+    const HizView hiz(view_of().proj, 0.1f, 640, 480);
+    std::vector<EdgeWorkItem> work;
+    std::vector<HizBounds> bounds;
+    EdgeCullStats stats;
+    append_edge_work(s.clusters, mv, -2.0f, true, view_of(), 3u, work, stats,
+                     {.hiz = &hiz, .bounds = &bounds, .prefilter = &table});
+    ASSERT_FALSE(work.empty());
+    EXPECT_EQ(bounds.size(), stats.items);  // one record per cluster with a listed edge
+    std::size_t firsts = 0;
+    for (std::size_t i = 0; i < work.size(); ++i) {
+        EXPECT_LT(work[i].z, bounds.size());
+        const bool first = i == 0 || work[i].z != work[i - 1].z;
+        EXPECT_EQ(work[i].w, first ? 1u : 0u) << "entry " << i;
+        firsts += first;
+    }
+    EXPECT_EQ(firsts, bounds.size());
 }
 
 TEST(EdgeCulling, ObjectSpaceEyeAndSign) {
