@@ -66,31 +66,29 @@ bool sample_visible(ivec2 t, vec2 spine_px, float line_inv, EdgeFaces e) {
     vec3 f = dot(e.edge_plane, r) >= 0.0 ? e.face_pos : e.face_neg;
     float want = dot(f, r);
     float stored = stored_inv_depth(t);
-    if (!(want > line_inv * 0.25)) {
-        // No face on that side (a silhouette's outside, a boundary), or a plane seen so
-        // edge-on that its depth could be anywhere: compare with the spine's own depth. What
-        // the texel holds is carried back to the spine point along its own slope first, so a
-        // surface just beyond the edge counts by its depth at the edge, not a pixel away: a
-        // thin roof over a rafter's flank hides it, a floor sloping away behind a silhouette
-        // does not.
-        float at_spine = stored_inv_depth_at(t, spine_px, stored);
-        return at_spine <= line_inv + line_inv * (u_tol_rel + u_fallback_rel) + u_tol_abs;
+    // No face on that side (a silhouette's outside, a boundary), or a plane seen so edge-on
+    // that its depth could be anywhere: compared with the spine's own depth below.
+    if (want > line_inv * 0.25) {
+        // d(1/v)/d(pixel) of the plane. The rasterisation allowance grows with the slope,
+        // but never past the relative bias: a steep face must not see through a thin surface
+        // in front of it.
+        vec2 grad = f.xy * u_ray.xy;
+        float raster = min((abs(grad.x) + abs(grad.y)) * u_tol_px, want * u_fallback_rel);
+        float tol = want * u_tol_rel + u_tol_abs + raster;
+        if (stored > want + tol) return false;
+        // The texel holds this plane (or something behind it that the plane does not rise
+        // past the spine to reach): visible.
+        if (stored >= want - tol || want <= line_inv + line_inv * u_fallback_rel) return true;
+        // Else the texel holds something well behind the plane, and the plane rises toward
+        // the eye between the spine and the texel centre: it may be extrapolated past the
+        // face's far side (a rafter's flank narrower than that distance, rising through the
+        // roof it lies under).
     }
-    // d(1/v)/d(pixel) of the plane. The rasterisation allowance grows with the slope, but
-    // never past the relative bias: a steep face must not see through a thin surface in front
-    // of it.
-    vec2 grad = f.xy * u_ray.xy;
-    float raster = min((abs(grad.x) + abs(grad.y)) * u_tol_px, want * u_fallback_rel);
-    float tol = want * u_tol_rel + u_tol_abs + raster;
-    if (stored > want + tol) return false;
-    // The texel holds this plane (or something behind it that the plane does not rise past
-    // the spine to reach): visible.
-    if (stored >= want - tol || want <= line_inv + line_inv * u_fallback_rel) return true;
-    // The texel holds something well behind the plane, and the plane rises toward the eye
-    // between the spine and the texel centre: it may be extrapolated past the face's far side
-    // (a rafter's flank narrower than that distance, rising through the roof it lies under).
-    // Then ask whether what the texel holds, carried back to the spine point, lies in front
-    // of the spine.
+    // What the texel holds, carried back to the spine point along its own slope, against the
+    // spine: so a surface just beyond the edge counts by its depth at the edge, not a pixel
+    // away (a thin roof over a rafter's flank hides it, a floor sloping away behind a
+    // silhouette does not). One place for both cases: llvmpipe runs every branch's code for
+    // every sample, so each copy of these four fetches cost it whether taken or not.
     return stored_inv_depth_at(t, spine_px, stored) <=
            line_inv + line_inv * (u_tol_rel + u_fallback_rel) + u_tol_abs;
 }
