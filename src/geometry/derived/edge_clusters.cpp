@@ -138,6 +138,24 @@ ClusteredEdges cluster_edges(const AdjacencyMesh& mesh, std::span<const MeshEdge
             out.clusters.push_back(bound_cluster(mesh, normals, out, first, to - from));
         }
     }
+    for (std::size_t first = 0; first < out.clusters.size(); first += kClustersPerGroup) {
+        const std::size_t end = std::min(out.clusters.size(), first + kClustersPerGroup);
+        std::vector<std::uint32_t> vertices;
+        std::vector<std::optional<glm::dvec3>> group_normals;
+        EdgeClusterGroup group;
+        for (std::size_t c = first; c < end; ++c) {
+            const EdgeCluster& k = out.clusters[c];
+            for (std::uint32_t i = k.first; i < k.first + k.candidates; ++i) {
+                const MeshEdge& e = out.edges[i];
+                vertices.insert(vertices.end(), {e.a, e.b});
+                for (const std::uint32_t f : {e.face_a, e.face_b})
+                    if (f != kNoVertex) group_normals.push_back(normals[f]);
+                group.min_key = std::min(group.min_key, out.crease_keys[i]);
+            }
+        }
+        static_cast<ClusterBounds&>(group) = bound_faces(mesh, vertices, group_normals);
+        out.groups.push_back(group);
+    }
     std::vector<std::uint32_t> candidates;
     for (const EdgeCluster& k : out.clusters) {
         for (std::uint32_t i = k.first; i < k.first + k.candidates; ++i)

@@ -46,6 +46,18 @@ struct EdgeCluster : ClusterBounds {
     std::uint32_t candidates = 0;
 };
 
+// Consecutive clusters (meshlets grow outward, so neighbours lie near) bounded together: a
+// frame tests a group first and skips all its clusters when the group is outside the view,
+// faces away, or faces one way without a crease candidate below the threshold, so culling
+// costs per group where the silhouette is not (Sander et al.'s cone hierarchy, two levels).
+inline constexpr std::uint32_t kClustersPerGroup = 16;
+
+// Group g holds clusters [g * kClustersPerGroup, (g + 1) * kClustersPerGroup); its sphere and
+// cone bound its clusters' candidates and their faces.
+struct EdgeClusterGroup : ClusterBounds {
+    float min_key = kFlatKey;  // the lowest crease key of its candidates
+};
+
 struct ClusteredEdges {
     std::vector<MeshEdge> edges;  // every edge of the list, cluster by cluster
     // Per edge, what the crease test compares with the instance's cos(crease angle): the
@@ -54,6 +66,7 @@ struct ClusteredEdges {
     // 2 where the cosine is not a number. Ascending inside each cluster.
     std::vector<float> crease_keys;
     std::vector<EdgeCluster> clusters;
+    std::vector<EdgeClusterGroup> groups;
     ClusterBounds all;  // a sphere around every cluster's candidates (no cone)
 };
 

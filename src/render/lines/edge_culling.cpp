@@ -9,6 +9,30 @@ namespace {
 // The lateral guard band of shaders/lines/edge_geometry.glsl (kGuard): |x|, |y| <= 2 w.
 constexpr double kGuard = 2.0;
 
+enum class GroupVerdict {
+    test_clusters,  // its clusters are tested one by one
+    outside,        // every cluster outside the guard band
+    facing_away,    // every face away, and the frame skips back faces
+    one_way,        // every face one way, and no crease candidate below the threshold
+};
+
+GroupVerdict judge_group(const geo::EdgeClusterGroup& group, const InstanceClusters& instance,
+                         const ViewVolume& guard, bool inside, float cos_crease,
+                         bool skip_back_faces) {
+    if (!inside && instance.outside(group, guard)) return GroupVerdict::outside;
+    switch (instance.facing(group)) {
+        case ClusterFacing::mixed:
+            return GroupVerdict::test_clusters;
+        case ClusterFacing::all_back:
+            if (skip_back_faces) return GroupVerdict::facing_away;
+            break;
+        case ClusterFacing::all_front:
+            break;
+    }
+    // Its clusters' crease prefixes are all empty: crease_prefix counts keys below cos_crease.
+    return group.min_key < cos_crease ? GroupVerdict::test_clusters : GroupVerdict::one_way;
+}
+
 }  // namespace
 
 void append_edge_work(const geo::ClusteredEdges& clusters, const glm::mat4& model_view,
@@ -25,6 +49,39 @@ void append_edge_work(const geo::ClusteredEdges& clusters, const glm::mat4& mode
     const glm::vec3 eye(object_space_eye(model_view));  // as edges.comp gets it
     const std::size_t end = std::min(options.end_cluster, clusters.clusters.size());
     for (std::size_t i = options.first_cluster; i < end; ++i) {
+        // A group wholly in range is judged first; when that settles all its clusters, they
+        // are counted as their own tests would have counted them, and skipped.
+        const std::size_t g = i / geo::kClustersPerGroup;
+        const std::size_t group_end =
+            std::min(clusters.clusters.size(), (g + 1) * geo::kClustersPerGroup);
+        if (i % geo::kClustersPerGroup == 0 && g < clusters.groups.size() && group_end <= end) {
+            const GroupVerdict verdict = judge_group(clusters.groups[g], instance_view, guard,
+                                                     inside, cos_crease, skip_back_faces);
+            if (verdict != GroupVerdict::test_clusters) {
+                ++stats.groups_settled;
+                for (std::size_t c = i; c < group_end; ++c) {
+                    const geo::EdgeCluster& k = clusters.clusters[c];
+                    ++stats.clusters;
+                    stats.edges += k.count;
+                    if (k.candidates == 0) continue;
+                    switch (verdict) {
+                        case GroupVerdict::outside:
+                            ++stats.outside_frustum;
+                            break;
+                        case GroupVerdict::facing_away:
+                            ++stats.facing_away;
+                            break;
+                        case GroupVerdict::one_way:
+                            ++stats.one_way;
+                            break;
+                        case GroupVerdict::test_clusters:
+                            break;
+                    }
+                }
+                i = group_end - 1;
+                continue;
+            }
+        }
         const geo::EdgeCluster& k = clusters.clusters[i];
         ++stats.clusters;
         stats.edges += k.count;

@@ -45,6 +45,7 @@ struct EdgeCullStats {
     std::size_t edges = 0;              // edges of the clusters looked at
     std::size_t edges_dispatched = 0;   // edges given to edges.comp
     std::size_t edges_prefiltered = 0;  // of the clusters' edges, those the CPU tested first
+    std::size_t groups_settled = 0;     // cluster groups whose clusters needed no test of their own
     std::size_t items = 0;              // work items (clusters or their prefixes) given to it
     EdgeCullStats& operator+=(const EdgeCullStats& o) {
         clusters += o.clusters;
@@ -54,6 +55,7 @@ struct EdgeCullStats {
         edges += o.edges;
         edges_dispatched += o.edges_dispatched;
         edges_prefiltered += o.edges_prefiltered;
+        groups_settled += o.groups_settled;
         items += o.items;
         return *this;
     }

@@ -191,6 +191,37 @@ TEST(EdgeCulling, ClustersBeyondTheGuardBandAreDroppedAndTheEdgeOnesKept) {
     }
 }
 
+// Cluster groups (geo::EdgeClusterGroup) settle many of a sphere's clusters at once; what
+// they skip, the clusters' own tests would have skipped or found no feature in.
+TEST(EdgeCulling, GroupsSettleManyClustersAtOnceAndKeepEveryFeature) {
+    EdgeScene s(geo::uv_sphere(1.0f, 192, 384));
+    for (const glm::vec3 eye :
+         {glm::vec3(0, 0, 4), glm::vec3(3, 2, 1), glm::vec3(0.2f, 0.1f, 30)}) {
+        const glm::mat4 mv = glm::lookAt(eye, glm::vec3(0.0f), glm::vec3(0, 1, 0));
+        for (const bool skip : {true, false}) {
+            SCOPED_TRACE(std::to_string(eye.z) + (skip ? " skipping back faces" : ""));
+            const CulledEdges grouped = cull_edges(s, mv, -2.0f, skip);
+            // Over two fifths of the 230 groups, from every view (a third to nearly all).
+            EXPECT_GT(grouped.stats.groups_settled * 5, s.clusters.groups.size() * 2)
+                << s.clusters.groups.size() << " groups";
+            expect_features_kept(s, mv, -2.0f, skip, grouped);
+            EdgeScene ungrouped = s;
+            ungrouped.clusters.groups.clear();
+            const CulledEdges alone = cull_edges(ungrouped, mv, -2.0f, skip);
+            EXPECT_EQ(alone.stats.groups_settled, 0u);
+            EXPECT_EQ(grouped.stats.clusters, alone.stats.clusters);
+            EXPECT_LE(grouped.stats.edges_dispatched, alone.stats.edges_dispatched);
+            for (std::size_t i = 0; i < grouped.dispatched.size(); ++i)
+                EXPECT_TRUE(!grouped.dispatched[i] || alone.dispatched[i]) << "edge " << i;
+        }
+    }
+    // The sphere behind the eye: every group is outside the view.
+    const glm::mat4 away = glm::lookAt(glm::vec3(0, 0, 4), glm::vec3(0, 0, 8), glm::vec3(0, 1, 0));
+    const CulledEdges c = cull_edges(s, away, -2.0f, true);
+    EXPECT_EQ(c.stats.groups_settled, s.clusters.groups.size());
+    EXPECT_EQ(c.stats.edges_dispatched, 0u);
+}
+
 // The CPU prefilter may only ever list more than edges.comp draws: every feature edge (the
 // shader's tests in double, above) is listed, from views chosen to put faces near grazing,
 // and it lists little besides.
