@@ -63,6 +63,47 @@ TEST_F(ClusterCullingTest, AModelCutByTheFrustumAndSeenFromInside) {
     EXPECT_EQ(renderer->stats().triangle_culling.facing_away, 0u);
 }
 
+// One mesh of an open sheet and closed boxes (a hallway's panels around its pipes): the boxes'
+// clusters skip their back faces where the eye is outside their pieces' box, and the frame
+// stays the one the whole mesh, drawn two-sided, gives - from above, from under the sheet,
+// and from inside a box, whose own clusters must then keep both faces.
+TEST_F(ClusterCullingTest, ClosedPiecesOfAnOpenMeshSkipTheirBackFaces) {
+    settings.beam = render::beam_look("classic");
+    geo::TriMesh m = geo::grid(20, 20, 0.5f, 20);
+    const geo::TriMesh solid = geo::box(glm::vec3(0.6f));  // its creases show from inside too
+    for (int i = 0; i < 9; ++i) {
+        const auto base = static_cast<std::uint32_t>(m.positions.size());
+        const glm::vec3 at(float(i % 3) * 3.0f - 3.0f, 1.0f, float(i / 3) * 3.0f - 3.0f);
+        for (const glm::vec3& p : solid.positions) m.positions.push_back(p + at);
+        for (const std::uint32_t v : solid.indices) m.indices.push_back(base + v);
+    }
+    const scene::MeshId id = add_mesh("panels and boxes", m);
+    frame.items.clear();
+    add_item(id);
+    frame.camera.target = glm::dvec3(0.0, 0.5, 0.0);
+    struct View {
+        const char* what;
+        glm::dvec3 eye, target;
+    };
+    for (const View& v : {View{"above", {4.0, 6.0, 7.0}, {0.0, 0.5, 0.0}},
+                          View{"under the sheet", {1.0, -3.0, 6.0}, {0.0, 0.5, 0.0}},
+                          View{"inside a box", {0.05, 1.1, -0.1}, {3.0, 1.0, 3.0}}}) {
+        frame.camera.eye = v.eye;
+        frame.camera.target = v.target;
+        for (const scene::Style style : {scene::Style::vector, scene::Style::toon}) {
+            frame.style = style;
+            expect_same_frames(std::string(v.what) + " style " + std::to_string(int(style)));
+            const std::size_t one_sided = renderer->stats().triangle_culling.one_sided;
+            // From inside a box, culling its back faces would hide its inside and change the
+            // frame; its cluster (all nine boxes, 108 triangles) stays two-sided there.
+            if (v.eye.y > 1.6 || v.eye.y < 0.0)
+                EXPECT_GT(one_sided, 0u) << v.what;
+            else
+                EXPECT_EQ(one_sided, 0u) << v.what;
+        }
+    }
+}
+
 TEST_F(ClusterCullingTest, ManyInstancesCullOnSeveralThreadsAndDrawTheSameFrame) {
     // 160 spheres of 130 triangle clusters and about 380 edge clusters each: past the point
     // where culling runs on several threads (pass_prepass.cpp, pass_edges.cpp).

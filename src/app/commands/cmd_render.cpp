@@ -57,10 +57,10 @@ void print_timings(const render::Renderer& r,
     const render::TriangleCullStats& t = s.triangle_culling;
     if (t.clusters > 0) {
         std::fprintf(stdout,
-                     "triangle clusters %zu: %zu outside the view, %zu facing away; "
+                     "triangle clusters %zu: %zu outside the view, %zu facing away, %zu one-sided; "
                      "prepass triangles %zu of %zu (%zu of them rasterised by compute)\n",
-                     t.clusters, t.outside_frustum, t.facing_away, t.triangles_drawn, t.triangles,
-                     t.triangles_computed);
+                     t.clusters, t.outside_frustum, t.facing_away, t.one_sided, t.triangles_drawn,
+                     t.triangles, t.triangles_computed);
     }
 }
 

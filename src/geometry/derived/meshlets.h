@@ -4,6 +4,7 @@
 #include <meshoptimizer.h>
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "geometry/mesh.h"
@@ -28,5 +29,8 @@ inline constexpr float kMeshletConeWeight = 0.5f;
 // trades compact meshlets against tight normal cones. Deterministic; empty for an empty mesh.
 Meshlets build_meshlets(const AdjacencyMesh& mesh, std::size_t max_vertices,
                         std::size_t max_triangles, float cone_weight);
+// The same for the triangles `indices` lists (3 per triangle, into mesh.positions).
+Meshlets build_meshlets(const AdjacencyMesh& mesh, std::span<const std::uint32_t> indices,
+                        std::size_t max_vertices, std::size_t max_triangles, float cone_weight);
 
 }  // namespace bz::geo

@@ -19,6 +19,11 @@ struct TriangleCluster : ClusterBounds {
     // fallback).
     std::uint32_t first_vertex = 0;
     std::uint32_t vertex_count = 0;
+    // Every triangle lies in an outward-closed piece (closure.h: connected_pieces): from
+    // outside `closed_box`, the union of those pieces' boxes, its back faces are hidden by
+    // their own pieces and need not be drawn.
+    bool closed = false;
+    Bounds closed_box{};
 };
 
 // The most vertices a cluster's list holds (meshoptimizer's meshlet limit).

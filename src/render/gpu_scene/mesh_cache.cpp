@@ -1,5 +1,6 @@
 #include "render/gpu_scene/mesh_cache.h"
 
+#include <algorithm>
 #include <memory>
 
 #include "geometry/derived/closure.h"
@@ -106,6 +107,9 @@ void MeshCache::upload(GpuMesh& gpu, const geo::AdjacencyMesh& mesh) {
     gpu.triangle_clusters = std::move(clustered.clusters);
     gpu.triangle_bounds = clustered.all;
     gpu.outward_closed = geo::is_outward_closed(mesh);
+    gpu.has_closed_clusters =
+        std::any_of(gpu.triangle_clusters.begin(), gpu.triangle_clusters.end(),
+                    [](const geo::TriangleCluster& k) { return k.closed; });
     const std::vector<float> cosines = geo::edge_dihedral_cosines(mesh);
     gpu.edge_cosines.set(std::span<const float>(cosines), GL_STATIC_DRAW);
     const std::vector<std::uint32_t> material_bits = material_edge_bits(mesh);

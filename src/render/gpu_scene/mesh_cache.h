@@ -65,7 +65,8 @@ struct GpuMesh {
     gl::VertexArray prepass_vao;
     gl::VertexArray fill_vao;  // triangles with normals, colour and parameters
     std::uint32_t version = 0;
-    bool outward_closed = false;  // geo::is_outward_closed: back faces hidden from outside
+    bool outward_closed = false;       // geo::is_outward_closed: back faces hidden from outside
+    bool has_closed_clusters = false;  // some triangle cluster is of closed pieces only
     GLsizei adjacency_count = 0;
     GLsizei triangle_index_count = 0;
     std::size_t triangle_count() const {

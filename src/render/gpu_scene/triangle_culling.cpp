@@ -33,44 +33,63 @@ bool routed(RasterRoute& route, const InstanceClusters& instance_view,
     return true;
 }
 
+// Whether p lies outside the box by more than the rounding of the object-space eye.
+bool outside_box(const geo::Bounds& box, const glm::vec3& p) {
+    const glm::vec3 margin =
+        (box.max - box.min + glm::abs(box.min) + glm::abs(box.max) + glm::abs(p)) * 1e-5f;
+    return glm::any(glm::lessThan(p, box.min - margin)) ||
+           glm::any(glm::greaterThan(p, box.max + margin));
+}
+
 }  // namespace
 
 void append_triangle_draws(const std::vector<geo::TriangleCluster>& clusters,
                            const geo::ClusterBounds& all, const glm::mat4& model_view,
                            bool skip_back_faces, const ViewVolume& view, std::uint32_t instance,
                            std::vector<TriangleDraw>& draws, TriangleCullStats& stats,
-                           RasterRoute* route) {
+                           RasterRoute* route, std::vector<TriangleDraw>* one_sided) {
     const InstanceClusters instance_view(model_view);
     // An instance wholly inside the view needs no test per cluster.
     const bool inside = instance_view.inside(all, view);
-    bool extend = false;  // the last draw ends where this cluster begins
+    // Closed pieces' back faces may go where the batch keeps both faces, unless the instance
+    // mirrors (its front faces would then wind the other way on screen).
+    const glm::vec4 eye = object_space_eye(model_view);
+    const bool pieces = one_sided && !skip_back_faces && eye.w > 0.0f;
+    // The last draw of each list ends where this cluster begins.
+    bool extend = false, extend_one_sided = false;
     for (const geo::TriangleCluster& k : clusters) {
         ++stats.clusters;
         stats.triangles += k.index_count / 3;
+        const bool closed = pieces && k.closed && outside_box(k.closed_box, glm::vec3(eye));
         bool keep = true;
         if (!inside && instance_view.outside(k, view)) {
             ++stats.outside_frustum;
             keep = false;
-        } else if (skip_back_faces && instance_view.facing(k) == ClusterFacing::all_back) {
+        } else if ((skip_back_faces || closed) &&
+                   instance_view.facing(k) == ClusterFacing::all_back) {
             ++stats.facing_away;
             keep = false;
         }
         if (!keep) {
-            extend = false;
+            extend = extend_one_sided = false;
             continue;
         }
         stats.triangles_drawn += k.index_count / 3;
-        if (route && routed(*route, instance_view, k, skip_back_faces, instance)) {
+        if (route && routed(*route, instance_view, k, skip_back_faces || closed, instance)) {
             stats.triangles_computed += k.index_count / 3;
-            extend = false;
+            extend = extend_one_sided = false;
             continue;
         }
-        if (extend && draws.back().first_index + draws.back().count == k.first_index) {
-            draws.back().count += k.index_count;
+        std::vector<TriangleDraw>& list = closed ? *one_sided : draws;
+        bool& extends = closed ? extend_one_sided : extend;
+        if (closed) ++stats.one_sided;
+        if (extends && list.back().first_index + list.back().count == k.first_index) {
+            list.back().count += k.index_count;
         } else {
-            draws.push_back({k.index_count, 1, k.first_index, 0, instance});
-            extend = true;
+            list.push_back({k.index_count, 1, k.first_index, 0, instance});
+            extends = true;
         }
+        (closed ? extend : extend_one_sided) = false;
     }
 }
 

@@ -32,7 +32,10 @@ struct TriangleCullStats {
     std::size_t triangles_drawn = 0;  // triangles of the kept clusters
     // Of those, the triangles of clusters rasterised by the compute prepass (RasterRoute).
     std::size_t triangles_computed = 0;
+    std::size_t one_sided =
+        0;  // kept clusters drawn with back faces culled where the batch keeps both
     TriangleCullStats& operator+=(const TriangleCullStats& o) {
+        one_sided += o.one_sided;
         clusters += o.clusters;
         outside_frustum += o.outside_frustum;
         facing_away += o.facing_away;
@@ -78,11 +81,15 @@ struct RasterRoute {
 
 // Appends one draw per run of consecutive kept clusters of instance `instance`, or with a
 // `route`, one work item per small kept cluster to it and draws for the rest.
-// `all`: a sphere around all the clusters (ClusteredTriangles::all).
+// `all`: a sphere around all the clusters (ClusteredTriangles::all). With `one_sided`, a
+// cluster of outward-closed pieces seen from outside their box (geo::TriangleCluster::closed)
+// goes there instead of to `draws`, for a draw with back faces culled, and is dropped when it
+// faces away wholly, even where the batch keeps both faces.
 void append_triangle_draws(const std::vector<geo::TriangleCluster>& clusters,
                            const geo::ClusterBounds& all, const glm::mat4& model_view,
                            bool skip_back_faces, const ViewVolume& view, std::uint32_t instance,
                            std::vector<TriangleDraw>& draws, TriangleCullStats& stats,
-                           RasterRoute* route = nullptr);
+                           RasterRoute* route = nullptr,
+                           std::vector<TriangleDraw>* one_sided = nullptr);
 
 }  // namespace bz::render

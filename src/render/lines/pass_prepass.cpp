@@ -55,7 +55,8 @@ TriangleCullStats draw_batch_triangles(const PassContext& ctx, gl::PipelineState
     std::vector<TriangleDraw> draws;
     struct Range {
         std::size_t first = 0, count = 0;
-        bool whole = false;  // drawn whole, one instanced draw
+        std::size_t first_one_sided = 0, one_sided = 0;  // closed pieces' clusters, back culled
+        bool whole = false;                              // drawn whole, one instanced draw
     };
     std::vector<Range> ranges(ctx.batches.batches.size());
     // One job per instance; the meshes are fetched (and uploaded) here, on the GL thread.
@@ -75,7 +76,8 @@ TriangleCullStats draw_batch_triangles(const PassContext& ctx, gl::PipelineState
         const bool skip_back_faces = front_faces_only || (b.eye_outside && mesh.outward_closed);
         // Both faces drawn and every instance wholly in view: nothing can be dropped, so the
         // batch stays one instanced draw (unless the compute prepass may take its clusters).
-        if (!route && !skip_back_faces && all_inside(ctx, b, mesh, view)) {
+        if (!route && !skip_back_faces && !mesh.has_closed_clusters &&
+            all_inside(ctx, b, mesh, view)) {
             ranges[i].whole = true;
             continue;
         }
@@ -89,24 +91,32 @@ TriangleCullStats draw_batch_triangles(const PassContext& ctx, gl::PipelineState
     // Several threads when there is enough of it; chunks keep job order (parallel_chunks.h).
     const std::size_t threads = clusters >= kCullPairsPerThread ? worker_threads() : 1;
     const std::size_t chunks = chunk_count(jobs.size(), 1, threads);
-    std::vector<std::vector<TriangleDraw>> chunk_draws(chunks);
+    std::vector<std::vector<TriangleDraw>> chunk_draws(chunks), chunk_one_sided(chunks);
     std::vector<TriangleCullStats> chunk_stats(chunks);
-    std::vector<std::size_t> job_draws(jobs.size()), job_work(jobs.size());
+    std::vector<std::size_t> job_draws(jobs.size()), job_one_sided(jobs.size()),
+        job_work(jobs.size());
     std::vector<RasterRoute> chunk_routes;
     if (route) chunk_routes.assign(chunks, RasterRoute(route->view));
     parallel_chunks(jobs.size(), 1, threads, [&](std::size_t j, std::size_t c) {
         const Job& job = jobs[j];
         const std::size_t before = chunk_draws[c].size();
+        const std::size_t one_sided_before = chunk_one_sided[c].size();
         RasterRoute* chunk_route = route ? &chunk_routes[c] : nullptr;
         const std::size_t work_before = chunk_route ? chunk_route->work.size() : 0;
         append_triangle_draws(job.mesh->triangle_clusters, job.mesh->triangle_bounds,
                               ctx.batches.instances[job.instance].model_view, job.skip_back_faces,
-                              view, job.instance, chunk_draws[c], chunk_stats[c], chunk_route);
+                              view, job.instance, chunk_draws[c], chunk_stats[c], chunk_route,
+                              &chunk_one_sided[c]);
         job_draws[j] = chunk_draws[c].size() - before;
+        job_one_sided[j] = chunk_one_sided[c].size() - one_sided_before;
         job_work[j] = chunk_route ? chunk_route->work.size() - work_before : 0;
     });
-    for (std::size_t c = 0; c < chunks; ++c) {
+    for (std::size_t c = 0; c < chunks; ++c)
         draws.insert(draws.end(), chunk_draws[c].begin(), chunk_draws[c].end());
+    // The one-sided draws follow the two-sided ones in the same buffer.
+    std::size_t next_one_sided = draws.size();
+    for (std::size_t c = 0; c < chunks; ++c) {
+        draws.insert(draws.end(), chunk_one_sided[c].begin(), chunk_one_sided[c].end());
         stats += chunk_stats[c];
         if (route) route->take(chunk_routes[c]);
     }
@@ -129,6 +139,9 @@ TriangleCullStats draw_batch_triangles(const PassContext& ctx, gl::PipelineState
         if (r.count == 0) r.first = next;
         r.count += job_draws[j];
         next += job_draws[j];
+        if (r.one_sided == 0) r.first_one_sided = next_one_sided;
+        r.one_sided += job_one_sided[j];
+        next_one_sided += job_one_sided[j];
     }
     if (!draws.empty()) {
         ctx.triangle_draws->set(std::span<const TriangleDraw>(draws), GL_STREAM_DRAW);
@@ -139,7 +152,7 @@ TriangleCullStats draw_batch_triangles(const PassContext& ctx, gl::PipelineState
         if (occluders_only && !b.occluder) continue;
         const GpuMesh& mesh = ctx.gpu_meshes.get(ctx.meshes, b.mesh, b.lod);
         const bool culled = culls_clusters(ctx, mesh, moves_vertices) && !ranges[i].whole;
-        if (culled && ranges[i].count == 0) continue;
+        if (culled && ranges[i].count == 0 && ranges[i].one_sided == 0) continue;
         // Back faces of an outward-closed mesh seen from outside are hidden by its front faces.
         const bool cull = front_faces_only || (b.eye_outside && mesh.outward_closed);
         if (cull != state.cull_back) {
@@ -148,10 +161,22 @@ TriangleCullStats draw_batch_triangles(const PassContext& ctx, gl::PipelineState
         }
         (mesh.*vao).bind();
         if (culled) {
-            glMultiDrawElementsIndirect(
-                GL_TRIANGLES, GL_UNSIGNED_INT,
-                reinterpret_cast<const void*>(ranges[i].first * sizeof(TriangleDraw)),
-                static_cast<GLsizei>(ranges[i].count), 0);
+            if (ranges[i].count > 0) {
+                glMultiDrawElementsIndirect(
+                    GL_TRIANGLES, GL_UNSIGNED_INT,
+                    reinterpret_cast<const void*>(ranges[i].first * sizeof(TriangleDraw)),
+                    static_cast<GLsizei>(ranges[i].count), 0);
+            }
+            if (ranges[i].one_sided > 0) {
+                if (!state.cull_back) {
+                    state.cull_back = true;
+                    gl::apply(state);
+                }
+                glMultiDrawElementsIndirect(
+                    GL_TRIANGLES, GL_UNSIGNED_INT,
+                    reinterpret_cast<const void*>(ranges[i].first_one_sided * sizeof(TriangleDraw)),
+                    static_cast<GLsizei>(ranges[i].one_sided), 0);
+            }
         } else {
             glDrawElementsInstancedBaseInstance(GL_TRIANGLES, mesh.triangle_index_count,
                                                 GL_UNSIGNED_INT, nullptr, b.instance_count,

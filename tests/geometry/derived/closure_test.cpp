@@ -43,4 +43,29 @@ TEST(Closure, AnInsideOutPieceMakesTheMeshNotOutwardClosed) {
     EXPECT_FALSE(is_outward_closed(build_line_mesh(m)));
 }
 
+// Per piece: a closed box, an open box, an inside-out box and a sheet, in one mesh.
+TEST(Closure, EachPieceIsJudgedOnItsOwnWithItsBox) {
+    TriMesh m = joined(box(glm::vec3(1.0f)), open_box(glm::vec3(1.0f)), {4.0f, 0.0f, 0.0f}, false);
+    m = joined(m, box(glm::vec3(0.5f)), {8.0f, 0.0f, 0.0f}, true);
+    m = joined(m, grid(2, 2, 1.0f, 2), {0.0f, 5.0f, 0.0f}, false);
+    const AdjacencyMesh mesh = build_line_mesh(m);
+    const Pieces p = connected_pieces(mesh);
+    ASSERT_EQ(p.pieces.size(), 4u);
+    const auto piece_at = [&](glm::vec3 at) {
+        for (std::uint32_t v = 0; v < mesh.positions.size(); ++v)
+            if (glm::distance(mesh.positions[v], at) < 1e-4f) return p.pieces[p.piece_of_vertex[v]];
+        ADD_FAILURE() << "no vertex at " << at.x << "," << at.y << "," << at.z;
+        return Pieces::Piece{};
+    };
+    const Pieces::Piece closed = piece_at({1.0f, 1.0f, 1.0f});
+    EXPECT_TRUE(closed.outward_closed);
+    EXPECT_EQ(closed.triangles, 12u);
+    EXPECT_EQ(closed.box.min, glm::vec3(-1.0f));
+    EXPECT_EQ(closed.box.max, glm::vec3(1.0f));
+    EXPECT_FALSE(piece_at({5.0f, 1.0f, 1.0f}).outward_closed) << "open box";
+    EXPECT_FALSE(piece_at({8.5f, 0.5f, 0.5f}).outward_closed) << "inside out";
+    EXPECT_FALSE(piece_at({-1.0f, 5.0f, -1.0f}).outward_closed) << "sheet";
+    EXPECT_FALSE(is_outward_closed(mesh));
+}
+
 }  // namespace

@@ -86,6 +86,37 @@ TEST(TriangleClusters, AnOpenGridAndABoxAreSound) {
     expect_sound(box_mesh, cluster_triangles(box_mesh));
 }
 
+// Closed solids and an open sheet in one mesh: the solids' triangles and the sheet's go to
+// clusters of their own, and only the solids' are closed, with a box that holds their pieces.
+TEST(TriangleClusters, ClosedPiecesGetClustersOfTheirOwn) {
+    TriMesh m = grid(40, 40, 0.25f, 40);  // 10 x 10, open
+    const TriMesh ball = uv_sphere(0.5f, 16, 32);
+    for (int i = 0; i < 9; ++i) {
+        const auto base = static_cast<std::uint32_t>(m.positions.size());
+        const glm::vec3 at(float(i % 3) * 3.0f - 3.0f, 1.0f, float(i / 3) * 3.0f - 3.0f);
+        for (const glm::vec3& p : ball.positions) m.positions.push_back(p + at);
+        for (const std::uint32_t v : ball.indices) m.indices.push_back(base + v);
+    }
+    const AdjacencyMesh mesh = build_line_mesh(m);
+    const ClusteredTriangles c = cluster_triangles(mesh);
+    expect_sound(mesh, c);
+    std::size_t closed = 0, open = 0;
+    for (const TriangleCluster& k : c.clusters) {
+        for (std::uint32_t i = k.first_index; i < k.first_index + k.index_count; ++i) {
+            const glm::vec3 p = mesh.positions[c.indices[i]];
+            // The sheet lies at y = 0, the balls at y >= 0.5.
+            EXPECT_EQ(k.closed, p.y > 0.25f) << "a cluster mixes solids and the sheet";
+            if (k.closed) {
+                EXPECT_TRUE(glm::all(glm::lessThanEqual(k.closed_box.min, p)));
+                EXPECT_TRUE(glm::all(glm::greaterThanEqual(k.closed_box.max, p)));
+            }
+        }
+        (k.closed ? closed : open) += k.index_count / 3;
+    }
+    EXPECT_EQ(closed, 9 * ball.triangle_count());
+    EXPECT_EQ(open, 2u * 40 * 40);
+}
+
 TEST(TriangleClusters, AnEmptyMeshHasNoCluster) {
     EXPECT_TRUE(cluster_triangles(AdjacencyMesh{}).clusters.empty());
 }
