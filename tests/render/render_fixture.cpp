@@ -87,6 +87,12 @@ void expect_same_lines(const Mask& a, const Mask& b, const std::string& what) {
     EXPECT_GE(s.recall, 0.995) << what;
 }
 
+void RenderTest::use_repeatable_compute_frames() {
+    settings.beam = render::beam_look("classic");
+    settings.method = render::LineMethod::compute;
+    frame.style = scene::Style::vector;
+}
+
 void RenderTest::save_color(const std::string& name) {
     renderer->set_settings(settings);
     renderer->render(frame, meshes, render::Renderer::kOffscreen);

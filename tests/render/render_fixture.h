@@ -40,6 +40,9 @@ class RenderTest : public GlTest {
     // mask test checks the compute and the geometry-shader path against each other.
     Mask mask(const std::string& save_as = "");
     void save_color(const std::string& name);
+    // For tests that compare frames byte for byte: the classic beam (no flicker, so frames
+    // repeat exactly), the compute line method and the vector style.
+    void use_repeatable_compute_frames();
 
     render::RenderSettings settings = render::preset("high");
     bool compare_line_methods = true;

@@ -19,9 +19,7 @@ class EdgePrefilterTest : public RenderTest {
   protected:
     void SetUp() override {
         RenderTest::SetUp();
-        settings.beam = render::beam_look("classic");  // no flicker: frames repeat exactly
-        settings.method = render::LineMethod::compute;
-        frame.style = scene::Style::vector;
+        use_repeatable_compute_frames();
     }
     // The picture, the mask and the feature edges with the prefilter off and on; the edges
     // edges.comp was given with it on, against off.

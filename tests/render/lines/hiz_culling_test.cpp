@@ -68,9 +68,7 @@ class HizCullingTest : public RenderTest {
   protected:
     void SetUp() override {
         RenderTest::SetUp();
-        settings.beam = render::beam_look("classic");  // no flicker: frames repeat exactly
-        settings.method = render::LineMethod::compute;
-        frame.style = scene::Style::vector;
+        use_repeatable_compute_frames();
         frame.items.clear();
         sphere_ = add_mesh("sphere", geo::uv_sphere(1.0f, 48, 96));
         wall_ = add_mesh("wall", geo::grid(3, 3, 1.0f, 3));
