@@ -4,15 +4,11 @@
 #include <cmath>
 #include <numeric>
 
+#include "render/gpu_scene/cluster_culling.h"
+
 namespace bz::render {
 
 namespace {
-
-double max_axis_scale(const glm::dmat4& m) {
-    return std::sqrt(std::max({glm::dot(glm::dvec3(m[0]), glm::dvec3(m[0])),
-                               glm::dot(glm::dvec3(m[1]), glm::dvec3(m[1])),
-                               glm::dot(glm::dvec3(m[2]), glm::dvec3(m[2]))}));
-}
 
 // Sphere (view space) against the frustum; true if entirely outside.
 bool outside_frustum(const glm::dvec3& c, double r, const CameraMatrices& cam) {
@@ -77,7 +73,7 @@ FrameBatches build_batches(const scene::FrameList& frame, const scene::MeshLibra
         const glm::dmat4 mv = cam.view * item.model;
         const geo::Bounds& b = meshes.bounds(item.mesh);
         const glm::dvec3 centre = glm::dvec3(mv * glm::dvec4(glm::dvec3(b.center()), 1.0));
-        const double radius = static_cast<double>(b.radius()) * max_axis_scale(mv);
+        const double radius = static_cast<double>(b.radius()) * max_axis_scale(glm::dmat3(mv));
         if (settings.frustum_culling && outside_frustum(centre, radius, cam)) {
             ++out.stats.objects_culled;
             continue;

@@ -15,11 +15,11 @@ glm::dvec4 row(const glm::mat4& m, int i) {
     return glm::dvec4(m[0][i], m[1][i], m[2][i], m[3][i]);
 }
 
+}  // namespace
+
 double max_axis_scale(const glm::dmat3& m) {
     return std::sqrt(std::max({glm::dot(m[0], m[0]), glm::dot(m[1], m[1]), glm::dot(m[2], m[2])}));
 }
-
-}  // namespace
 
 glm::vec4 object_space_eye(const glm::mat4& model_view) {
     const glm::dmat4 mv(model_view);

@@ -19,6 +19,10 @@ inline constexpr std::size_t kCullPairsPerThread = 16384;
 // (no face then faces the eye, as in view space, where every normal is zero).
 glm::vec4 object_space_eye(const glm::mat4& model_view);
 
+// The largest length the linear part of `m` gives a unit axis: what it scales a bounding
+// sphere's radius by, at most.
+double max_axis_scale(const glm::dmat3& m);
+
 // The side planes of the view frustum widened `guard` times (|x|, |y| <= guard * w in clip
 // space), and the near and far depths, in view space.
 class ViewVolume {
