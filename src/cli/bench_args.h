@@ -33,6 +33,7 @@ struct BenchOptions {
     std::string timing = "auto";
     std::string beam;
     bool no_phosphor = false;
+    std::optional<render::ColourClears> colour_clears;  // --clears; none: the setting's default
     bool size_given = false;
     std::string models_dir = "/usr/share/assimp/models";
     std::vector<std::string> models;

@@ -28,6 +28,21 @@ std::string_view ArgCursor::value(std::string_view option) {
     return v;
 }
 
+std::string choice_list(std::span<const std::string_view> names) {
+    std::string out;
+    for (std::size_t i = 0; i < names.size(); ++i) {
+        if (i > 0) out += i + 1 == names.size() ? " or " : ", ";
+        out += names[i];
+    }
+    return out;
+}
+
+render::ColourClears parse_colour_clears(std::string_view option, std::string_view text) {
+    using enum render::ColourClears;
+    return parse_choice<render::ColourClears>(
+        option, text, {{"auto", automatic}, {"pipeline", pipeline}, {"compute", compute}});
+}
+
 double parse_number(std::string_view option, std::string_view text) {
     double v = 0.0;
     const auto* end = text.data() + text.size();

@@ -2,11 +2,15 @@
 // Small, strict parsers for command-line values. Each throws UsageError with a message that
 // names the option and what was expected.
 #include <glm/glm.hpp>
+#include <initializer_list>
 #include <span>
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <vector>
 
+#include "core/text/printable.h"
+#include "render/settings.h"
 #include "scene/style.h"
 
 namespace bz::app {
@@ -23,6 +27,22 @@ int parse_int(std::string_view option, std::string_view text, int min_value, int
 glm::dvec3 parse_vec3(std::string_view option, std::string_view text);     // "x,y,z"
 glm::ivec2 parse_size(std::string_view option, std::string_view text);     // "WxH"
 scene::Style parse_style(std::string_view option, std::string_view text);  // a style name
+
+// One of an option's named values: parse_choice("--clears", text, {{"auto", A}, {"pipeline",
+// P}}) returns A for "auto" and throws UsageError("--clears: expected auto or pipeline, not
+// 'x'") for anything else.
+template <typename T>
+struct Choice {
+    std::string_view name;
+    T value;
+};
+std::string choice_list(std::span<const std::string_view> names);  // "a, b or c"
+template <typename T>
+T parse_choice(std::string_view option, std::string_view text,
+               std::initializer_list<Choice<T>> choices);
+
+// --clears auto|pipeline|compute (render and bench).
+render::ColourClears parse_colour_clears(std::string_view option, std::string_view text);
 
 // Whether a command-line word is an option name ("--out", "-h") rather than a value; a
 // negative number ("-2", "-0.5,1,0") is a value.
@@ -43,5 +63,17 @@ class ArgCursor {
     char* const* args_;
     int index_ = 0;
 };
+
+template <typename T>
+T parse_choice(std::string_view option, std::string_view text,
+               std::initializer_list<Choice<T>> choices) {
+    std::vector<std::string_view> names;
+    for (const Choice<T>& c : choices) {
+        if (c.name == text) return c.value;
+        names.push_back(c.name);
+    }
+    throw UsageError(std::string(option) + ": expected " + choice_list(names) + ", not '" +
+                     printable(text) + "'");
+}
 
 }  // namespace bz::app

@@ -23,6 +23,7 @@ const std::string& render_usage() {
             "                       [--lit-share] [--no-cluster-culling] [--hiz-culling]\n"
             "                       [--prepass-raster auto|pipeline|compute] "
             "[--edge-prefilter auto|gpu|cpu]\n"
+            "                       [--clears auto|pipeline|compute]\n"
             "                       [--material-lines] [--intersection-lines]\n"
             "                       [--svg lines.svg]\n"
             "                       [--overwrite]\n"
@@ -57,6 +58,10 @@ const std::string& render_usage() {
             "shader classifies the rest: the CPU, or none (auto: the CPU on a software "
             "rasteriser;\n"
             "the same lines).\n"
+            "--clears: who clears the frame's colour images: the GL pipeline (glClear), or a "
+            "compute\n"
+            "shader, past a GPU's raster back end (auto: compute on a hardware GPU; the same "
+            "pixels).\n"
             "--material-lines draws the edges between faces of different materials as lines too\n"
             "(a model whose parts have their own materials; a level's [render] material_lines).\n"
             "--intersection-lines draws where surfaces cross as lines too: two objects (--copies\n"
@@ -121,27 +126,16 @@ RenderOptions parse_render_args(Args args) {
         } else if (a == "--one-sided") {
             o.one_sided = true;
         } else if (a == "--prepass-raster") {
-            const std::string_view s = cur.value(a);
-            if (s == "auto")
-                o.prepass_raster = render::PrepassRaster::automatic;
-            else if (s == "pipeline")
-                o.prepass_raster = render::PrepassRaster::pipeline;
-            else if (s == "compute")
-                o.prepass_raster = render::PrepassRaster::compute;
-            else
-                throw UsageError("--prepass-raster: expected auto, pipeline or compute, not " +
-                                 printable(s));
+            using enum render::PrepassRaster;
+            o.prepass_raster = parse_choice<render::PrepassRaster>(
+                a, cur.value(a),
+                {{"auto", automatic}, {"pipeline", pipeline}, {"compute", compute}});
         } else if (a == "--edge-prefilter") {
-            const std::string_view s = cur.value(a);
-            if (s == "auto")
-                o.edge_prefilter = render::EdgePrefilter::automatic;
-            else if (s == "gpu")
-                o.edge_prefilter = render::EdgePrefilter::gpu;
-            else if (s == "cpu")
-                o.edge_prefilter = render::EdgePrefilter::cpu;
-            else
-                throw UsageError("--edge-prefilter: expected auto, gpu or cpu, not " +
-                                 printable(s));
+            using enum render::EdgePrefilter;
+            o.edge_prefilter = parse_choice<render::EdgePrefilter>(
+                a, cur.value(a), {{"auto", automatic}, {"gpu", gpu}, {"cpu", cpu}});
+        } else if (a == "--clears") {
+            o.colour_clears = parse_colour_clears(a, cur.value(a));
         } else if (a == "--shading") {
             const std::string_view s = cur.value(a);
             if (s != "flat" && s != "smooth")

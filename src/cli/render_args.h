@@ -36,6 +36,8 @@ struct RenderOptions {
     render::PrepassRaster prepass_raster = render::PrepassRaster::automatic;
     // --edge-prefilter: who rules out edges before edges.comp (lines/edge_prefilter.h)
     render::EdgePrefilter edge_prefilter = render::EdgePrefilter::automatic;
+    // --clears: who clears the frame's colour images (render/clear_image.h)
+    render::ColourClears colour_clears = render::ColourClears::automatic;
     bool material_lines = false;  // --material-lines: edges between materials are lines too
     // --intersection-lines: where surfaces cross, a line
     bool intersection_lines = false;

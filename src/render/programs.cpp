@@ -132,6 +132,7 @@ Programs load_programs(const RenderSettings& settings) {
             composite("beam/lit_tiles.vert", {lit_tile_size, "PHOSPHOR 1", decay});
     }
     p.tile_list = program({stage(GL_COMPUTE_SHADER, "beam/tile_list.comp")}, {lit_tile_size});
+    p.clear_image = program({stage(GL_COMPUTE_SHADER, "clear_image.comp")});
     p.bloom_up = program({stage(GL_VERTEX_SHADER, "fullscreen.vert"),
                           stage(GL_FRAGMENT_SHADER, "beam/bloom_up.frag")},
                          {"LIT_TILES 1", lit_tile_size});

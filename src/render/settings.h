@@ -32,6 +32,14 @@ enum class EdgePrefilter {
     cpu,        // the CPU tests them first and lists only those that may be feature edges
 };
 
+// Who clears the frame's full-screen colour images (render/clear_image.h). The same pixels
+// either way.
+enum class ColourClears {
+    automatic,  // compute on a hardware GPU, the pipeline on a software rasteriser
+    pipeline,   // glClear: the raster back end writes every pixel
+    compute,    // a compute shader writes every texel, past the raster back end
+};
+
 // How feature lines are found.
 enum class LineMethod {
     geometry_shader,  // a geometry shader per triangle on triangle adjacency (pass_lines.cpp)
@@ -175,6 +183,7 @@ struct RenderSettings {
     // centre up to float rounding; automatic chooses it on software rasterisers only.
     PrepassRaster prepass_raster = PrepassRaster::automatic;
     EdgePrefilter edge_prefilter = EdgePrefilter::automatic;
+    ColourClears colour_clears = ColourClears::automatic;
     bool lod = true;           // raise the crease threshold / use simplified meshes far away
     bool count_edges = false;  // count emitted feature edges (costs a query per frame)
     LineMethod method = kDefaultLineMethod;

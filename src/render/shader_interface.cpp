@@ -75,6 +75,7 @@ std::vector<std::string> build_defines() {
         define("IMAGE_UNIT_BEAM_TILES", kImageUnitBeamTiles),
         define("IMAGE_UNIT_DEPTH_TILES", kImageUnitDepthTiles),
         define("IMAGE_UNIT_RASTER_DEPTH", kImageUnitRasterDepth),
+        define("IMAGE_UNIT_CLEAR", kImageUnitClear),
         define("DEPTH_TILE_SIZE", static_cast<unsigned>(kDepthTileSize)),
         define("COARSE_DEPTH_TILES", static_cast<unsigned>(kCoarseDepthTiles)),
     };

@@ -79,6 +79,7 @@ inline constexpr unsigned kImageUnitLitTiles = 2;     // lit_tiles.glsl
 inline constexpr unsigned kImageUnitBeamTiles = 3;    // beam_tiles.glsl
 inline constexpr unsigned kImageUnitDepthTiles = 0;   // depth_tiles.comp's output
 inline constexpr unsigned kImageUnitRasterDepth = 0;  // the compute prepass's depth (R32UI)
+inline constexpr unsigned kImageUnitClear = 4;        // clear_image.comp's image
 
 // Every constant above and the edge buffer's bindings as "NAME value" for gl::Program: the
 // instance indices as uint literals ("6u"), since the shaders index with uints; the rest plain.

@@ -22,6 +22,7 @@
 #include "core/io/output_path.h"
 #include "core/text/printable.h"
 #include "level/loader.h"
+#include "render/clear_image.h"
 #include "scene/camera_check.h"
 #include "scene/presentation_clock.h"
 
@@ -173,6 +174,7 @@ int run(const BenchOptions& o) {
     settings.beam = render::beam_look(beam_name);
     // The phosphor's cost is the difference between two runs of the same frames.
     if (o.no_phosphor) settings.beam.phosphor = render::PhosphorDecay::off;
+    if (o.colour_clears) settings.colour_clears = *o.colour_clears;
     settings.style = o.style;
     std::optional<game::replay::Replay> replay;
     if (!o.replay.empty()) replay = game::replay::load(o.replay);
@@ -224,6 +226,8 @@ int run(const BenchOptions& o) {
     meta.software = context->is_software();
     meta.timing = timing;
     meta.auto_line_method = line_method_profile_json(profile);
+    meta.colour_clears =
+        render::clears_by_compute(settings, context->is_software()) ? "compute" : "pipeline";
     meta.load_before = load_average();
     const fs::path out(o.out);
 

@@ -130,6 +130,7 @@ int cmd_render(Args args) {
     settings.hiz_culling = o.hiz_culling;
     settings.prepass_raster = o.prepass_raster;
     settings.edge_prefilter = o.edge_prefilter;
+    settings.colour_clears = o.colour_clears;
     settings.material_lines = o.material_lines;
     settings.intersection_lines = o.intersection_lines;
     // A one-off frame measures nothing: it uses the machine's kept crossing, if any.

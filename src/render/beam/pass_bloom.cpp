@@ -1,6 +1,7 @@
 #include <cmath>
 #include <utility>
 
+#include "render/clear_image.h"
 #include "render/passes.h"
 
 namespace bz::render {
@@ -24,6 +25,8 @@ void first_downsample(const PassContext& ctx, const gl::Texture2D& source, float
     const bool sparse = frame_wrote(ctx, Resource::beam_tiles) && mark;
     if (mark) glClearTexImage(t.lit_tiles.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_BYTE, nullptr);
     t.first_down_fbo.bind();
+    const gl::Texture2D& level = t.bloom_mips.empty() ? t.bloom_a : t.bloom_mips[0];
+    if (sparse) clear_colour(ctx, level, glm::vec4(0.0f));
     const gl::Program& down = sparse ? ctx.programs.bloom_down_tiles : ctx.programs.bloom_down;
     down.use();
     bind_lit_tile_marks(down, t, mark);
@@ -36,8 +39,6 @@ void first_downsample(const PassContext& ctx, const gl::Texture2D& source, float
         glDrawArrays(GL_TRIANGLES, 0, 3);
         return;
     }
-    glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
-    glClear(GL_COLOR_BUFFER_BIT);
     draw_tile_quads(down, t.beam_tiles, glm::ivec2(t.width, t.height));
 }
 

@@ -1,3 +1,4 @@
+#include "render/clear_image.h"
 #include "render/passes.h"
 
 namespace bz::render {
@@ -22,6 +23,16 @@ void pass_composite(const PassContext& ctx, const gl::Texture2D& picture, bool b
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, target_fbo);
     glViewport(0, 0, width, height);
     gl::apply(gl::PipelineState{});
+    if (sparse) {
+        // Black is what an unlit pixel composites to exactly. The window's framebuffer has no
+        // image a compute shader could clear.
+        if (target_fbo == t.output_fbo.id()) {
+            clear_colour(ctx, t.output, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
+        } else {
+            glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
+            glClear(GL_COLOR_BUFFER_BIT);
+        }
+    }
     const Programs& programs = ctx.programs;
     const std::size_t decay = phosphor && phosphor->power_law ? 1 : 0;
     const gl::Program& p =
@@ -49,8 +60,6 @@ void pass_composite(const PassContext& ctx, const gl::Texture2D& picture, bool b
     if (!sparse) {
         glDrawArrays(GL_TRIANGLES, 0, 3);
     } else {
-        glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
-        glClear(GL_COLOR_BUFFER_BIT);
         draw_listed_tiles(p, t, glm::ivec2(width, height));
     }
     // The picture is loaded as an image next frame, shown as a texture by held frames and read

@@ -1,6 +1,7 @@
 #include <cmath>
 
 #include "render/beam/beam_uniforms.h"
+#include "render/clear_image.h"
 #include "render/gpu_scene/batches.h"
 #include "render/passes.h"
 
@@ -78,10 +79,7 @@ void begin_line_target(const PassContext& ctx, const gl::Program& program, bool 
                                                                                : gl::Blend::max;
     state.depth_zero_to_one = ctx.cam.zero_to_one;
     gl::apply(state);
-    if (clear) {
-        glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
-        glClear(GL_COLOR_BUFFER_BIT);
-    }
+    if (clear) clear_colour(ctx, mask_mode ? ctx.targets.mask : ctx.targets.lines, glm::vec4(0.0f));
     if (!mask_mode) {
         // The beam's fragments mark the tiles they light, afresh each frame.
         Targets& t = ctx.targets;

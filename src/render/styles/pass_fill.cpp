@@ -1,3 +1,4 @@
+#include "render/clear_image.h"
 #include "render/passes.h"
 
 namespace bz::render {
@@ -25,8 +26,7 @@ const gl::Program& fill_program(const PassContext& ctx) {
 void pass_fill(const PassContext& ctx) {
     // In filled styles the lines target holds only the HUD; start it empty.
     ctx.targets.lines_fbo.bind();
-    glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
-    glClear(GL_COLOR_BUFFER_BIT);
+    clear_colour(ctx, ctx.targets.lines, glm::vec4(0.0f));
     // The HUD marks the screen tiles it lights there (beam_tiles.glsl); the ink composite
     // shades only those and the halo's reach around them (pass_ink_composite.cpp).
     glClearTexImage(ctx.targets.beam_tiles.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_BYTE, nullptr);
@@ -35,9 +35,9 @@ void pass_fill(const PassContext& ctx) {
     const gl::PipelineState state = depth_writing_state(ctx, true);
     gl::apply(state);
     const glm::vec3 paper = ctx.style.background;
-    glClearColor(paper.r, paper.g, paper.b, 1.0f);
+    clear_colour(ctx, ctx.targets.canvas, glm::vec4(paper, 1.0f));
     glClearDepth(depth_clear_value(ctx));
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glClear(GL_DEPTH_BUFFER_BIT);
     const gl::Program& p = fill_program(ctx);
     p.use();
     p.set("u_proj", ctx.cam.proj);

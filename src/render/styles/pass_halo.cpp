@@ -1,3 +1,4 @@
+#include "render/clear_image.h"
 #include "render/styles/stroke_common.h"
 
 namespace bz::render {
@@ -23,8 +24,7 @@ void pass_halo(const PassContext& ctx) {
     const HaloParams& h = ctx.style.halo;
     ctx.targets.halo_fbo.bind();
     gl::apply(halo_state(ctx, gl::Blend::max));
-    glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
-    glClear(GL_COLOR_BUFFER_BIT);
+    clear_colour(ctx, ctx.targets.halo, glm::vec4(0.0f));
     const gl::Program& glow = ctx.programs.halo_glow;
     begin_strokes(ctx, glow, StrokeVisibility::depth_test);
     glow.set("u_strokes", h.strokes_per_edge);

@@ -1,5 +1,6 @@
 #include <cmath>
 
+#include "render/clear_image.h"
 #include "render/passes.h"
 
 namespace bz::render {
@@ -10,9 +11,9 @@ void pass_outline_prepass(const PassContext& ctx) {
     ctx.targets.normals_fbo.bind();
     const gl::PipelineState state = depth_writing_state(ctx, true);
     gl::apply(state);
+    clear_colour(ctx, ctx.targets.normals, glm::vec4(0.0f));
     glClearDepth(depth_clear_value(ctx));
-    glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
-    glClear(GL_DEPTH_BUFFER_BIT | GL_COLOR_BUFFER_BIT);
+    glClear(GL_DEPTH_BUFFER_BIT);
     const gl::Program& p = ctx.programs.outline_prepass;
     p.use();
     p.set("u_proj", ctx.cam.proj);
@@ -26,8 +27,7 @@ void pass_image_outline(const PassContext& ctx, bool mask_mode) {
     const gl::Program& p = mask_mode ? ctx.programs.image_outline_mask : ctx.programs.image_outline;
     (mask_mode ? ctx.targets.mask_fbo : ctx.targets.lines_fbo).bind();
     gl::apply(gl::PipelineState{});
-    glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
-    glClear(GL_COLOR_BUFFER_BIT);
+    clear_colour(ctx, mask_mode ? ctx.targets.mask : ctx.targets.lines, glm::vec4(0.0f));
     p.use();
     p.set("u_proj_a", ctx.cam.proj_a);
     p.set("u_proj_b", ctx.cam.proj_b);

@@ -1,5 +1,6 @@
 #include <algorithm>
 
+#include "render/clear_image.h"
 #include "render/styles/stroke_common.h"
 
 namespace bz::render {
@@ -42,8 +43,7 @@ void pass_outline_levels_mask(const PassContext& ctx) {
     state.blend = gl::Blend::max;  // the lowest level (the brightest mark) wins
     state.depth_zero_to_one = ctx.cam.zero_to_one;
     gl::apply(state);
-    glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
-    glClear(GL_COLOR_BUFFER_BIT);
+    clear_colour(ctx, ctx.targets.mask, glm::vec4(0.0f));
     const gl::Program& p = ctx.programs.outline_levels_mask;
     begin_strokes(ctx, p, StrokeVisibility::spine_test);
     set_hidden_line_uniforms(ctx, p);

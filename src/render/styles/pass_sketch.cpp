@@ -1,3 +1,4 @@
+#include "render/clear_image.h"
 #include "render/styles/stroke_common.h"
 
 namespace bz::render {
@@ -10,8 +11,7 @@ void pass_sketch(const PassContext& ctx, bool mask_mode) {
         ctx.targets.mask_fbo.bind();
         state.blend = gl::Blend::max;
         gl::apply(state);
-        glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
-        glClear(GL_COLOR_BUFFER_BIT);
+        clear_colour(ctx, ctx.targets.mask, glm::vec4(0.0f));
     } else {
         ctx.targets.canvas_fbo.bind();
         state.blend = gl::Blend::min;  // the darkest stroke wins: any order gives the same picture
