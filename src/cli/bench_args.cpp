@@ -27,7 +27,9 @@ const char* const kBenchUsage =
     "                      [--line-method compute|geometry_shader|auto|image_outline]\n"
     "                      [--out DIR] [--replay FILE] [--samples N] [--rounds N]\n"
     "                      [--timing auto|cpu|gpu] [--beam classic|mame] [--no-phosphor]\n"
-    "                      [--clears auto|pipeline|compute]\n"
+    "                      [--clears auto|pipeline|compute] [--prepass-raster "
+    "auto|pipeline|compute]\n"
+    "                      [--edge-prefilter auto|gpu|cpu]\n"
     "                      [--series-max TRIANGLES] [--overwrite]\n"
     "       beamzone bench --accuracy [--models-dir DIR] [--model FILE]... [--size WxH]\n"
     "                      [--frames N] [--out DIR] [--timing auto|cpu|gpu]\n"
@@ -60,7 +62,8 @@ const char* const kBenchUsage =
     "two runs with and without it time what the phosphor costs.\n"
     "--clears picks who clears the frame's colour images (not with --sweep): the GL pipeline\n"
     "or a compute shader (auto: compute on a hardware GPU, whose raster back end may be small;\n"
-    "the same pixels). summary.json names the one used.\n"
+    "the same pixels). summary.json names the one used. --prepass-raster and --edge-prefilter\n"
+    "as for `render` (see `render --help`; not with --sweep): the same frames, other work.\n"
     "--accuracy needs no LEVEL: it scores every preset and the baseline on real models\n"
     "(default: 16 files under /usr/share/assimp/models; --model FILE, repeatable, relative to\n"
     "--models-dir, replaces the list) from 4 views each (framed, behind, close, above) at\n"
@@ -106,6 +109,10 @@ BenchOptions parse_bench_args(Args args) {
             o.no_phosphor = true;
         } else if (a == "--clears") {
             o.colour_clears = parse_colour_clears(a, cur.value(a));
+        } else if (a == "--prepass-raster") {
+            o.prepass_raster = parse_prepass_raster(a, cur.value(a));
+        } else if (a == "--edge-prefilter") {
+            o.edge_prefilter = parse_edge_prefilter(a, cur.value(a));
         } else if (a == "--models-dir") {
             o.models_dir = cur.value(a);
         } else if (a == "--model") {
@@ -141,7 +148,10 @@ BenchOptions parse_bench_args(Args args) {
         if (preset_given) throw UsageError("--preset and --accuracy exclude each other");
         if (!o.replay.empty()) throw UsageError("--replay and --accuracy exclude each other");
         if (o.no_phosphor) throw UsageError("--no-phosphor and --accuracy exclude each other");
-        if (o.colour_clears) throw UsageError("--clears and --accuracy exclude each other");
+        if (o.colour_clears || o.prepass_raster || o.edge_prefilter)
+            throw UsageError(
+                "--clears, --prepass-raster and --edge-prefilter exclude --accuracy (it times "
+                "every preset as it is)");
         if (!o.frames_given) o.frames = 6;
         if (!o.size_given) o.size = {640, 480};
         if (o.out.empty()) throw UsageError("--out needs a directory");
@@ -159,8 +169,10 @@ BenchOptions parse_bench_args(Args args) {
     if (o.no_phosphor && o.mode == BenchMode::sweep)
         throw UsageError(
             "--no-phosphor and --sweep exclude each other (the sweep sets every look)");
-    if (o.colour_clears && o.mode == BenchMode::sweep)
-        throw UsageError("--clears and --sweep exclude each other (the sweep sets every look)");
+    if ((o.colour_clears || o.prepass_raster || o.edge_prefilter) && o.mode == BenchMode::sweep)
+        throw UsageError(
+            "--clears, --prepass-raster and --edge-prefilter exclude --sweep (the sweep times "
+            "every configuration as it is)");
     if (o.mode == BenchMode::scaling && !o.frames_given) o.frames = 40;
     // Seven configurations: fewer frames each keep a sweep on llvmpipe within minutes.
     if (o.mode == BenchMode::sweep && !o.frames_given) o.frames = 240;

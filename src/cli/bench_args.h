@@ -33,7 +33,10 @@ struct BenchOptions {
     std::string timing = "auto";
     std::string beam;
     bool no_phosphor = false;
-    std::optional<render::ColourClears> colour_clears;  // --clears; none: the setting's default
+    // --clears, --prepass-raster, --edge-prefilter; none: the settings' defaults (auto)
+    std::optional<render::ColourClears> colour_clears;
+    std::optional<render::PrepassRaster> prepass_raster;
+    std::optional<render::EdgePrefilter> edge_prefilter;
     bool size_given = false;
     std::string models_dir = "/usr/share/assimp/models";
     std::vector<std::string> models;

@@ -43,6 +43,18 @@ render::ColourClears parse_colour_clears(std::string_view option, std::string_vi
         option, text, {{"auto", automatic}, {"pipeline", pipeline}, {"compute", compute}});
 }
 
+render::PrepassRaster parse_prepass_raster(std::string_view option, std::string_view text) {
+    using enum render::PrepassRaster;
+    return parse_choice<render::PrepassRaster>(
+        option, text, {{"auto", automatic}, {"pipeline", pipeline}, {"compute", compute}});
+}
+
+render::EdgePrefilter parse_edge_prefilter(std::string_view option, std::string_view text) {
+    using enum render::EdgePrefilter;
+    return parse_choice<render::EdgePrefilter>(option, text,
+                                               {{"auto", automatic}, {"gpu", gpu}, {"cpu", cpu}});
+}
+
 double parse_number(std::string_view option, std::string_view text) {
     double v = 0.0;
     const auto* end = text.data() + text.size();

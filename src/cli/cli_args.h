@@ -41,8 +41,11 @@ template <typename T>
 T parse_choice(std::string_view option, std::string_view text,
                std::initializer_list<Choice<T>> choices);
 
-// --clears auto|pipeline|compute (render and bench).
+// The renderer's switches that `render` and `bench` share: --clears auto|pipeline|compute,
+// --prepass-raster auto|pipeline|compute and --edge-prefilter auto|gpu|cpu.
 render::ColourClears parse_colour_clears(std::string_view option, std::string_view text);
+render::PrepassRaster parse_prepass_raster(std::string_view option, std::string_view text);
+render::EdgePrefilter parse_edge_prefilter(std::string_view option, std::string_view text);
 
 // Whether a command-line word is an option name ("--out", "-h") rather than a value; a
 // negative number ("-2", "-0.5,1,0") is a value.

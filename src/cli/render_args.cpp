@@ -126,14 +126,9 @@ RenderOptions parse_render_args(Args args) {
         } else if (a == "--one-sided") {
             o.one_sided = true;
         } else if (a == "--prepass-raster") {
-            using enum render::PrepassRaster;
-            o.prepass_raster = parse_choice<render::PrepassRaster>(
-                a, cur.value(a),
-                {{"auto", automatic}, {"pipeline", pipeline}, {"compute", compute}});
+            o.prepass_raster = parse_prepass_raster(a, cur.value(a));
         } else if (a == "--edge-prefilter") {
-            using enum render::EdgePrefilter;
-            o.edge_prefilter = parse_choice<render::EdgePrefilter>(
-                a, cur.value(a), {{"auto", automatic}, {"gpu", gpu}, {"cpu", cpu}});
+            o.edge_prefilter = parse_edge_prefilter(a, cur.value(a));
         } else if (a == "--clears") {
             o.colour_clears = parse_colour_clears(a, cur.value(a));
         } else if (a == "--shading") {

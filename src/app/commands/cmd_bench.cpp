@@ -175,6 +175,8 @@ int run(const BenchOptions& o) {
     // The phosphor's cost is the difference between two runs of the same frames.
     if (o.no_phosphor) settings.beam.phosphor = render::PhosphorDecay::off;
     if (o.colour_clears) settings.colour_clears = *o.colour_clears;
+    if (o.prepass_raster) settings.prepass_raster = *o.prepass_raster;
+    if (o.edge_prefilter) settings.edge_prefilter = *o.edge_prefilter;
     settings.style = o.style;
     std::optional<game::replay::Replay> replay;
     if (!o.replay.empty()) replay = game::replay::load(o.replay);

@@ -65,8 +65,14 @@ Pieces connected_pieces(const AdjacencyMesh& mesh) {
 
 bool is_outward_closed(const AdjacencyMesh& mesh) {
     if (mesh.triangles.empty()) return false;
-    const Pieces pieces = connected_pieces(mesh);
-    return std::all_of(pieces.pieces.begin(), pieces.pieces.end(),
+    return is_outward_closed(connected_pieces(mesh));
+}
+
+bool is_outward_closed(const Pieces& pieces) {
+    const bool any = std::any_of(pieces.pieces.begin(), pieces.pieces.end(),
+                                 [](const Pieces::Piece& p) { return p.triangles > 0; });
+    return any &&
+           std::all_of(pieces.pieces.begin(), pieces.pieces.end(),
                        [](const Pieces::Piece& p) { return p.triangles == 0 || p.outward_closed; });
 }
 

@@ -29,5 +29,7 @@ Pieces connected_pieces(const AdjacencyMesh& mesh);
 // its bounds, every back-facing triangle is hidden by the mesh itself, so the renderer may
 // skip back faces in both the prepass and the line pass without changing the picture.
 bool is_outward_closed(const AdjacencyMesh& mesh);
+// The same from the mesh's pieces, where the caller has them already.
+bool is_outward_closed(const Pieces& pieces);
 
 }  // namespace bz::geo

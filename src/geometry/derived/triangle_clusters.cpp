@@ -26,11 +26,15 @@ ClusteredTriangles one_cluster(const AdjacencyMesh& mesh) {
 }  // namespace
 
 ClusteredTriangles cluster_triangles(const AdjacencyMesh& mesh) {
+    if (mesh.triangle_count() == 0 || mesh.positions.empty()) return one_cluster(mesh);
+    return cluster_triangles(mesh, connected_pieces(mesh));
+}
+
+ClusteredTriangles cluster_triangles(const AdjacencyMesh& mesh, const Pieces& pieces) {
     const std::size_t tris = mesh.triangle_count();
     if (tris == 0 || mesh.positions.empty()) return one_cluster(mesh);
     // The triangles of outward-closed pieces and the rest go to meshlets of their own, so a
     // cluster of closed pieces can skip its back faces (TriangleCluster::closed).
-    const Pieces pieces = connected_pieces(mesh);
     std::vector<std::uint32_t> closed_indices, open_indices;
     for (std::size_t t = 0; t < tris; ++t) {
         const std::uint32_t* v = &mesh.triangles[3 * t];

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "geometry/derived/closure.h"
 #include "geometry/derived/cluster_bounds.h"
 #include "geometry/mesh.h"
 
@@ -44,5 +45,7 @@ struct ClusteredTriangles {
 // Deterministic. A mesh meshoptimizer cannot split whole comes back as one cluster in the
 // original order, with no cone and a sphere around all of it (never culled by facing).
 ClusteredTriangles cluster_triangles(const AdjacencyMesh& mesh);
+// The same with the mesh's pieces (closure.h: connected_pieces), where the caller has them.
+ClusteredTriangles cluster_triangles(const AdjacencyMesh& mesh, const Pieces& pieces);
 
 }  // namespace bz::geo

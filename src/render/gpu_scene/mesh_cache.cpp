@@ -100,13 +100,15 @@ void MeshCache::upload(GpuMesh& gpu, const geo::AdjacencyMesh& mesh) {
     const std::vector<glm::vec3> normals = geo::vertex_normals(mesh);
     gpu.vertex_normals.set(std::span<const glm::vec3>(normals), GL_STATIC_DRAW);
     gpu.adjacency.set(std::span<const std::uint32_t>(mesh.adjacency), GL_STATIC_DRAW);
-    geo::ClusteredTriangles clustered = geo::cluster_triangles(mesh);
+    // The pieces serve both the clusters and the whole mesh's closure: found once.
+    const geo::Pieces pieces = geo::connected_pieces(mesh);
+    geo::ClusteredTriangles clustered = geo::cluster_triangles(mesh, pieces);
     gpu.triangles.set(std::span<const std::uint32_t>(clustered.indices), GL_STATIC_DRAW);
     gpu.cluster_vertices.set(std::span<const std::uint32_t>(clustered.vertices), GL_STATIC_DRAW);
     gpu.cluster_corners.set(std::span<const std::uint32_t>(clustered.corners), GL_STATIC_DRAW);
     gpu.triangle_clusters = std::move(clustered.clusters);
     gpu.triangle_bounds = clustered.all;
-    gpu.outward_closed = geo::is_outward_closed(mesh);
+    gpu.outward_closed = geo::is_outward_closed(pieces);
     gpu.has_closed_clusters =
         std::any_of(gpu.triangle_clusters.begin(), gpu.triangle_clusters.end(),
                     [](const geo::TriangleCluster& k) { return k.closed; });

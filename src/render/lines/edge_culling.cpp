@@ -111,7 +111,8 @@ void append_edge_work(const geo::ClusteredEdges& clusters, const glm::mat4& mode
             stats.edges_prefiltered += count;
             std::uint32_t listed = 0;
             for (std::uint32_t e = k.first; e < k.first + count; ++e) {
-                if (!may_be_feature(*prefilter, e, eye, cos_crease)) continue;
+                if (!may_be_feature(prefilter->edges[e], clusters.crease_keys[e], eye, cos_crease))
+                    continue;
                 work.push_back(EdgeWorkItem(instance, e, bounds_index, listed == 0 ? 1u : 0u));
                 ++listed;
             }

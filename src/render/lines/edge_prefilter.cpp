@@ -34,7 +34,6 @@ EdgeFacingTable build_edge_facing_table(const geo::AdjacencyMesh& mesh,
         p.edges.push_back({mesh.positions[e.a], glm::vec3(face_normals[e.face_a]),
                            has_b ? glm::vec3(face_normals[e.face_b]) : glm::vec3(0.0f)});
     }
-    p.crease_keys = clusters.crease_keys;
     return p;
 }
 
@@ -50,11 +49,9 @@ bool uses_edge_prefilter(const RenderSettings& settings, bool software_rasterise
     return software_rasteriser;
 }
 
-bool may_be_feature(const EdgeFacingTable& p, std::uint32_t e, const glm::vec3& eye,
-                    float cos_crease) {
+bool may_be_feature(const EdgeFacing& f, float crease_key, const glm::vec3& eye, float cos_crease) {
     // Creases, boundaries and material boundaries sort below any crease threshold they pass.
-    if (p.crease_keys[e] < cos_crease) return true;
-    const EdgeFacing& f = p.edges[e];
+    if (crease_key < cos_crease) return true;
     const glm::vec3 to_eye = eye - f.a;
     const int a = facing(f.n_a, to_eye);
     if (a == 0) return true;

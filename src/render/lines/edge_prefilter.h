@@ -28,23 +28,22 @@ struct EdgeFacing {
     glm::vec3 n_b;  // face B's; zero without face B (the test is then unsure: kept)
 };
 
+// The crease keys it needs too are the clustered list's own (geo::ClusteredEdges::crease_keys).
 struct EdgeFacingTable {
-    std::vector<EdgeFacing> edges;   // in the clustered list's order
-    std::vector<float> crease_keys;  // geo::ClusteredEdges::crease_keys
+    std::vector<EdgeFacing> edges;  // in the clustered list's order
 };
 
 EdgeFacingTable build_edge_facing_table(const geo::AdjacencyMesh& mesh,
                                         const geo::ClusteredEdges& clusters,
                                         const std::vector<glm::vec4>& face_normals);
 
-// Whether edge e (of the clustered list) may be a feature edge of an instance whose eye, in
-// object space, is `eye`, with creases below `cos_crease`: false only where edges.comp would
-// surely find it no feature (both faces clearly on one side of the eye, and no crease,
-// boundary or material key below cos_crease).
 // Whether the frame's edges go through the CPU test first (RenderSettings::edge_prefilter).
 bool uses_edge_prefilter(const RenderSettings& settings, bool software_rasteriser);
 
-bool may_be_feature(const EdgeFacingTable& p, std::uint32_t e, const glm::vec3& eye,
-                    float cos_crease);
+// Whether an edge (its facing record and crease key) may be a feature edge of an instance
+// whose eye, in object space, is `eye`, with creases below `cos_crease`: false only where
+// edges.comp would surely find it no feature (both faces clearly on one side of the eye, and
+// no crease, boundary or material key below cos_crease).
+bool may_be_feature(const EdgeFacing& f, float crease_key, const glm::vec3& eye, float cos_crease);
 
 }  // namespace bz::render

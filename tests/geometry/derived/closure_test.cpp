@@ -66,6 +66,22 @@ TEST(Closure, EachPieceIsJudgedOnItsOwnWithItsBox) {
     EXPECT_FALSE(piece_at({8.5f, 0.5f, 0.5f}).outward_closed) << "inside out";
     EXPECT_FALSE(piece_at({-1.0f, 5.0f, -1.0f}).outward_closed) << "sheet";
     EXPECT_FALSE(is_outward_closed(mesh));
+    EXPECT_FALSE(is_outward_closed(p));
+}
+
+// From the pieces the answer is the mesh's own (MeshCache::upload finds them once for this
+// and for the triangle clusters); an empty mesh is not closed either way.
+TEST(Closure, ThePiecesGiveTheMeshsAnswer) {
+    const TriMesh two =
+        joined(box(glm::vec3(1.0f)), box(glm::vec3(0.5f)), {5.0f, 0.0f, 0.0f}, false);
+    const TriMesh flipped =
+        joined(box(glm::vec3(2.0f)), box(glm::vec3(0.5f)), {6.0f, 0.0f, 0.0f}, true);
+    for (const TriMesh& m : {box(glm::vec3(1.0f)), open_box(glm::vec3(1.0f)), two, flipped}) {
+        const AdjacencyMesh mesh = build_line_mesh(m);
+        EXPECT_EQ(is_outward_closed(connected_pieces(mesh)), is_outward_closed(mesh));
+    }
+    EXPECT_FALSE(is_outward_closed(Pieces{}));
+    EXPECT_FALSE(is_outward_closed(AdjacencyMesh{}));
 }
 
 }  // namespace
