@@ -72,6 +72,7 @@ struct PassContext {
     // The compute prepass's work items (lines/prepass_raster.h); null: no compute prepass.
     gl::Buffer* raster_work = nullptr;
     bool software_rasteriser = false;  // llvmpipe and the like (gl::is_software_renderer)
+    bool clears_by_compute = false;    // colour clears by a compute shader (clear_image.h)
     // What the passes before this one wrote this frame (frame_passes.h declares it); a held
     // frame starts with what the frame it holds wrote. Null: nothing (the mask passes).
     const FrameResources* frame = nullptr;

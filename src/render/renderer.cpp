@@ -6,6 +6,7 @@
 
 #include "core/error.h"
 #include "gl/driver.h"
+#include "render/clear_image.h"
 #include "render/frame_passes.h"
 #include "render/lines/edge_prefilter.h"
 #include "render/lines/intersection_records.h"
@@ -63,6 +64,9 @@ struct Renderer::Impl {
     bool edges_filled_last_frame = false;
     // Software rasteriser (llvmpipe) or hardware GPU: LineMethod::automatic picks by it.
     const bool software = gl::is_software_renderer();
+    // ColourClears::automatic on a GPU: both clear paths timed at this size (clear_image.h),
+    // once per size.
+    std::optional<ClearTiming> clear_timing;
 
     Impl(const RenderSettings& s, int w, int h, gl::TimingMethod timing)
         : settings(s),
@@ -82,6 +86,7 @@ struct Renderer::Impl {
     // New targets and history for the size and settings: nothing allocated until a frame's
     // list names it (ensure_targets), nothing kept.
     void remake(HistoryCut why) {
+        if (why == HistoryCut::resize) clear_timing.reset();
         targets = make_targets(width, height, settings, {});
         history = FrameHistory::make(width, height, 1, 1, {}, why);
     }
@@ -106,6 +111,19 @@ struct Renderer::Impl {
 
     const StyleDef& style_of(const scene::FrameList& frame) const {
         return style_def(settings.style ? *settings.style : frame.style);
+    }
+
+    bool clears_by_compute() {
+        switch (clear_path(settings, software)) {
+            case ClearPath::pipeline:
+                return false;
+            case ClearPath::compute:
+                return true;
+            case ClearPath::measure:
+                break;
+        }
+        if (!clear_timing) clear_timing = time_colour_clears(programs.clear_image, width, height);
+        return clear_timing->compute_is_faster();
     }
 
     PassContext context(const scene::MeshLibrary& meshes, const FrameBatches& batches,
@@ -137,6 +155,7 @@ struct Renderer::Impl {
                            .triangle_draws = &triangle_draws,
                            .raster_work = &raster_work,
                            .software_rasteriser = software,
+                           .clears_by_compute = clears_by_compute(),
                            .intersections = &intersection_buffer,
                            .intersection_count = intersection_count};
     }
@@ -501,6 +520,12 @@ ResourceSet Renderer::history_held() const {
 }
 HistoryCut Renderer::history_last_cut() const {
     return impl_->history.last_cut();
+}
+bool Renderer::colour_clears_by_compute() {
+    return impl_->clears_by_compute();
+}
+std::optional<ClearTiming> Renderer::colour_clear_timing() const {
+    return impl_->clear_timing;
 }
 const FrameStats& Renderer::stats() const {
     return impl_->stats;

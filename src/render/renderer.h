@@ -3,11 +3,13 @@
 //   prepass -> [edges -> visibility ->] lines -> hud -> bloom -> [tiles ->] composite,
 // each in its own file under src/render/ and timed under its own name.
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "gl/pass_timer.h"
 #include "gl/texture.h"
+#include "render/clear_image.h"
 #include "render/frame_history.h"
 #include "render/frame_resources.h"
 #include "render/gpu_scene/intersection_cache.h"
@@ -100,6 +102,11 @@ class Renderer {
     // GPU meshes uploaded so far: one per model used, plus simplified ones for distance LOD.
     std::size_t gpu_mesh_uploads() const;
     const FrameStats& stats() const;
+    // Whether colour clears run by compute (clear_image.h); under ColourClears::automatic on a
+    // GPU this times both paths at the frame's size first, once per size.
+    bool colour_clears_by_compute();
+    // That timing, where one was taken.
+    std::optional<ClearTiming> colour_clear_timing() const;
     // The edge clusters hierarchical-Z culling skipped in the last frame's edges pass
     // (lines/hiz_culling.h). Reads the GPU's count now: a stall, for reports and tests.
     std::size_t hiz_hidden_clusters() const;

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cstdlib>
 
+#include "render/programs.h"
 #include "render/render_fixture.h"
 
 namespace bz::test {
@@ -58,15 +59,36 @@ class ColourClearsTest : public RenderTest {
     scene::FrameList before;
 };
 
-TEST_F(ColourClearsTest, AutomaticClearsByComputeOnAHardwareGpuOnly) {
+TEST_F(ColourClearsTest, AutomaticMeasuresOnAHardwareGpuOnly) {
     render::RenderSettings s;
     EXPECT_EQ(s.colour_clears, render::ColourClears::automatic);
-    EXPECT_FALSE(render::clears_by_compute(s, true));
-    EXPECT_TRUE(render::clears_by_compute(s, false));
+    EXPECT_EQ(render::clear_path(s, true), render::ClearPath::pipeline);
+    EXPECT_EQ(render::clear_path(s, false), render::ClearPath::measure);
     s.colour_clears = render::ColourClears::compute;
-    EXPECT_TRUE(render::clears_by_compute(s, true));
+    EXPECT_EQ(render::clear_path(s, true), render::ClearPath::compute);
     s.colour_clears = render::ColourClears::pipeline;
-    EXPECT_FALSE(render::clears_by_compute(s, false));
+    EXPECT_EQ(render::clear_path(s, false), render::ClearPath::pipeline);
+    // This machine's software rasteriser takes glClear without timing anything; a forced
+    // path is taken as it is.
+    settings.colour_clears = render::ColourClears::automatic;
+    renderer->set_settings(settings);
+    renderer->render(frame, meshes, render::Renderer::kOffscreen);
+    EXPECT_FALSE(renderer->colour_clears_by_compute());
+    EXPECT_FALSE(renderer->colour_clear_timing().has_value());
+    settings.colour_clears = render::ColourClears::compute;
+    renderer->set_settings(settings);
+    EXPECT_TRUE(renderer->colour_clears_by_compute());
+}
+
+// The timing the GPU's choice rests on runs its two clears and reads two times back (on a
+// software rasteriser the times mean little, but the calls are the GPU's own).
+TEST_F(ColourClearsTest, TimingBothPathsReadsTwoTimes) {
+    const render::Programs programs = render::load_programs(settings);
+    const render::ClearTiming t = render::time_colour_clears(programs.clear_image, 64, 48);
+    EXPECT_GE(t.pipeline_ms, 0.0);
+    EXPECT_GE(t.compute_ms, 0.0);
+    EXPECT_LT(t.pipeline_ms, 1000.0);
+    EXPECT_LT(t.compute_ms, 1000.0);
 }
 
 TEST_F(ColourClearsTest, EveryStyleDrawsTheSameFrameWithEitherPath) {

@@ -123,7 +123,7 @@ Json meta_json(const BenchMeta& m) {
     j["load_average_before"] = m.load_before;
     j["load_average_after"] = m.load_after;
     j["auto_line_method"] = m.auto_line_method;
-    if (!m.colour_clears.empty()) j["colour_clears"] = m.colour_clears;
+    if (!m.colour_clears.is_null()) j["colour_clears"] = m.colour_clears;
     return j;
 }
 

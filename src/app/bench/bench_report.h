@@ -23,8 +23,10 @@ struct BenchMeta {
     gl::TimingMethod timing = gl::TimingMethod::off;
     double load_before = -1.0;  // 1-minute load average, -1 if unknown
     double load_after = -1.0;
-    Json auto_line_method;      // line_method_profile_json: LineMethod::automatic's crossing
-    std::string colour_clears;  // "pipeline" or "compute" (render/clear_image.h); empty: unsaid
+    Json auto_line_method;  // line_method_profile_json: LineMethod::automatic's crossing
+    // The path colour clears took (render/clear_image.h) and, where auto timed both, their
+    // times: {"path": "compute", "measured_ms": {...}}; null: not said (sweep, scaling).
+    Json colour_clears;
 };
 
 // "cpu_finish" / "gpu_queries" and a sentence on what it measures.

@@ -30,6 +30,16 @@ namespace bz::app {
 
 namespace {
 
+// summary.json's colour_clears: the path the frames' clears took and, where auto timed both
+// paths on this GPU, the times (render/clear_image.h).
+Json colour_clears_json(render::Renderer& r) {
+    Json j;
+    j["path"] = r.colour_clears_by_compute() ? "compute" : "pipeline";
+    if (const std::optional<render::ClearTiming> t = r.colour_clear_timing())
+        j["measured_ms"] = {{"pipeline", t->pipeline_ms}, {"compute", t->compute_ms}};
+    return j;
+}
+
 namespace fs = std::filesystem;
 
 // Every file this run reads, which no output may replace.
@@ -228,8 +238,6 @@ int run(const BenchOptions& o) {
     meta.software = context->is_software();
     meta.timing = timing;
     meta.auto_line_method = line_method_profile_json(profile);
-    meta.colour_clears =
-        render::clears_by_compute(settings, context->is_software()) ? "compute" : "pipeline";
     meta.load_before = load_average();
     const fs::path out(o.out);
 
@@ -294,6 +302,7 @@ int run(const BenchOptions& o) {
         ProgressBar bar(settings.preset, meta.frames);
         runs.push_back(run_frames(renderer, frames, scene.meshes(), settings.preset, settings,
                                   [&bar] { bar(); }));
+        meta.colour_clears = colour_clears_json(renderer);
         meta.load_after = load_average();
         plot_frame_times(runs.front(), settings.preset + ": frame time by pass", font,
                          out / "frametime.png");

@@ -62,6 +62,13 @@ void print_timings(const render::Renderer& r,
                      t.clusters, t.outside_frustum, t.facing_away, t.one_sided, t.triangles_drawn,
                      t.triangles, t.triangles_computed);
     }
+    // Where auto timed both clear paths (a hardware GPU), what it found.
+    if (const std::optional<render::ClearTiming> ct = r.colour_clear_timing()) {
+        std::fprintf(stdout,
+                     "colour clears by %s (timed at %dx%d: glClear %.3f ms, compute %.3f ms)\n",
+                     ct->compute_is_faster() ? "compute" : "glClear", r.width(), r.height(),
+                     ct->pipeline_ms, ct->compute_ms);
+    }
 }
 
 // Lays out `copies` instances on a square grid in the xz plane; returns their joint bounds.
