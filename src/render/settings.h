@@ -35,7 +35,7 @@ enum class EdgePrefilter {
 // Who clears the frame's full-screen colour images (render/clear_image.h). The same pixels
 // either way.
 enum class ColourClears {
-    automatic,  // compute on a hardware GPU, the pipeline on a software rasteriser
+    automatic,  // the pipeline on a software rasteriser; on a GPU, whichever timed faster
     pipeline,   // glClear: the raster back end writes every pixel
     compute,    // a compute shader writes every texel, past the raster back end
 };

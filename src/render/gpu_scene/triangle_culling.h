@@ -32,8 +32,8 @@ struct TriangleCullStats {
     std::size_t triangles_drawn = 0;  // triangles of the kept clusters
     // Of those, the triangles of clusters rasterised by the compute prepass (RasterRoute).
     std::size_t triangles_computed = 0;
-    std::size_t one_sided =
-        0;  // kept clusters drawn with back faces culled where the batch keeps both
+    // Kept clusters drawn with back faces culled where the batch keeps both.
+    std::size_t one_sided = 0;
     TriangleCullStats& operator+=(const TriangleCullStats& o) {
         one_sided += o.one_sided;
         clusters += o.clusters;
