@@ -29,7 +29,8 @@ const char* const kBenchUsage =
     "                      [--timing auto|cpu|gpu] [--beam classic|mame] [--no-phosphor]\n"
     "                      [--clears auto|pipeline|compute] [--prepass-raster "
     "auto|pipeline|compute]\n"
-    "                      [--edge-prefilter auto|gpu|cpu]\n"
+    "                      [--edge-prefilter auto|gpu|cpu] [--bloom-chain "
+    "auto|pipeline|compute]\n"
     "                      [--series-max TRIANGLES] [--overwrite]\n"
     "       beamzone bench --accuracy [--models-dir DIR] [--model FILE]... [--size WxH]\n"
     "                      [--frames N] [--out DIR] [--timing auto|cpu|gpu]\n"
@@ -63,8 +64,9 @@ const char* const kBenchUsage =
     "--clears picks who clears the frame's colour images (not with --sweep): the GL pipeline\n"
     "or a compute shader (auto: glClear on a software rasteriser; on a GPU both timed at the\n"
     "frame's size and the faster kept; the same pixels). summary.json gives the path and times.\n"
-    "--prepass-raster and --edge-prefilter as for `render` (see `render --help`; not with\n"
-    "--sweep): the same frames, other work.\n"
+    "--prepass-raster, --edge-prefilter and --bloom-chain as for `render` (see `render "
+    "--help`;\n"
+    "not with --sweep): the same frames, other work.\n"
     "--accuracy needs no LEVEL: it scores every preset and the baseline on real models\n"
     "(default: 16 files under /usr/share/assimp/models; --model FILE, repeatable, relative to\n"
     "--models-dir, replaces the list) from 4 views each (framed, behind, close, above) at\n"
@@ -114,6 +116,8 @@ BenchOptions parse_bench_args(Args args) {
             o.prepass_raster = parse_prepass_raster(a, cur.value(a));
         } else if (a == "--edge-prefilter") {
             o.edge_prefilter = parse_edge_prefilter(a, cur.value(a));
+        } else if (a == "--bloom-chain") {
+            o.bloom_chain = parse_bloom_chain(a, cur.value(a));
         } else if (a == "--models-dir") {
             o.models_dir = cur.value(a);
         } else if (a == "--model") {
@@ -149,10 +153,10 @@ BenchOptions parse_bench_args(Args args) {
         if (preset_given) throw UsageError("--preset and --accuracy exclude each other");
         if (!o.replay.empty()) throw UsageError("--replay and --accuracy exclude each other");
         if (o.no_phosphor) throw UsageError("--no-phosphor and --accuracy exclude each other");
-        if (o.colour_clears || o.prepass_raster || o.edge_prefilter)
+        if (o.colour_clears || o.prepass_raster || o.edge_prefilter || o.bloom_chain)
             throw UsageError(
-                "--clears, --prepass-raster and --edge-prefilter exclude --accuracy (it times "
-                "every preset as it is)");
+                "--clears, --prepass-raster, --edge-prefilter and --bloom-chain exclude --accuracy "
+                "(it times every preset as it is)");
         if (!o.frames_given) o.frames = 6;
         if (!o.size_given) o.size = {640, 480};
         if (o.out.empty()) throw UsageError("--out needs a directory");
@@ -170,10 +174,11 @@ BenchOptions parse_bench_args(Args args) {
     if (o.no_phosphor && o.mode == BenchMode::sweep)
         throw UsageError(
             "--no-phosphor and --sweep exclude each other (the sweep sets every look)");
-    if ((o.colour_clears || o.prepass_raster || o.edge_prefilter) && o.mode == BenchMode::sweep)
+    if ((o.colour_clears || o.prepass_raster || o.edge_prefilter || o.bloom_chain) &&
+        o.mode == BenchMode::sweep)
         throw UsageError(
-            "--clears, --prepass-raster and --edge-prefilter exclude --sweep (the sweep times "
-            "every configuration as it is)");
+            "--clears, --prepass-raster, --edge-prefilter and --bloom-chain exclude --sweep (the "
+            "sweep times every configuration as it is)");
     if (o.mode == BenchMode::scaling && !o.frames_given) o.frames = 40;
     // Seven configurations: fewer frames each keep a sweep on llvmpipe within minutes.
     if (o.mode == BenchMode::sweep && !o.frames_given) o.frames = 240;

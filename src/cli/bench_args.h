@@ -36,6 +36,7 @@ struct BenchOptions {
     // --clears, --prepass-raster, --edge-prefilter; none: the settings' defaults (auto)
     std::optional<render::ColourClears> colour_clears;
     std::optional<render::PrepassRaster> prepass_raster;
+    std::optional<render::BloomChain> bloom_chain;  // --bloom-chain
     std::optional<render::EdgePrefilter> edge_prefilter;
     bool size_given = false;
     std::string models_dir = "/usr/share/assimp/models";

@@ -43,6 +43,12 @@ render::ColourClears parse_colour_clears(std::string_view option, std::string_vi
         option, text, {{"auto", automatic}, {"pipeline", pipeline}, {"compute", compute}});
 }
 
+render::BloomChain parse_bloom_chain(std::string_view option, std::string_view text) {
+    using enum render::BloomChain;
+    return parse_choice<render::BloomChain>(
+        option, text, {{"auto", automatic}, {"pipeline", pipeline}, {"compute", compute}});
+}
+
 render::PrepassRaster parse_prepass_raster(std::string_view option, std::string_view text) {
     using enum render::PrepassRaster;
     return parse_choice<render::PrepassRaster>(

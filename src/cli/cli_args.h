@@ -42,8 +42,10 @@ T parse_choice(std::string_view option, std::string_view text,
                std::initializer_list<Choice<T>> choices);
 
 // The renderer's switches that `render` and `bench` share: --clears auto|pipeline|compute,
-// --prepass-raster auto|pipeline|compute and --edge-prefilter auto|gpu|cpu.
+// --prepass-raster auto|pipeline|compute, --edge-prefilter auto|gpu|cpu and
+// --bloom-chain auto|pipeline|compute.
 render::ColourClears parse_colour_clears(std::string_view option, std::string_view text);
+render::BloomChain parse_bloom_chain(std::string_view option, std::string_view text);
 render::PrepassRaster parse_prepass_raster(std::string_view option, std::string_view text);
 render::EdgePrefilter parse_edge_prefilter(std::string_view option, std::string_view text);
 

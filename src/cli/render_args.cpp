@@ -23,7 +23,8 @@ const std::string& render_usage() {
             "                       [--lit-share] [--no-cluster-culling] [--hiz-culling]\n"
             "                       [--prepass-raster auto|pipeline|compute] "
             "[--edge-prefilter auto|gpu|cpu]\n"
-            "                       [--clears auto|pipeline|compute]\n"
+            "                       [--clears auto|pipeline|compute] "
+            "[--bloom-chain auto|pipeline|compute]\n"
             "                       [--material-lines] [--intersection-lines]\n"
             "                       [--svg lines.svg]\n"
             "                       [--overwrite]\n"
@@ -63,6 +64,11 @@ const std::string& render_usage() {
             "shader, past a GPU's raster back end (auto: glClear on a software rasteriser; on a "
             "GPU\n"
             "both timed at the frame's size, the faster kept and printed; the same pixels).\n"
+            "--bloom-chain: who computes the mame beam's bloom levels past the first: one draw "
+            "per\n"
+            "level each way, or one compute dispatch for them all (auto: compute on a software\n"
+            "rasteriser, where each draw costs more than its texels; the same glow up to "
+            "rounding).\n"
             "--material-lines draws the edges between faces of different materials as lines too\n"
             "(a model whose parts have their own materials; a level's [render] material_lines).\n"
             "--intersection-lines draws where surfaces cross as lines too: two objects (--copies\n"
@@ -132,6 +138,8 @@ RenderOptions parse_render_args(Args args) {
             o.edge_prefilter = parse_edge_prefilter(a, cur.value(a));
         } else if (a == "--clears") {
             o.colour_clears = parse_colour_clears(a, cur.value(a));
+        } else if (a == "--bloom-chain") {
+            o.bloom_chain = parse_bloom_chain(a, cur.value(a));
         } else if (a == "--shading") {
             const std::string_view s = cur.value(a);
             if (s != "flat" && s != "smooth")

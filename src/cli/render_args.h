@@ -34,6 +34,8 @@ struct RenderOptions {
     bool hiz_culling = false;     // --hiz-culling: skip edge clusters the prepass hides
     // --prepass-raster: who rasterises the prepass's small triangles (lines/prepass_raster.h)
     render::PrepassRaster prepass_raster = render::PrepassRaster::automatic;
+    // --bloom-chain: who computes the mip-chain bloom past its first level (pass_bloom.cpp)
+    render::BloomChain bloom_chain = render::BloomChain::automatic;
     // --edge-prefilter: who rules out edges before edges.comp (lines/edge_prefilter.h)
     render::EdgePrefilter edge_prefilter = render::EdgePrefilter::automatic;
     // --clears: who clears the frame's colour images (render/clear_image.h)

@@ -158,4 +158,13 @@ void Program::set_array(const char* n, const float* v, int count) const {
     if (const GLint at = location(n); at >= 0) glProgramUniform1fv(id(), at, count, v);
 }
 
+void Program::set_array(const char* n, const int* v, int count) const {
+    if (const GLint at = location(n); at >= 0) glProgramUniform1iv(id(), at, count, v);
+}
+
+void Program::set_array(const char* n, const glm::ivec2* v, int count) const {
+    if (const GLint at = location(n); at >= 0)
+        glProgramUniform2iv(id(), at, count, glm::value_ptr(v[0]));
+}
+
 }  // namespace bz::gl

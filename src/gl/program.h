@@ -45,6 +45,8 @@ class Program {
     void set(const char* name, const glm::vec4& v) const;
     void set(const char* name, const glm::mat4& v) const;
     void set_array(const char* name, const float* v, int count) const;
+    void set_array(const char* name, const int* v, int count) const;
+    void set_array(const char* name, const glm::ivec2* v, int count) const;
 
     // The location of `name`: -1 when declared but inactive, or when unknown (then reported).
     GLint location(std::string_view name) const;

@@ -133,6 +133,7 @@ Programs load_programs(const RenderSettings& settings) {
     }
     p.tile_list = program({stage(GL_COMPUTE_SHADER, "beam/tile_list.comp")}, {lit_tile_size});
     p.clear_image = program({stage(GL_COMPUTE_SHADER, "clear_image.comp")});
+    p.bloom_chain = program({stage(GL_COMPUTE_SHADER, "beam/bloom_chain.comp")});
     p.bloom_up = program({stage(GL_VERTEX_SHADER, "fullscreen.vert"),
                           stage(GL_FRAGMENT_SHADER, "beam/bloom_up.frag")},
                          {"LIT_TILES 1", lit_tile_size});

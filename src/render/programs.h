@@ -47,6 +47,7 @@ struct Programs {
     std::array<gl::Program, 2> composite_tiles_phosphor;
     gl::Program tile_list;           // tile_list.comp: the lit tiles the composite shades
     gl::Program clear_image;         // clear_image.comp: a colour clear by compute (clear_image.h)
+    gl::Program bloom_chain;         // bloom_chain.comp: the mip chain past level 0 in one dispatch
     gl::Program bloom_up;            // one step up the bloom chain (BloomKind::mip_chain)
     gl::Program bloom_up_glow;       // ... whose last step keeps the glow's persistence
     gl::Program outline_prepass;     // image-space baseline: depth + face normals

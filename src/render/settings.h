@@ -40,6 +40,14 @@ enum class ColourClears {
     compute,    // a compute shader writes every texel, past the raster back end
 };
 
+// Who computes the bloom's mip chain past its first level (BloomKind::mip_chain;
+// pass_bloom.cpp). The same sums up to the rounding of the levels' storage.
+enum class BloomChain {
+    automatic,  // compute on a software rasteriser, the pipeline on a GPU
+    pipeline,   // one draw per level down and up: about 16 at a quarter of 1280x720
+    compute,    // one workgroup walks every level in one dispatch (bloom_chain.comp)
+};
+
 // How feature lines are found.
 enum class LineMethod {
     geometry_shader,  // a geometry shader per triangle on triangle adjacency (pass_lines.cpp)
@@ -184,6 +192,7 @@ struct RenderSettings {
     PrepassRaster prepass_raster = PrepassRaster::automatic;
     EdgePrefilter edge_prefilter = EdgePrefilter::automatic;
     ColourClears colour_clears = ColourClears::automatic;
+    BloomChain bloom_chain = BloomChain::automatic;
     bool lod = true;           // raise the crease threshold / use simplified meshes far away
     bool count_edges = false;  // count emitted feature edges (costs a query per frame)
     LineMethod method = kDefaultLineMethod;

@@ -34,6 +34,7 @@ std::vector<std::string> build_defines() {
         define("EDGE_MATERIALS_BINDING", kEdgeMaterialsBinding),
         define("INSTANCES_BINDING", kInstancesBinding),
         define("TILE_LIST_BINDING", kTileListBinding),
+        define("BLOOM_CHAIN_BINDING", kBloomChainBinding),
         define("EDGE_LIST_BINDING", kEdgeListBinding),
         define("EDGE_POSITIONS_BINDING", kEdgePositionsBinding),
         define("EDGE_RECORDS_BINDING", kEdgeRecordsBinding),
@@ -76,6 +77,8 @@ std::vector<std::string> build_defines() {
         define("IMAGE_UNIT_DEPTH_TILES", kImageUnitDepthTiles),
         define("IMAGE_UNIT_RASTER_DEPTH", kImageUnitRasterDepth),
         define("IMAGE_UNIT_CLEAR", kImageUnitClear),
+        define("IMAGE_UNIT_BLOOM_LEVEL", kImageUnitBloomLevel),
+        define("MAX_BLOOM_LEVELS", static_cast<unsigned>(kMaxBloomLevels)),
         define("DEPTH_TILE_SIZE", static_cast<unsigned>(kDepthTileSize)),
         define("COARSE_DEPTH_TILES", static_cast<unsigned>(kCoarseDepthTiles)),
     };

@@ -40,7 +40,8 @@ inline constexpr unsigned kVertexBufferNormals = 2;
 // never uses two that share a number.
 inline constexpr unsigned kEdgeCosinesBinding = 0;  // lines.geom: 3 crease cosines per triangle
 inline constexpr unsigned kInstancesBinding = 1;    // the frame's InstanceData
-inline constexpr unsigned kTileListBinding = 6;  // the composite's lit-tile list (tile_list.comp)
+inline constexpr unsigned kTileListBinding = 6;    // the composite's lit-tile list (tile_list.comp)
+inline constexpr unsigned kBloomChainBinding = 7;  // bloom_chain.comp's levels past the first
 inline constexpr unsigned kEdgeMaterialsBinding = 11;  // lines.geom: material boundary bits
 // prepass_raster.comp (lines/prepass_raster.h): the mesh's cluster vertex lists and triangle
 // corners, and the frame's work items; it reads positions at kEdgePositionsBinding.
@@ -80,6 +81,10 @@ inline constexpr unsigned kImageUnitBeamTiles = 3;    // beam_tiles.glsl
 inline constexpr unsigned kImageUnitDepthTiles = 0;   // depth_tiles.comp's output
 inline constexpr unsigned kImageUnitRasterDepth = 0;  // the compute prepass's depth (R32UI)
 inline constexpr unsigned kImageUnitClear = 4;        // clear_image.comp's image
+inline constexpr unsigned kImageUnitBloomLevel = 5;   // bloom_chain.comp's output, level 1
+
+// The most levels a mip-chain bloom has (BeamSettings::mip_weights beyond are ignored).
+inline constexpr std::size_t kMaxBloomLevels = 12;
 
 // Every constant above and the edge buffer's bindings as "NAME value" for gl::Program: the
 // instance indices as uint literals ("6u"), since the shaders index with uints; the rest plain.

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "render/lines/hiz_culling.h"
+#include "render/shader_interface.h"
 
 namespace bz::render {
 
@@ -23,13 +24,18 @@ GLenum depth_format(const RenderSettings& s) {
 void make_bloom_chain(Targets& t, glm::ivec2 b, const RenderSettings& s) {
     if (s.beam.bloom == BloomKind::mip_chain) {
         int lw = b.x, lh = b.y;
-        const std::size_t levels = std::clamp<std::size_t>(s.beam.mip_weights.size(), 1, 12);
+        std::size_t texels = 0;  // levels 1 .. n-1 (Targets::bloom_chain_texels)
+        const std::size_t levels =
+            std::clamp<std::size_t>(s.beam.mip_weights.size(), 1, kMaxBloomLevels);
         for (std::size_t k = 0; k < levels; ++k) {
             if (k > 0 && lw == 1 && lh == 1) break;
             t.bloom_mips.emplace_back(lw, lh, GL_RGBA16F, gl::Filter::linear);
+            if (k > 0) texels += static_cast<std::size_t>(lw) * static_cast<std::size_t>(lh);
             lw = std::max(1, lw / 2);
             lh = std::max(1, lh / 2);
         }
+        t.bloom_chain_texels.set_data(nullptr, std::max<std::size_t>(texels, 1) * 4 * sizeof(float),
+                                      GL_DYNAMIC_COPY);
     } else {
         t.bloom_a = gl::Texture2D(b.x, b.y, GL_RGBA16F, gl::Filter::linear);
         t.bloom_b = gl::Texture2D(b.x, b.y, GL_RGBA16F, gl::Filter::linear);
@@ -64,6 +70,7 @@ void make_images(Targets& t, Targets& old, const RenderSettings& s, ResourceSet 
             t.bloom_a = std::move(old.bloom_a);
             t.bloom_b = std::move(old.bloom_b);
             t.bloom_mips = std::move(old.bloom_mips);
+            t.bloom_chain_texels = std::move(old.bloom_chain_texels);
         } else {
             make_bloom_chain(t, b, s);
         }
@@ -217,6 +224,7 @@ std::size_t allocated_bytes(const Targets& t) {
     for (const gl::Texture2D& level : t.bloom_mips) bytes += texture_bytes(level);
     for (const gl::Texture2D& layer : t.occlusion_layers) bytes += texture_bytes(layer);
     if (t.lit_tiles) bytes += t.tile_list.size();
+    if (!t.bloom_mips.empty()) bytes += t.bloom_chain_texels.size();
     return bytes;
 }
 

@@ -58,6 +58,9 @@ struct Targets {
     // BloomKind::mip_chain: level 0 at the bloom resolution, each next one half as large.
     std::vector<gl::Texture2D> bloom_mips;
     std::vector<gl::Framebuffer> bloom_mip_fbos;
+    // BloomChain::compute: levels 1 .. n-1 as vec4 texels, one level after another
+    // (bloom_chain.comp), in place of the textures past level 1.
+    gl::Buffer bloom_chain_texels;
     // Sparse composite (pass_tiles.cpp, shaders/beam/lit_tiles.glsl): the lit-tile marks (R8UI,
     // one texel per kLitTileSize square), cleared by the bloom, marked by its first downsample
     // (beam light) and its last step (glow); and the list of tiles to shade that tile_list.comp

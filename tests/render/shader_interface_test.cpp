@@ -109,6 +109,7 @@ std::vector<std::pair<std::string, const bz::gl::Program*>> every_program(
         {"composite_tiles_phosphor[1]", &p.composite_tiles_phosphor[1]},
         {"tile_list", &p.tile_list},
         {"clear_image", &p.clear_image},
+        {"bloom_chain", &p.bloom_chain},
         {"bloom_up", &p.bloom_up},
         {"bloom_up_glow", &p.bloom_up_glow},
         {"outline_prepass", &p.outline_prepass},

@@ -186,6 +186,7 @@ int run(const BenchOptions& o) {
     if (o.no_phosphor) settings.beam.phosphor = render::PhosphorDecay::off;
     if (o.colour_clears) settings.colour_clears = *o.colour_clears;
     if (o.prepass_raster) settings.prepass_raster = *o.prepass_raster;
+    if (o.bloom_chain) settings.bloom_chain = *o.bloom_chain;
     if (o.edge_prefilter) settings.edge_prefilter = *o.edge_prefilter;
     settings.style = o.style;
     std::optional<game::replay::Replay> replay;

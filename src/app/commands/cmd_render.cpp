@@ -136,6 +136,7 @@ int cmd_render(Args args) {
     settings.cluster_culling = o.cluster_culling;
     settings.hiz_culling = o.hiz_culling;
     settings.prepass_raster = o.prepass_raster;
+    settings.bloom_chain = o.bloom_chain;
     settings.edge_prefilter = o.edge_prefilter;
     settings.colour_clears = o.colour_clears;
     settings.material_lines = o.material_lines;

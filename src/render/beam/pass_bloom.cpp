@@ -1,3 +1,4 @@
+#include <array>
 #include <cmath>
 #include <utility>
 
@@ -90,16 +91,25 @@ void gaussian_bloom(const PassContext& ctx, const gl::Texture2D& source,
     glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
-// MAME's bloom: a chain of levels, each half the size of the one before, summed with a
-// weight per level (BeamSettings::mip_weights). Wide, soft glow for little work: the levels
-// past the first cost a fraction of one full-resolution pass together.
-void mip_chain_bloom(const PassContext& ctx, const gl::Texture2D& source,
-                     const PhosphorStep* phosphor) {
+// Whether the chain past level 0 runs as one compute dispatch (BloomChain).
+bool chain_by_compute(const PassContext& ctx) {
+    switch (ctx.settings.bloom_chain) {
+        case BloomChain::pipeline:
+            return false;
+        case BloomChain::compute:
+            return true;
+        case BloomChain::automatic:
+            break;
+    }
+    return ctx.software_rasteriser;
+}
+
+// The chain's levels 1 .. n-1 down and back up to level 1 by the GL pipeline: one draw per
+// level each way, the way up blending each level's upsample onto the next finer one.
+void chain_by_pipeline(const PassContext& ctx) {
     Targets& t = ctx.targets;
     const auto& w = ctx.settings.beam.mip_weights;
     const std::size_t n = t.bloom_mips.size();
-    // Only the first level filters by brightness; the rest downsample what it kept.
-    first_downsample(ctx, source, ctx.settings.beam.bloom_threshold);
     const gl::Program& down = ctx.programs.bloom_down;
     down.use();
     bind_lit_tile_marks(down, t, false);  // only the first level's blocks are screen pixels
@@ -113,9 +123,6 @@ void mip_chain_bloom(const PassContext& ctx, const gl::Texture2D& source,
         t.bloom_mips[k - 1].bind(kTextureUnitSource);
         glDrawArrays(GL_TRIANGLES, 0, 3);
     }
-
-    float total = 0.0f;
-    for (std::size_t k = 0; k < n; ++k) total += mip_weight(w, k);
     const gl::Program& up = ctx.programs.bloom_up;
     up.use();
     up.set("u_final", 0);
@@ -129,8 +136,63 @@ void mip_chain_bloom(const PassContext& ctx, const gl::Texture2D& source,
         glDrawArrays(GL_TRIANGLES, 0, 3);
     }
     gl::apply(gl::PipelineState{});
+}
+
+// The same by one workgroup of bloom_chain.comp, through Targets::bloom_chain_texels.
+void chain_by_one_dispatch(const PassContext& ctx) {
+    Targets& t = ctx.targets;
+    const auto& w = ctx.settings.beam.mip_weights;
+    const std::size_t n = t.bloom_mips.size();
+    std::array<glm::ivec2, kMaxBloomLevels> sizes{};
+    std::array<int, kMaxBloomLevels> offsets{};  // into Targets::bloom_chain_texels
+    std::array<float, kMaxBloomLevels> ratios{};
+    int offset = 0;
+    for (std::size_t k = 0; k < n; ++k) {
+        sizes[k] = {t.bloom_mips[k].width(), t.bloom_mips[k].height()};
+        if (k == 0) continue;
+        offsets[k] = offset;
+        offset += sizes[k].x * sizes[k].y;
+        ratios[k - 1] = mip_weight(w, k) / mip_weight(w, k - 1);
+    }
+    const gl::Program& chain = ctx.programs.bloom_chain;
+    chain.use();
+    const int count = static_cast<int>(kMaxBloomLevels);
+    chain.set("u_levels", static_cast<int>(n));
+    chain.set_array("u_size", sizes.data(), count);
+    chain.set_array("u_offset", offsets.data(), count);
+    chain.set_array("u_ratio", ratios.data(), count);
+    t.bloom_mips[0].bind(kTextureUnitSource);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBloomChainBinding, t.bloom_chain_texels.id());
+    glBindImageTexture(kImageUnitBloomLevel, t.bloom_mips[1].id(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
+                       GL_RGBA16F);
+    glDispatchCompute(1, 1, 1);
+    // The last step samples level 1.
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+}
+
+// MAME's bloom: a chain of levels, each half the size of the one before, summed with a
+// weight per level (BeamSettings::mip_weights). Wide, soft glow for little work: the levels
+// past the first cost a fraction of one full-resolution pass together.
+void mip_chain_bloom(const PassContext& ctx, const gl::Texture2D& source,
+                     const PhosphorStep* phosphor) {
+    Targets& t = ctx.targets;
+    const auto& w = ctx.settings.beam.mip_weights;
+    const std::size_t n = t.bloom_mips.size();
+    // Only the first level filters by brightness; the rest downsample what it kept.
+    first_downsample(ctx, source, ctx.settings.beam.bloom_threshold);
+    if (n > 1) {
+        if (chain_by_compute(ctx)) {
+            chain_by_one_dispatch(ctx);
+        } else {
+            chain_by_pipeline(ctx);
+        }
+    }
+
+    float total = 0.0f;
+    for (std::size_t k = 0; k < n; ++k) total += mip_weight(w, k);
     t.bloom_out_fbo.bind();
-    const gl::Program& last = last_step(ctx, up, ctx.programs.bloom_up_glow, phosphor);
+    const gl::Program& last =
+        last_step(ctx, ctx.programs.bloom_up, ctx.programs.bloom_up_glow, phosphor);
     last.set("u_final", 1);
     last.set("u_floor", ctx.settings.beam.bloom_floor);
     last.set("u_ratio", n > 1 ? mip_weight(w, 1) / mip_weight(w, 0) : 0.0f);
