@@ -58,8 +58,8 @@ struct Targets {
     // BloomKind::mip_chain: level 0 at the bloom resolution, each next one half as large.
     std::vector<gl::Texture2D> bloom_mips;
     std::vector<gl::Framebuffer> bloom_mip_fbos;
-    // BloomChain::compute: levels 1 .. n-1 as vec4 texels, one level after another
-    // (bloom_chain.comp), in place of the textures past level 1.
+    // BloomChain::compute: the levels the compute walk takes (some of levels 1 .. n-1) as vec4
+    // texels, one level after another (bloom_chain.comp), in place of their textures.
     gl::Buffer bloom_chain_texels;
     // Sparse composite (pass_tiles.cpp, shaders/beam/lit_tiles.glsl): the lit-tile marks (R8UI,
     // one texel per kLitTileSize square), cleared by the bloom, marked by its first downsample

@@ -105,6 +105,15 @@ TEST_F(BloomChainTest, OddSizesAndAChainOfTwoLevels) {
     expect_same_glow("three levels");
 }
 
+// A level past the first too large to walk on one thread (160x120 from a full-resolution
+// bloom at 320x240) is drawn; the walk starts below it, and the draws go back up from there.
+TEST_F(BloomChainTest, LargeLevelsDrawnTheRestWalked) {
+    settings.bloom_resolution = render::BloomResolution::full;
+    expect_same_glow("full-resolution bloom, 320x240");
+    settings.beam.mip_weights = {1.0f, 0.8f};
+    expect_same_glow("full resolution, two levels: nothing walked");
+}
+
 // Compute on a software rasteriser, the pipeline on a GPU: the same bytes as that path.
 TEST_F(BloomChainTest, AutomaticTakesComputeOnASoftwareRasteriser) {
     EXPECT_EQ(render::RenderSettings{}.bloom_chain, render::BloomChain::automatic);

@@ -105,8 +105,10 @@ TEST_F(ColourClearsTest, TheMipChainBloomAndTheImageOutlineToo) {
     settings.beam.phosphor = render::PhosphorDecay::off;
     settings.beam.flicker = 0.0f;
     // Its additive beam sums overlapping quads in whatever order the rasteriser's threads take
-    // them: a channel may round one step apart between any two runs, clears aside.
-    expect_same_frames("mame beam, mip-chain bloom", 1);
+    // them: a channel may round one step apart between any two runs, clears aside, and two
+    // where the glow's 32-bit chain (BloomChainTest) carries that difference to a faint edge
+    // (seen once in 36 runs).
+    expect_same_frames("mame beam, mip-chain bloom", 2);
     settings = render::preset("balanced");
     settings.beam = render::beam_look("classic");
     settings.method = render::LineMethod::image_outline;

@@ -91,45 +91,63 @@ void gaussian_bloom(const PassContext& ctx, const gl::Texture2D& source,
     glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
-// Whether the chain past level 0 runs as one compute dispatch (BloomChain).
-bool chain_by_compute(const PassContext& ctx) {
+// The first level the compute walk takes (BloomChain::compute): the first one past level 0
+// of at most kMaxWalkTexels, or none (the pipeline draws every level). The walk runs on one
+// thread of a software rasteriser; a larger level is drawn, on all of them. At 1280x720 a
+// quarter-resolution level 1 (160x90) walked faster than drawn, a half-resolution one
+// (320x180) 0.7-1.5 ms slower (docs/measurements/bloom-chain.md).
+constexpr int kMaxWalkTexels = 128 * 128;
+std::size_t first_walked_level(const PassContext& ctx) {
+    const std::size_t n = ctx.targets.bloom_mips.size();
+    bool walk = ctx.software_rasteriser;
     switch (ctx.settings.bloom_chain) {
         case BloomChain::pipeline:
-            return false;
+            walk = false;
+            break;
         case BloomChain::compute:
-            return true;
+            walk = true;
+            break;
         case BloomChain::automatic:
             break;
     }
-    return ctx.software_rasteriser;
+    if (!walk) return n;
+    for (std::size_t k = 1; k < n; ++k) {
+        const gl::Texture2D& level = ctx.targets.bloom_mips[k];
+        if (level.width() * level.height() <= kMaxWalkTexels) return k;
+    }
+    return n;
 }
 
-// The chain's levels 1 .. n-1 down and back up to level 1 by the GL pipeline: one draw per
-// level each way, the way up blending each level's upsample onto the next finer one.
-void chain_by_pipeline(const PassContext& ctx) {
+// Levels [first, end) downsampled by the GL pipeline, one draw each.
+void down_by_draws(const PassContext& ctx, std::size_t first, std::size_t end) {
     Targets& t = ctx.targets;
-    const auto& w = ctx.settings.beam.mip_weights;
-    const std::size_t n = t.bloom_mips.size();
     const gl::Program& down = ctx.programs.bloom_down;
     down.use();
     bind_lit_tile_marks(down, t, false);  // only the first level's blocks are screen pixels
     down.set("u_factor", 2);
     down.set("u_threshold", 0.0f);
     down.set("u_knee", ctx.settings.beam.bloom_knee);
-    for (std::size_t k = 1; k < n; ++k) {
+    for (std::size_t k = first; k < end; ++k) {
         t.bloom_mip_fbos[k].bind();
         down.set("u_inv_target",
                  1.0f / glm::vec2(t.bloom_mip_fbos[k].width(), t.bloom_mip_fbos[k].height()));
         t.bloom_mips[k - 1].bind(kTextureUnitSource);
         glDrawArrays(GL_TRIANGLES, 0, 3);
     }
+}
+
+// Levels from `from` down to 1 take the upsample of the level above them, one draw each,
+// blended onto what they hold.
+void up_by_draws(const PassContext& ctx, std::size_t from) {
+    Targets& t = ctx.targets;
+    const auto& w = ctx.settings.beam.mip_weights;
     const gl::Program& up = ctx.programs.bloom_up;
     up.use();
     up.set("u_final", 0);
     gl::PipelineState add;
     add.blend = gl::Blend::add;
     gl::apply(add);
-    for (std::size_t k = n - 1; k-- > 1;) {  // levels n-2 .. 1
+    for (std::size_t k = from; k >= 1; --k) {
         t.bloom_mip_fbos[k].bind();
         up.set("u_ratio", mip_weight(w, k + 1) / mip_weight(w, k));
         t.bloom_mips[k + 1].bind(kTextureUnitCoarser);
@@ -138,8 +156,9 @@ void chain_by_pipeline(const PassContext& ctx) {
     gl::apply(gl::PipelineState{});
 }
 
-// The same by one workgroup of bloom_chain.comp, through Targets::bloom_chain_texels.
-void chain_by_one_dispatch(const PassContext& ctx) {
+// Levels [first, n) down and back up to `first` by one workgroup of bloom_chain.comp,
+// through Targets::bloom_chain_texels; level `first` goes to its texture.
+void walk_levels(const PassContext& ctx, std::size_t first) {
     Targets& t = ctx.targets;
     const auto& w = ctx.settings.beam.mip_weights;
     const std::size_t n = t.bloom_mips.size();
@@ -149,25 +168,38 @@ void chain_by_one_dispatch(const PassContext& ctx) {
     int offset = 0;
     for (std::size_t k = 0; k < n; ++k) {
         sizes[k] = {t.bloom_mips[k].width(), t.bloom_mips[k].height()};
-        if (k == 0) continue;
+        if (k + 1 < n) ratios[k] = mip_weight(w, k + 1) / mip_weight(w, k);
+        if (k < first) continue;
         offsets[k] = offset;
         offset += sizes[k].x * sizes[k].y;
-        ratios[k - 1] = mip_weight(w, k) / mip_weight(w, k - 1);
     }
     const gl::Program& chain = ctx.programs.bloom_chain;
     chain.use();
     const int count = static_cast<int>(kMaxBloomLevels);
+    chain.set("u_first", static_cast<int>(first));
     chain.set("u_levels", static_cast<int>(n));
     chain.set_array("u_size", sizes.data(), count);
     chain.set_array("u_offset", offsets.data(), count);
     chain.set_array("u_ratio", ratios.data(), count);
-    t.bloom_mips[0].bind(kTextureUnitSource);
+    t.bloom_mips[first - 1].bind(kTextureUnitSource);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBloomChainBinding, t.bloom_chain_texels.id());
-    glBindImageTexture(kImageUnitBloomLevel, t.bloom_mips[1].id(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
-                       GL_RGBA16F);
+    glBindImageTexture(kImageUnitBloomLevel, t.bloom_mips[first].id(), 0, GL_FALSE, 0,
+                       GL_WRITE_ONLY, GL_RGBA16F);
     glDispatchCompute(1, 1, 1);
-    // The last step samples level 1.
+    // What follows samples level `first` (the draws up, or the last step).
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+}
+
+// The chain's levels 1 .. n-1, down and back up to level 1: the larger levels drawn by the
+// pipeline, the rest walked in one dispatch (first_walked_level).
+void chain_past_level_zero(const PassContext& ctx) {
+    const std::size_t n = ctx.targets.bloom_mips.size();
+    const std::size_t walked = first_walked_level(ctx);
+    down_by_draws(ctx, 1, walked);
+    if (walked < n) walk_levels(ctx, walked);
+    // Up from the level below the walked ones (which the walk finished), or from n-2.
+    const std::size_t top = walked < n ? walked - 1 : n - 2;
+    if (top >= 1) up_by_draws(ctx, top);
 }
 
 // MAME's bloom: a chain of levels, each half the size of the one before, summed with a
@@ -180,13 +212,7 @@ void mip_chain_bloom(const PassContext& ctx, const gl::Texture2D& source,
     const std::size_t n = t.bloom_mips.size();
     // Only the first level filters by brightness; the rest downsample what it kept.
     first_downsample(ctx, source, ctx.settings.beam.bloom_threshold);
-    if (n > 1) {
-        if (chain_by_compute(ctx)) {
-            chain_by_one_dispatch(ctx);
-        } else {
-            chain_by_pipeline(ctx);
-        }
-    }
+    if (n > 1) chain_past_level_zero(ctx);
 
     float total = 0.0f;
     for (std::size_t k = 0; k < n; ++k) total += mip_weight(w, k);
