@@ -21,6 +21,14 @@
 
 namespace bz::render {
 
+// How a frame's mip-chain bloom went past its first level (BloomChain; pass_bloom.cpp): the
+// levels past level 0 drawn one by one by the pipeline, then those walked by one compute
+// dispatch. Both zero: no mip-chain bloom this frame.
+struct BloomChainSplit {
+    std::size_t drawn = 0;
+    std::size_t walked = 0;
+};
+
 struct FrameStats {
     std::size_t objects_drawn = 0;
     std::size_t objects_culled = 0;
@@ -40,6 +48,7 @@ struct FrameStats {
     // and how many segments went to the GPU (those whose objects are drawn at full detail).
     IntersectionStats intersections;
     std::size_t intersection_records = 0;
+    BloomChainSplit bloom_chain;
 };
 
 class Renderer {

@@ -44,7 +44,7 @@ enum class ColourClears {
 // pass_bloom.cpp). The same sums up to the rounding of the levels' storage.
 enum class BloomChain {
     automatic,  // compute on a software rasteriser, the pipeline on a GPU
-    pipeline,   // one draw per level down and up: 15 at a quarter of 1280x720
+    pipeline,   // one draw per level down and up: 13 at a quarter of 1280x720
     compute,    // one workgroup walks the levels of at most 128x128 texels in one dispatch
                 // (bloom_chain.comp); larger ones are drawn
 };

@@ -32,6 +32,8 @@ awk -F, 'NR > 1 && ($6 == "" || $7 == "") { bad = 1 } END { exit bad }' "$work/g
 # --no-phosphor: the same look with its phosphor off, recorded in the run's settings.
 expect 0 "p50" bench "$level" --beam mame --frames 3 --warmup 1 --size 192x108 --preset fast --out "$work/mame"
 grep -q '"phosphor": "exponential"' "$work/mame/summary.json" || fail "mame run: phosphor not exponential"
+# Its mip-chain bloom says how it went past level 0 (drawn or walked: render/beam/pass_bloom.cpp).
+grep -q '"levels_walked"' "$work/mame/summary.json" || fail "mame run: summary.json lacks bloom_chain"
 expect 0 "p50" bench "$level" --beam mame --no-phosphor --frames 3 --warmup 1 --size 192x108 --preset fast --out "$work/nophos"
 grep -q '"phosphor": "off"' "$work/nophos/summary.json" || fail "--no-phosphor run: phosphor not off"
 grep -q '"beam": "mame"' "$work/nophos/summary.json" || fail "--no-phosphor changed the look"

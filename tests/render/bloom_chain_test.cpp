@@ -91,7 +91,7 @@ class BloomChainTest : public RenderTest {
 };
 
 // 320x240 at a quarter: levels 80x60, 40x30, 20x15, then 10x7 and 5x3, whose halving is not
-// exact, down to 1x1.
+// exact, down to 2x1 (the chain stops before 1x1).
 TEST_F(BloomChainTest, EveryLevelOfTheMameChain) {
     expect_same_glow("mame weights, 320x240");
 }
@@ -112,6 +112,27 @@ TEST_F(BloomChainTest, LargeLevelsDrawnTheRestWalked) {
     expect_same_glow("full-resolution bloom, 320x240");
     settings.beam.mip_weights = {1.0f, 0.8f};
     expect_same_glow("full resolution, two levels: nothing walked");
+}
+
+// The frame's stats say which levels past level 0 were drawn and which walked.
+TEST_F(BloomChainTest, TheStatsSayWhichLevelsWereWalked) {
+    // 320x240 at a quarter: 5 levels past level 0 (40x30 .. 2x1; the chain stops before
+    // 1x1), all small.
+    draw(render::BloomChain::compute);
+    EXPECT_EQ(renderer->stats().bloom_chain.drawn, 0u);
+    EXPECT_EQ(renderer->stats().bloom_chain.walked, 5u);
+    draw(render::BloomChain::pipeline);
+    EXPECT_EQ(renderer->stats().bloom_chain.drawn, 5u);
+    EXPECT_EQ(renderer->stats().bloom_chain.walked, 0u);
+    // At full resolution level 1 (160x120) is too large to walk; 80x60 .. 2x1 are walked.
+    settings.bloom_resolution = render::BloomResolution::full;
+    draw(render::BloomChain::compute);
+    EXPECT_EQ(renderer->stats().bloom_chain.drawn, 1u);
+    EXPECT_EQ(renderer->stats().bloom_chain.walked, 6u);
+    // The Gaussian bloom has no chain.
+    settings.beam = render::beam_look("classic");
+    draw(render::BloomChain::compute);
+    EXPECT_EQ(renderer->stats().bloom_chain.drawn + renderer->stats().bloom_chain.walked, 0u);
 }
 
 // Compute on a software rasteriser, the pipeline on a GPU: the same bytes as that path.

@@ -124,6 +124,7 @@ Json meta_json(const BenchMeta& m) {
     j["load_average_after"] = m.load_after;
     j["auto_line_method"] = m.auto_line_method;
     if (!m.colour_clears.is_null()) j["colour_clears"] = m.colour_clears;
+    if (!m.bloom_chain.is_null()) j["bloom_chain"] = m.bloom_chain;
     return j;
 }
 

@@ -27,6 +27,9 @@ struct BenchMeta {
     // The path colour clears took (render/clear_image.h) and, where auto timed both, their
     // times: {"path": "compute", "measured_ms": {...}}; null: not said (sweep, scaling).
     Json colour_clears;
+    // How the last frame's mip-chain bloom went past level 0 (render::BloomChainSplit):
+    // {"levels_drawn": D, "levels_walked": W}; null: no mip chain, or not said.
+    Json bloom_chain;
 };
 
 // "cpu_finish" / "gpu_queries" and a sentence on what it measures.

@@ -40,6 +40,14 @@ Json colour_clears_json(render::Renderer& r) {
     return j;
 }
 
+// summary.json's bloom_chain: how the last frame's mip chain went past level 0, drawn level
+// by level or walked in one dispatch (render/beam/pass_bloom.cpp); null without a mip chain.
+Json bloom_chain_json(const render::Renderer& r) {
+    const render::BloomChainSplit split = r.stats().bloom_chain;
+    if (split.drawn + split.walked == 0) return nullptr;
+    return {{"levels_drawn", split.drawn}, {"levels_walked", split.walked}};
+}
+
 namespace fs = std::filesystem;
 
 // Every file this run reads, which no output may replace.
@@ -304,6 +312,7 @@ int run(const BenchOptions& o) {
         runs.push_back(run_frames(renderer, frames, scene.meshes(), settings.preset, settings,
                                   [&bar] { bar(); }));
         meta.colour_clears = colour_clears_json(renderer);
+        meta.bloom_chain = bloom_chain_json(renderer);
         meta.load_after = load_average();
         plot_frame_times(runs.front(), settings.preset + ": frame time by pass", font,
                          out / "frametime.png");

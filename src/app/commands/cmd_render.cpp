@@ -62,6 +62,12 @@ void print_timings(const render::Renderer& r,
                      t.clusters, t.outside_frustum, t.facing_away, t.one_sided, t.triangles_drawn,
                      t.triangles, t.triangles_computed);
     }
+    // The mip-chain bloom's levels past the first: drawn one by one, or walked in one dispatch.
+    if (const render::BloomChainSplit b = r.stats().bloom_chain; b.drawn + b.walked > 0) {
+        std::fprintf(stdout,
+                     "bloom chain past level 0: %zu levels drawn, %zu walked in one dispatch\n",
+                     b.drawn, b.walked);
+    }
     // Where auto timed both clear paths (a hardware GPU), what it found.
     if (const std::optional<render::ClearTiming> ct = r.colour_clear_timing()) {
         std::fprintf(stdout,

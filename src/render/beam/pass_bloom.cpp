@@ -195,6 +195,7 @@ void walk_levels(const PassContext& ctx, std::size_t first) {
 void chain_past_level_zero(const PassContext& ctx) {
     const std::size_t n = ctx.targets.bloom_mips.size();
     const std::size_t walked = first_walked_level(ctx);
+    if (ctx.stats) ctx.stats->bloom_chain = {.drawn = walked - 1, .walked = n - walked};
     down_by_draws(ctx, 1, walked);
     if (walked < n) walk_levels(ctx, walked);
     // Up from the level below the walked ones (which the walk finished), or from n-2.
