@@ -63,7 +63,8 @@ void print_timings(const render::Renderer& r,
                      t.triangles, t.triangles_computed);
     }
     // The mip-chain bloom's levels past the first: drawn one by one, or walked in one dispatch.
-    // Not "bloom ...": tools read the pass table by its first word (tests/cli/render_pass_table.sh).
+    // Not "bloom ...": tools read the pass table by its first word
+    // (tests/cli/render_pass_table.sh).
     if (const render::BloomChainSplit b = r.stats().bloom_chain; b.drawn + b.walked > 0) {
         std::fprintf(stdout,
                      "mip-chain bloom past level 0: %zu levels drawn, %zu walked in one dispatch\n",
