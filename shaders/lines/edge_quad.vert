@@ -1,8 +1,10 @@
 #version 450 core
-// LineMethod::compute: draws one quad (two triangles, EDGE_VERTICES vertices) per record of the
-// edge buffer that shaders/lines/edges.comp filled, with no geometry shader, computed with the same
-// code as lines.geom (edge_geometry.glsl). Its fragments (edge_quad.frag) look visibility up
-// from the spine samples (spine_visibility.comp) instead of running the spine test.
+// LineMethod::compute: draws one quad (two triangles) per record of the edge buffer that
+// shaders/lines/edges.comp filled, with no geometry shader, computed with the same code as
+// lines.geom (edge_geometry.glsl). Its fragments (edge_quad.frag) look visibility up from the
+// spine samples (spine_visibility.comp) instead of running the spine test.
+// Drawn indexed (EDGE_CORNERS vertices per record, EdgeStorage::quad_indices), so each
+// corner runs once, or unindexed (EDGE_VERTICES per record) straight from the append count.
 #include "edge_record.glsl"
 #include "../beam/beam_width.glsl"
 #include "spine_samples.glsl"
@@ -13,6 +15,7 @@ layout(std430, binding = SPINE_SPANS_BINDING) readonly buffer Spans { uvec4 span
 layout(std430, binding = EDGE_COMMAND_BINDING) readonly buffer Command { EDGE_COMMAND_MEMBERS; };
 
 uniform uint u_capacity;  // records the buffer holds (the draw count may run past it)
+uniform bool u_indexed;   // drawn through the quad indices: gl_VertexID counts corners
 uniform uint u_sample_capacity;  // spine samples the sample buffer holds
 uniform mat4 u_proj;
 uniform vec2 u_viewport;
@@ -35,7 +38,9 @@ flat out uvec4 g_samples;
 const int kCorner[6] = int[6](0, 1, 2, 2, 1, 3);
 
 void main() {
-    uint index = uint(gl_VertexID) / EDGE_VERTICES;
+    uint id = uint(gl_VertexID);
+    uint index = u_indexed ? id / EDGE_CORNERS : id / EDGE_VERTICES;
+    int corner_k = u_indexed ? int(id % EDGE_CORNERS) : kCorner[id % EDGE_VERTICES];
     if (index >= u_capacity) {
         gl_Position = vec4(2.0, 2.0, 2.0, 1.0);  // outside the clip volume: drawn by nobody
         return;
@@ -83,10 +88,10 @@ void main() {
     // Past a true end the quad reaches over the lengthened beam (beam_ends.glsl); past a
     // visible stretch's inner end the fragments are hidden anyway.
     // One vertex of the quad marks its tiles: the visible stretch, lengthened at true ends.
-    if (uint(gl_VertexID) % EDGE_VERTICES == 0u)
+    if (corner_k == 0)
         mark_beam_segment(q0, q1, beam.half_width, beam_end_reach(beam.half_width));
     vec2 corner = quad_corner(q0, q1, dir, nrm, beam.half_width, beam_end_reach(beam.half_width),
-                              kCorner[uint(gl_VertexID) % EDGE_VERTICES]);
+                              corner_k);
 #ifndef MASK_MODE
     // The corner in the spine's own frame. All four are affine in the window position, so
     // the rasteriser interpolates them exactly (noperspective) and the fragment needs no

@@ -33,8 +33,8 @@ const uint EDGE_INTERSECTION = 1u << 12;
 // (EDGE_VERTICES per record). Then the spine-sample append counter and the count of work items
 // hierarchical-Z culling skipped (render::EdgeDrawCommand). Then the two quad draws
 // spine_visibility.comp writes: the records with spine samples, and the records tested per
-// fragment (each the count and instance count of a DrawArraysIndirectCommand; first vertex
-// and base instance stay 0).
+// fragment (each a DrawElementsIndirectCommand over the quads' corner indices, EDGE_CORNERS
+// per record, of which it sets the count and instance count; the rest stay 0).
 // A shader declares the block as `buffer Command { EDGE_COMMAND_MEMBERS; };`.
 #define EDGE_COMMAND_MEMBERS \
     uint vertex_count;       \
@@ -45,13 +45,16 @@ const uint EDGE_INTERSECTION = 1u << 12;
     uint hidden_items;       \
     uint sampled_draw_count; \
     uint sampled_draw_instances; \
-    uint sampled_draw_first; \
-    uint sampled_draw_base;  \
+    uint sampled_draw_first_index; \
+    uint sampled_draw_base_vertex; \
+    uint sampled_draw_base_instance; \
     uint tested_draw_count;  \
     uint tested_draw_instances; \
-    uint tested_draw_first;  \
-    uint tested_draw_base
-const uint EDGE_VERTICES = 6u;
+    uint tested_draw_first_index; \
+    uint tested_draw_base_vertex; \
+    uint tested_draw_base_instance
+const uint EDGE_VERTICES = 6u;  // per record: two triangles, unindexed
+const uint EDGE_CORNERS = 4u;   // per record: the indexed draws' distinct vertices
 
 // The binding points (EDGE_LIST_BINDING, EDGE_RECORDS_BINDING, ...) are #defines injected from
 // src/render/lines/edge_buffer.h (src/render/shader_interface.h).

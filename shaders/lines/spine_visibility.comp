@@ -30,12 +30,14 @@ uniform float u_far;
 void main() {
     // The quad pass's two draws (pass_edge_quads.cpp): the records' quads with their samples,
     // or, when the frame asked for more samples than the buffer holds, every record's quad
-    // tested per fragment (edge_quad.vert).
+    // tested per fragment (edge_quad.vert). Both index the quads' corners, which end at the
+    // buffer's capacity: a frame that appended more records draws those that fit.
     bool overflow = samples_used > u_sample_capacity;
     if (gl_WorkGroupID.x == 0u && gl_LocalInvocationID.x == 0u) {
-        sampled_draw_count = overflow ? 0u : vertex_count;
+        uint indices = min(vertex_count, u_capacity * EDGE_VERTICES);
+        sampled_draw_count = overflow ? 0u : indices;
         sampled_draw_instances = 1u;
-        tested_draw_count = overflow ? vertex_count : 0u;
+        tested_draw_count = overflow ? indices : 0u;
         tested_draw_instances = 1u;
     }
     // Too many samples for the buffer: the quads test every record per fragment instead.

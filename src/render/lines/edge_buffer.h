@@ -87,6 +87,16 @@ struct DrawArraysCommand {
     std::uint32_t first = 0;
     std::uint32_t base_instance = 0;
 };
+// DrawElementsIndirectCommand of a quad draw through EdgeStorage::quad_indices: each quad's
+// four corners indexed by its two triangles, so the vertex shader runs four times per quad,
+// not six (on llvmpipe, one thread runs every vertex: 0.8-1 ms of the seed's hallway).
+struct DrawElementsCommand {
+    std::uint32_t count = 0;
+    std::uint32_t instance_count = 1;
+    std::uint32_t first_index = 0;
+    std::uint32_t base_vertex = 0;
+    std::uint32_t base_instance = 0;
+};
 struct EdgeDrawCommand {
     std::uint32_t vertex_count = 0;
     std::uint32_t instance_count = 1;
@@ -94,16 +104,18 @@ struct EdgeDrawCommand {
     std::uint32_t base_instance = 0;
     std::uint32_t samples_used = 0;  // spine samples asked for, including any past capacity
     std::uint32_t hidden_items = 0;  // work items hierarchical-Z culling skipped (hiz_culling.h)
-    // Written by spine_visibility.comp, read as the quad pass's two indirect draws: the
-    // records with spine samples (the frame's samples fit) and those whose fragments run the
-    // spine test (they did not); one of the two draws nothing (pass_edge_quads.cpp).
-    DrawArraysCommand sampled_draw;
-    DrawArraysCommand tested_draw;
+    // Written by spine_visibility.comp, read as the quad pass's two indexed indirect draws:
+    // the records with spine samples (the frame's samples fit) and those whose fragments run
+    // the spine test (they did not); one of the two draws nothing (pass_edge_quads.cpp). Their
+    // counts stop at the buffer's capacity, where the quad indices end.
+    DrawElementsCommand sampled_draw;
+    DrawElementsCommand tested_draw;
 };
 static_assert(offsetof(EdgeDrawCommand, sampled_draw) == 24 &&
-                  offsetof(EdgeDrawCommand, tested_draw) == 40,
+                  offsetof(EdgeDrawCommand, tested_draw) == 44 && sizeof(EdgeDrawCommand) == 64,
               "must match shaders/lines/edge_record.glsl (EDGE_COMMAND_MEMBERS)");
-inline constexpr std::uint32_t kVerticesPerEdge = 6;  // two triangles per quad
+inline constexpr std::uint32_t kVerticesPerEdge = 6;  // two triangles per quad, unindexed
+inline constexpr std::uint32_t kCornersPerEdge = 4;   // indexed (EdgeStorage::quad_indices)
 
 // Binding points of the edge-extraction and quad programs (shaders/lines/edge_record.glsl).
 inline constexpr unsigned kEdgeListBinding = 2;       // the mesh's MeshEdge list

@@ -1,6 +1,7 @@
 #include "render/lines/edge_storage.h"
 
 #include <algorithm>
+#include <vector>
 
 namespace bz::render {
 
@@ -11,6 +12,17 @@ std::uint32_t grown(std::uint32_t current, std::size_t want, std::uint32_t max) 
     const auto w = static_cast<std::uint32_t>(std::min<std::size_t>(want, max));
     if (w <= current) return current;
     return std::min(max, std::max(w, current + current / 2));
+}
+
+// Two triangles over each record's four corners, in the strip order edge_quad.vert expects.
+std::vector<std::uint32_t> quad_corner_indices(std::uint32_t records) {
+    std::vector<std::uint32_t> indices;
+    indices.reserve(static_cast<std::size_t>(records) * kVerticesPerEdge);
+    for (std::uint32_t k = 0; k < records; ++k) {
+        const std::uint32_t c = k * kCornersPerEdge;
+        for (const std::uint32_t corner : {0u, 1u, 2u, 2u, 1u, 3u}) indices.push_back(c + corner);
+    }
+    return indices;
 }
 
 }  // namespace
@@ -37,6 +49,9 @@ void EdgeStorage::reserve(std::size_t records) {
                       GL_DYNAMIC_COPY);
     spans_.set_data(nullptr, static_cast<std::size_t>(capacity_) * 8 * sizeof(std::uint32_t),
                     GL_DYNAMIC_COPY);
+    quad_index_buffer_.set(std::span<const std::uint32_t>(quad_corner_indices(capacity_)),
+                           GL_STATIC_DRAW);
+    quad_vao_.element_buffer(quad_index_buffer_);
 }
 
 void EdgeStorage::reserve_samples(std::size_t samples) {

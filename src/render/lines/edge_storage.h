@@ -10,6 +10,7 @@
 #include <span>
 
 #include "gl/buffer.h"
+#include "gl/vertex_array.h"
 #include "render/lines/edge_buffer.h"
 
 namespace bz::render {
@@ -57,6 +58,9 @@ class EdgeStorage {
     const gl::Buffer& command() const { return command_; }
     const gl::Buffer& samples() const { return samples_; }
     const gl::Buffer& spans() const { return spans_; }
+    // A vertex array with no attributes whose element buffer indexes every record's quad:
+    // record k's corners 4k .. 4k + 3 as two triangles (0 1 2, 2 1 3), for capacity() records.
+    const gl::VertexArray& quad_indices() const { return quad_vao_; }
 
   private:
     EdgeDrawCommand read_now() const;
@@ -69,6 +73,8 @@ class EdgeStorage {
     gl::Buffer samples_;  // one uint per spine sample: 1 visible, 0 hidden
     gl::Buffer
         spans_;  // per record: 2 uvec4, sampled stretch, first and last visible sample, count
+    gl::Buffer quad_index_buffer_;
+    gl::VertexArray quad_vao_;
     std::uint32_t capacity_ = 0;
     std::uint32_t max_capacity_ = 0;
     std::uint32_t sample_capacity_ = 0;

@@ -23,16 +23,25 @@ std::size_t command_offset(QuadDraw draw) {
 
 void draw_edge_record_quads(const PassContext& ctx, const gl::Program& program,
                             unsigned sample_capacity, QuadDraw draw) {
+    // spine_visibility.comp's draws index the quads' corners (each corner's vertex shader runs
+    // once); the append count itself is a count of unindexed vertices.
+    const bool indexed = draw != QuadDraw::every_record;
     program.set("u_capacity", ctx.edges.capacity());
     program.set("u_sample_capacity", sample_capacity);
+    program.set("u_indexed", indexed ? 1 : 0);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEdgeCommandBinding, ctx.edges.command().id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kEdgeRecordsBinding, ctx.edges.records().id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSpineSamplesBinding, ctx.edges.samples().id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSpineSpansBinding, ctx.edges.spans().id());
     glBindBuffer(GL_DRAW_INDIRECT_BUFFER, ctx.edges.command().id());
-    ctx.empty_vao.bind();
-    glDrawArraysIndirect(GL_TRIANGLES,
-                         reinterpret_cast<const void*>(command_offset(draw)));  // NOLINT
+    const auto* command = reinterpret_cast<const void*>(command_offset(draw));  // NOLINT
+    if (indexed) {
+        ctx.edges.quad_indices().bind();
+        glDrawElementsIndirect(GL_TRIANGLES, GL_UNSIGNED_INT, command);
+    } else {
+        ctx.empty_vao.bind();
+        glDrawArraysIndirect(GL_TRIANGLES, command);
+    }
     glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
 }
 
