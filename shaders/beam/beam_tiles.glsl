@@ -10,7 +10,10 @@ layout(r8ui, binding = IMAGE_UNIT_BEAM_TILES) uniform writeonly uimage2D u_beam_
 // each side. Points half a tile apart along it, each marking the tiles within half_width +
 // half a tile + 1 px (a box that holds every pixel centre of the quad near that point), over
 // the part of the segment that can reach the screen.
-void mark_beam_segment(vec2 s0, vec2 s1, float half_width, float reach) {
+// Of those points this call marks every `parts`-th from `part` on: the vertices of one quad
+// share its marks (part = the vertex's place in the quad), so that the SIMD lanes of a vertex
+// shader loop together instead of one lane per quad looping while the other corners wait.
+void mark_beam_segment_part(vec2 s0, vec2 s1, float half_width, float reach, int part, int parts) {
     ivec2 tiles = imageSize(u_beam_tiles);
     float step_px = 0.5 * float(TILE_SIZE);
     float margin = half_width + step_px + 1.0;
@@ -32,7 +35,7 @@ void mark_beam_segment(vec2 s0, vec2 s1, float half_width, float reach) {
     if (t0 > t1) return;
     vec2 p = a + v * t0, q = a + v * t1;
     int n = int(ceil(length(q - p) / step_px));
-    for (int i = 0; i <= n; ++i) {
+    for (int i = part; i <= n; i += parts) {
         vec2 c = n > 0 ? mix(p, q, float(i) / float(n)) : p;
         ivec2 first = max(ivec2(floor((c - margin) / float(TILE_SIZE))), ivec2(0));
         ivec2 last = min(ivec2(floor((c + margin) / float(TILE_SIZE))), tiles - 1);
@@ -40,6 +43,11 @@ void mark_beam_segment(vec2 s0, vec2 s1, float half_width, float reach) {
             for (int x = first.x; x <= last.x; ++x) imageStore(u_beam_tiles, ivec2(x, y), uvec4(1u));
     }
 }
+
+void mark_beam_segment(vec2 s0, vec2 s1, float half_width, float reach) {
+    mark_beam_segment_part(s0, s1, half_width, reach, 0, 1);
+}
 #else
+void mark_beam_segment_part(vec2 s0, vec2 s1, float half_width, float reach, int part, int parts) {}
 void mark_beam_segment(vec2 s0, vec2 s1, float half_width, float reach) {}
 #endif

@@ -87,9 +87,11 @@ void main() {
     }
     // Past a true end the quad reaches over the lengthened beam (beam_ends.glsl); past a
     // visible stretch's inner end the fragments are hidden anyway.
-    // One vertex of the quad marks its tiles: the visible stretch, lengthened at true ends.
-    if (corner_k == 0)
-        mark_beam_segment(q0, q1, beam.half_width, beam_end_reach(beam.half_width));
+    // The quad's vertices share the marks of its tiles: the visible stretch, lengthened at
+    // true ends.
+    uint parts = u_indexed ? EDGE_CORNERS : EDGE_VERTICES;
+    mark_beam_segment_part(q0, q1, beam.half_width, beam_end_reach(beam.half_width),
+                           int(id % parts), int(parts));
     vec2 corner = quad_corner(q0, q1, dir, nrm, beam.half_width, beam_end_reach(beam.half_width),
                               corner_k);
 #ifndef MASK_MODE

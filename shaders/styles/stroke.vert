@@ -162,13 +162,13 @@ void main() {
     ext = max(u_inner_px, u_outer_px) + 1.0;
 #endif
 #ifdef HALO_GLOW
-    // The halo is laid over the tiles its quads may cover (pass_halo.cpp); once per quad. The
-    // quad spans -lo .. +hi across the edge, mostly outward: the band around its middle, not
-    // max(lo, hi) to both sides (a fifth fewer tiles along a long silhouette).
-    if (uint(gl_VertexID) % EDGE_VERTICES == 0u) {
-        vec2 middle = nrm * (0.5 * (hi - lo));
-        mark_beam_segment(s0 + middle, s1 + middle, 0.5 * (lo + hi), ext);
-    }
+    // The halo is laid over the tiles its quads may cover (pass_halo.cpp); the quad's six
+    // vertices share the marks (beam_tiles.glsl). The quad spans -lo .. +hi across the edge,
+    // mostly outward: the band around its middle, not max(lo, hi) to both sides (a fifth fewer
+    // tiles along a long silhouette).
+    vec2 middle = nrm * (0.5 * (hi - lo));
+    mark_beam_segment_part(s0 + middle, s1 + middle, 0.5 * (lo + hi), ext,
+                           int(uint(gl_VertexID) % EDGE_VERTICES), int(EDGE_VERTICES));
 #endif
     int k = kCorner[uint(gl_VertexID) % EDGE_VERTICES];
     vec2 end = k < 2 ? s0 - dir * ext : s1 + dir * ext;
