@@ -5,6 +5,10 @@
 // TILE_SIZE (pixels) comes from render/targets.h. Every store writes the same 1.
 #ifdef BEAM_TILES
 layout(r8ui, binding = IMAGE_UNIT_BEAM_TILES) uniform writeonly uimage2D u_beam_tiles;
+// true: this frame's bloom reads the whole beam image (RenderSettings::first_downsample), so
+// nothing is marked. Unset it is false: the stages that mark for other passes (the halo, the
+// ink composite's HUD) keep marking.
+uniform bool u_skip_beam_tiles;
 
 // The quad of segment s0-s1 (pixels): lengthened by `reach` past both ends, `half_width` to
 // each side. Points half a tile apart along it, each marking the tiles within half_width +
@@ -14,6 +18,7 @@ layout(r8ui, binding = IMAGE_UNIT_BEAM_TILES) uniform writeonly uimage2D u_beam_
 // share its marks (part = the vertex's place in the quad), so that the SIMD lanes of a vertex
 // shader loop together instead of one lane per quad looping while the other corners wait.
 void mark_beam_segment_part(vec2 s0, vec2 s1, float half_width, float reach, int part, int parts) {
+    if (u_skip_beam_tiles) return;
     ivec2 tiles = imageSize(u_beam_tiles);
     float step_px = 0.5 * float(TILE_SIZE);
     float margin = half_width + step_px + 1.0;

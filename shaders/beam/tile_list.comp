@@ -21,6 +21,8 @@ layout(std430, binding = TILE_LIST_BINDING) buffer TileList {
     uint base_instance;
     uint tiles[];  // runs, encode_tile_run
 };
+// The tiles listed, for the next frame's choice of the bloom's first downsample (zeroed before).
+layout(std430, binding = LIT_TILE_COUNT_BINDING) buffer LitTileCount { uint lit_tile_count; };
 
 bool lit(ivec2 tile) {
     return texelFetch(u_marks, tile, 0).r != 0u ||
@@ -32,13 +34,16 @@ void main() {
     int y = int(gl_GlobalInvocationID.x);
     if (y >= size.y) return;
     int start = -1;  // the first tile of the open run, -1: none
+    uint listed = 0u;
     for (int x = 0; x <= size.x; ++x) {
         bool on = x < size.x && lit(ivec2(x, y));
         if (on && start < 0) start = x;
         if (start >= 0 && (!on || x - start == kMaxTileRun)) {
             uint slot = atomicAdd(instance_count, 1u);
             tiles[slot] = encode_tile_run(ivec2(start, y), x - start);
+            listed += uint(x - start);
             start = on ? x : -1;
         }
     }
+    if (listed > 0u) atomicAdd(lit_tile_count, listed);
 }

@@ -73,6 +73,9 @@ struct PassContext {
     gl::Buffer* raster_work = nullptr;
     bool software_rasteriser = false;  // llvmpipe and the like (gl::is_software_renderer)
     bool clears_by_compute = false;    // colour clears by a compute shader (clear_image.h)
+    // The bloom's first downsample reads the whole beam image this frame, so the line and HUD
+    // stages mark no beam tiles (RenderSettings::first_downsample).
+    bool dense_first_downsample = false;
     // What the passes before this one wrote this frame (frame_passes.h declares it); a held
     // frame starts with what the frame it holds wrote. Null: nothing (the mask passes).
     const FrameResources* frame = nullptr;

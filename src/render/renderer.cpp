@@ -156,8 +156,35 @@ struct Renderer::Impl {
                            .raster_work = &raster_work,
                            .software_rasteriser = software,
                            .clears_by_compute = clears_by_compute(),
+                           .dense_first_downsample = dense_first_downsample(style),
                            .intersections = &intersection_buffer,
                            .intersection_count = intersection_count};
+    }
+
+    // RenderSettings::first_downsample's choice for a frame of `style`. Automatic reads how many
+    // tiles the frame before listed (Targets::lit_tile_count): where half the screen or more
+    // was lit, the beam's tile marks would spare the downsample little, and on llvmpipe their
+    // cost in the single-threaded vertex stage and the downsample's quad per tile cost more
+    // than the texels (the seed's hallway, 80 % lit: lines and bloom 1.5-2 ms faster dense;
+    // the classic level and Suzanne, 16-18 %: bloom 0.5-0.8 ms slower dense;
+    // docs/measurements/first-downsample.md). A GPU keeps the marks (not measured).
+    bool dense_first_downsample(const StyleDef& style) const {
+        if (style.fill != FillPass::none) return false;  // the fill's marks serve the ink HUD
+        switch (frame_settings.first_downsample) {
+            case FirstDownsample::sparse:
+                return false;
+            case FirstDownsample::dense:
+                return true;
+            case FirstDownsample::automatic:
+                break;
+        }
+        if (!software || !targets.lit_tiles || !history.frame_writes().has(Resource::tile_list))
+            return false;
+        GLuint listed = 0;
+        glGetNamedBufferSubData(targets.lit_tile_count.id(), 0, sizeof(listed), &listed);
+        const auto tiles =
+            static_cast<GLuint>(targets.lit_tiles.width() * targets.lit_tiles.height());
+        return 2 * static_cast<std::uint64_t>(listed) >= tiles;
     }
 
     CameraMatrices camera(const scene::FrameList& frame) const {

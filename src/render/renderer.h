@@ -29,6 +29,12 @@ struct BloomChainSplit {
     std::size_t walked = 0;
 };
 
+enum class FirstDownsampleRead {
+    none,          // no bloom this frame
+    marked_tiles,  // the tiles the line and HUD stages marked
+    whole_image,
+};
+
 struct FrameStats {
     std::size_t objects_drawn = 0;
     std::size_t objects_culled = 0;
@@ -49,6 +55,8 @@ struct FrameStats {
     IntersectionStats intersections;
     std::size_t intersection_records = 0;
     BloomChainSplit bloom_chain;
+    // What the bloom's first downsample read of the beam image (RenderSettings::first_downsample).
+    FirstDownsampleRead first_downsample = FirstDownsampleRead::none;
 };
 
 class Renderer {

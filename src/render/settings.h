@@ -49,6 +49,16 @@ enum class BloomChain {
                 // (bloom_chain.comp); larger ones are drawn
 };
 
+// How the mame beam's bloom reads the beam image into its first level (pass_bloom.cpp).
+// The same picture either way.
+enum class FirstDownsample {
+    automatic,  // on a software rasteriser, dense when half or more of the screen's tiles were
+                // lit the frame before (Targets::lit_tile_count), else sparse; sparse on a GPU
+    sparse,     // the line stages mark the screen tiles their quads may light, and the
+                // downsample reads the beam image under those tiles only
+    dense,      // no marks; the downsample reads the whole beam image
+};
+
 // How feature lines are found.
 enum class LineMethod {
     geometry_shader,  // a geometry shader per triangle on triangle adjacency (pass_lines.cpp)
@@ -194,6 +204,7 @@ struct RenderSettings {
     EdgePrefilter edge_prefilter = EdgePrefilter::automatic;
     ColourClears colour_clears = ColourClears::automatic;
     BloomChain bloom_chain = BloomChain::automatic;
+    FirstDownsample first_downsample = FirstDownsample::automatic;
     bool lod = true;           // raise the crease threshold / use simplified meshes far away
     bool count_edges = false;  // count emitted feature edges (costs a query per frame)
     LineMethod method = kDefaultLineMethod;

@@ -34,6 +34,7 @@ std::vector<std::string> build_defines() {
         define("EDGE_MATERIALS_BINDING", kEdgeMaterialsBinding),
         define("INSTANCES_BINDING", kInstancesBinding),
         define("TILE_LIST_BINDING", kTileListBinding),
+        define("LIT_TILE_COUNT_BINDING", kLitTileCountBinding),
         define("BLOOM_CHAIN_BINDING", kBloomChainBinding),
         define("EDGE_LIST_BINDING", kEdgeListBinding),
         define("EDGE_POSITIONS_BINDING", kEdgePositionsBinding),

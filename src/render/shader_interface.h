@@ -40,8 +40,9 @@ inline constexpr unsigned kVertexBufferNormals = 2;
 // never uses two that share a number.
 inline constexpr unsigned kEdgeCosinesBinding = 0;  // lines.geom: 3 crease cosines per triangle
 inline constexpr unsigned kInstancesBinding = 1;    // the frame's InstanceData
-inline constexpr unsigned kTileListBinding = 6;    // the composite's lit-tile list (tile_list.comp)
-inline constexpr unsigned kBloomChainBinding = 7;  // bloom_chain.comp's levels past the first
+inline constexpr unsigned kTileListBinding = 6;  // the composite's lit-tile list (tile_list.comp)
+inline constexpr unsigned kLitTileCountBinding = 15;   // ... and how many tiles it holds
+inline constexpr unsigned kBloomChainBinding = 7;      // bloom_chain.comp's levels past the first
 inline constexpr unsigned kEdgeMaterialsBinding = 11;  // lines.geom: material boundary bits
 // prepass_raster.comp (lines/prepass_raster.h): the mesh's cluster vertex lists and triangle
 // corners, and the frame's work items; it reads positions at kEdgePositionsBinding.

@@ -92,6 +92,7 @@ void make_images(Targets& t, Targets& old, const RenderSettings& s, ResourceSet 
         if (old.lit_tiles) {
             t.lit_tiles = std::move(old.lit_tiles);
             t.tile_list = std::move(old.tile_list);
+            t.lit_tile_count = std::move(old.lit_tile_count);
         } else {
             const int lit_x = (width + kLitTileSize - 1) / kLitTileSize;
             const int lit_y = (height + kLitTileSize - 1) / kLitTileSize;
@@ -99,6 +100,8 @@ void make_images(Targets& t, Targets& old, const RenderSettings& s, ResourceSet 
             // The draw command (4 words), then one word per tile at most.
             const std::size_t words = 4 + static_cast<std::size_t>(lit_x) * lit_y;
             t.tile_list.set_data(nullptr, words * sizeof(GLuint), GL_DYNAMIC_DRAW);
+            const GLuint none = 0;
+            t.lit_tile_count.set_data(&none, sizeof(none), GL_DYNAMIC_READ);
         }
     }
     if (wants(Resource::beam_tiles)) {

@@ -68,6 +68,9 @@ struct Targets {
     // resolution divides the size, so that the downsample's blocks cover every pixel exactly.
     gl::Texture2D lit_tiles;
     gl::Buffer tile_list;
+    // How many tiles the list holds (one word, tile_list.comp adds each row's): read a frame
+    // later by the bloom's choice of first downsample (RenderSettings::first_downsample).
+    gl::Buffer lit_tile_count;
     // The screen tiles the beam lights (R8UI, like `tiles`): cleared by the line pass, marked by
     // the line and HUD fragments (shaders/beam/beam_tiles.glsl). The bloom's first downsample
     // reads only under them when a pass of its frame wrote them (FrameResources; a frame whose

@@ -34,6 +34,9 @@ expect 0 "p50" bench "$level" --beam mame --frames 3 --warmup 1 --size 192x108 -
 grep -q '"phosphor": "exponential"' "$work/mame/summary.json" || fail "mame run: phosphor not exponential"
 # Its mip-chain bloom says how it went past level 0 (drawn or walked: render/beam/pass_bloom.cpp).
 grep -q '"levels_walked"' "$work/mame/summary.json" || fail "mame run: summary.json lacks bloom_chain"
+# And how often its first downsample read the whole beam image (RenderSettings::first_downsample).
+grep -qE '"whole_image_first_downsample_share": [0-9.e+-]+' "$work/mame/summary.json" ||
+  fail "mame run: summary.json lacks whole_image_first_downsample_share"
 expect 0 "p50" bench "$level" --beam mame --no-phosphor --frames 3 --warmup 1 --size 192x108 --preset fast --out "$work/nophos"
 grep -q '"phosphor": "off"' "$work/nophos/summary.json" || fail "--no-phosphor run: phosphor not off"
 grep -q '"beam": "mame"' "$work/nophos/summary.json" || fail "--no-phosphor changed the look"

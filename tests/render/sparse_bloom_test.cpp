@@ -7,9 +7,11 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <utility>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "geometry/generated/primitives.h"
+#include "gl/driver.h"
 #include "render/render_fixture.h"
 
 using bz::test::RenderTest;
@@ -73,4 +75,66 @@ TEST_F(SparseBloomTest, TheBeamsTileMarksCoverEveryLitBlockInBothMethodsAndLooks
             EXPECT_GT(lit, dense.size() / 50) << "the frame holds too little to compare";
         }
     }
+}
+
+// RenderSettings::first_downsample: without the beam's tile marks the downsample reads the
+// whole beam image; the picture is the same, in both methods and looks, and the composite's
+// own lit tiles (marked by the downsample either way) still cover it.
+TEST_F(SparseBloomTest, TheWholeImageDownsampleGivesTheMarkedTilesPicture) {
+    for (const auto method : bz::render::feature_line_methods()) {
+        for (const char* look : {"classic", "mame"}) {
+            SCOPED_TRACE(std::string(bz::render::line_method_name(method)) + ", " + look);
+            auto s = bz::render::preset("balanced");
+            s.method = method;
+            s.beam = bz::render::beam_look(look);
+            s.beam.phosphor = bz::render::PhosphorDecay::off;  // one frame, no history
+            s.first_downsample = bz::render::FirstDownsample::sparse;
+            const auto marked = render_with(s, true);
+            EXPECT_EQ(renderer->stats().first_downsample,
+                      bz::render::FirstDownsampleRead::marked_tiles);
+            s.first_downsample = bz::render::FirstDownsample::dense;
+            const auto whole = render_with(s, true);
+            EXPECT_EQ(renderer->stats().first_downsample,
+                      bz::render::FirstDownsampleRead::whole_image);
+            ASSERT_EQ(marked.size(), whole.size());
+            int worst = 0;
+            std::size_t lit = 0;
+            for (std::size_t i = 0; i < whole.size(); ++i) {
+                worst = std::max(worst, std::abs(int{marked[i]} - int{whole[i]}));
+                if (i % 4 != 3 && whole[i] > 0) ++lit;
+            }
+            EXPECT_LE(worst, 1) << "the two downsamples differ";
+            EXPECT_GT(lit, whole.size() / 50) << "the frame holds too little to compare";
+        }
+    }
+}
+
+// Automatic reads the whole image on a software rasteriser when the frame before listed half
+// the screen's tiles or more (a screen full of spheres), and keeps the marks where it listed
+// fewer (the few spheres of the fixture); a GPU keeps them always.
+TEST_F(SparseBloomTest, AutomaticReadsTheWholeImageWhereHalfTheTilesWereLit) {
+    auto s = bz::render::preset("balanced");
+    s.beam = bz::render::beam_look("mame");
+    s.first_downsample = bz::render::FirstDownsample::automatic;
+    const std::size_t tiles = static_cast<std::size_t>((kWidth + 15) / 16) * ((kHeight + 15) / 16);
+    auto share_then_choice = [&] {
+        render_with(s, true);  // the frame before: its list is the one the next frame reads
+        const double share =
+            static_cast<double>(renderer->read_lit_tiles().size()) / static_cast<double>(tiles);
+        render_with(s, true);
+        return std::pair{share, renderer->stats().first_downsample};
+    };
+    const auto [few_share, few_choice] = share_then_choice();
+    EXPECT_LT(few_share, 0.5);
+    EXPECT_EQ(few_choice, bz::render::FirstDownsampleRead::marked_tiles);
+    // A grid of coarse spheres over the whole view.
+    const bz::scene::MeshId ball = add_mesh("ball", bz::geo::uv_sphere(0.22f, 6, 10));
+    for (int y = -3; y <= 3; ++y)
+        for (int x = -4; x <= 4; ++x)
+            add_item(ball, glm::translate(glm::dmat4(1.0), {0.55 * x, 0.55 * y, 0.0}));
+    const auto [many_share, many_choice] = share_then_choice();
+    EXPECT_GE(many_share, 0.5);
+    EXPECT_EQ(many_choice, bz::gl::is_software_renderer()
+                               ? bz::render::FirstDownsampleRead::whole_image
+                               : bz::render::FirstDownsampleRead::marked_tiles);
 }

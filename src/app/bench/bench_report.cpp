@@ -24,6 +24,12 @@ double max_of(const std::vector<FrameRecord>& frames, F get) {
     return m;
 }
 
+double whole_image_downsample_share(const RunResult& r) {
+    return mean_of(r.frames, [](const FrameRecord& f) {
+        return f.stats.first_downsample == render::FirstDownsampleRead::whole_image ? 1 : 0;
+    });
+}
+
 const char* depth_name(render::DepthFormat d) {
     return d == render::DepthFormat::reversed_f32 ? "reversed_f32" : "conventional_d24";
 }
@@ -175,6 +181,9 @@ Json run_json(const RunResult& r) {
     scene["compute_line_method_share"] = mean_of(r.frames, [](const FrameRecord& f) {
         return f.stats.line_method == render::LineMethod::compute ? 1 : 0;
     });
+    // RenderSettings::first_downsample: the share of frames whose bloom read the whole beam
+    // image rather than the marked tiles (0 without a bloom).
+    scene["whole_image_first_downsample_share"] = whole_image_downsample_share(r);
     scene["feature_edges_mean"] =
         mean_of(r.frames, [](const FrameRecord& f) { return f.stats.feature_edges; });
     scene["feature_edges_max"] =
@@ -244,6 +253,9 @@ void print_summary_table(std::FILE* out, const BenchMeta& m, const std::vector<R
             });
             std::fprintf(out, ", auto: compute lines in %.0f%% of frames", 100.0 * compute);
         }
+        if (const double whole = whole_image_downsample_share(r); whole > 0.0)
+            std::fprintf(out, ", first bloom downsample over the whole image in %.0f%% of frames",
+                         100.0 * whole);
         std::fprintf(out, "\n");
     }
 }

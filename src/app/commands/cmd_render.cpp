@@ -70,6 +70,14 @@ void print_timings(const render::Renderer& r,
                      "mip-chain bloom past level 0: %zu levels drawn, %zu walked in one dispatch\n",
                      b.drawn, b.walked);
     }
+    // RenderSettings::first_downsample's choice (automatic: by the frame before's lit tiles).
+    if (const render::FirstDownsampleRead d = r.stats().first_downsample;
+        d != render::FirstDownsampleRead::none) {
+        std::fprintf(stdout, "first bloom downsample read %s\n",
+                     d == render::FirstDownsampleRead::whole_image
+                         ? "the whole beam image"
+                         : "the beam image under the marked tiles only");
+    }
     // Where auto timed both clear paths (a hardware GPU), what it found.
     if (const std::optional<render::ClearTiming> ct = r.colour_clear_timing()) {
         std::fprintf(stdout,

@@ -22,8 +22,14 @@ bool marks_tiles(const PassContext& ctx) {
 void first_downsample(const PassContext& ctx, const gl::Texture2D& source, float threshold) {
     Targets& t = ctx.targets;
     const bool mark = marks_tiles(ctx);
-    // The beam's tile marks, where this frame's line pass made them (not the image outline's).
-    const bool sparse = frame_wrote(ctx, Resource::beam_tiles) && mark;
+    // The beam's tile marks, where this frame's line pass made them (not the image outline's)
+    // and the frame wants them (RenderSettings::first_downsample).
+    const bool sparse =
+        frame_wrote(ctx, Resource::beam_tiles) && mark && !ctx.dense_first_downsample;
+    if (ctx.stats) {
+        ctx.stats->first_downsample =
+            sparse ? FirstDownsampleRead::marked_tiles : FirstDownsampleRead::whole_image;
+    }
     if (mark) glClearTexImage(t.lit_tiles.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_BYTE, nullptr);
     t.first_down_fbo.bind();
     const gl::Texture2D& level = t.bloom_mips.empty() ? t.bloom_a : t.bloom_mips[0];

@@ -61,6 +61,7 @@ void pass_hud(const PassContext& ctx) {
         // It adds its marks to the screen tiles an earlier pass of this frame cleared (the
         // line pass, a filled style's fill); else no image is bound and its stores do nothing.
         bind_beam_tiles(t);
+        p.set("u_skip_beam_tiles", ctx.dense_first_downsample ? 1 : 0);
     } else {
         glBindImageTexture(kImageUnitBeamTiles, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R8UI);
     }

@@ -33,12 +33,15 @@ void pass_tiles(const PassContext& ctx) {
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
     const GLuint command[4] = {6, 0, 0, 0};  // 6 vertices per tile, no tile yet
     glNamedBufferSubData(t.tile_list.id(), 0, sizeof(command), command);
+    const GLuint none = 0;
+    glNamedBufferSubData(t.lit_tile_count.id(), 0, sizeof(none), &none);
     const gl::Program& p = ctx.programs.tile_list;
     p.use();
     p.set("u_phosphor", phosphor ? 1 : 0);
     t.lit_tiles.bind(kTextureUnitMarks);
     if (phosphor) ctx.history.picture_lit.bind(kTextureUnitPictureLit);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTileListBinding, t.tile_list.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kLitTileCountBinding, t.lit_tile_count.id());
     const GLuint rows = static_cast<GLuint>(t.lit_tiles.height());  // one invocation per row
     glDispatchCompute((rows + 63) / 64, 1, 1);
     // The composite reads the list as its draw command and in its vertex stage.

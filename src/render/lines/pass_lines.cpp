@@ -85,6 +85,7 @@ void begin_line_target(const PassContext& ctx, const gl::Program& program, bool 
         Targets& t = ctx.targets;
         if (clear) glClearTexImage(t.beam_tiles.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_BYTE, nullptr);
         bind_beam_tiles(t);
+        program.set("u_skip_beam_tiles", ctx.dense_first_downsample ? 1 : 0);
     }
     if (!mask_mode && ctx.view_rows > 0 && ctx.view_rows < ctx.targets.height) {
         state.scissor_rows = ctx.view_rows;  // after the clear, which must cover every row
