@@ -13,6 +13,7 @@
 #include "geometry/generated/primitives.h"
 #include "gl/driver.h"
 #include "render/render_fixture.h"
+#include "render/targets.h"
 
 using bz::test::RenderTest;
 
@@ -42,6 +43,15 @@ class SparseBloomTest : public RenderTest {
         const float column_x = (224.5f - kWidth * 0.5f) / half;  // window column 224 = 7 * 32
         frame.hud.push_back({{-0.9f, row_y}, {-0.2f, row_y}, {0.2f, 1.0f, 0.2f}, 1.5f});
         frame.hud.push_back({{column_x, 0.1f}, {column_x, 0.6f}, {0.2f, 1.0f, 0.2f}, 1.5f});
+    }
+    // balanced with `method` and the beam `look`, without the phosphor: one frame, no history.
+    static bz::render::RenderSettings one_frame_settings(bz::render::LineMethod method,
+                                                         const char* look) {
+        auto s = bz::render::preset("balanced");
+        s.method = method;
+        s.beam = bz::render::beam_look(look);
+        s.beam.phosphor = bz::render::PhosphorDecay::off;
+        return s;
     }
     std::vector<std::uint8_t> render_with(bz::render::RenderSettings s, bool sparse) {
         s.sparse_composite = sparse;
@@ -73,10 +83,7 @@ TEST_F(SparseBloomTest, TheBeamsTileMarksCoverEveryLitBlockInBothMethodsAndLooks
     for (const auto method : bz::render::feature_line_methods()) {
         for (const char* look : {"classic", "mame"}) {
             SCOPED_TRACE(std::string(bz::render::line_method_name(method)) + ", " + look);
-            auto s = bz::render::preset("balanced");
-            s.method = method;
-            s.beam = bz::render::beam_look(look);
-            s.beam.phosphor = bz::render::PhosphorDecay::off;  // one frame, no history
+            auto s = one_frame_settings(method, look);
             const auto sparse = render_with(s, true);
             const auto dense = render_with(s, false);
             expect_same_lit_picture(sparse, dense, "the sparse downsample missed light");
@@ -91,10 +98,7 @@ TEST_F(SparseBloomTest, TheWholeImageDownsampleGivesTheMarkedTilesPicture) {
     for (const auto method : bz::render::feature_line_methods()) {
         for (const char* look : {"classic", "mame"}) {
             SCOPED_TRACE(std::string(bz::render::line_method_name(method)) + ", " + look);
-            auto s = bz::render::preset("balanced");
-            s.method = method;
-            s.beam = bz::render::beam_look(look);
-            s.beam.phosphor = bz::render::PhosphorDecay::off;  // one frame, no history
+            auto s = one_frame_settings(method, look);
             s.first_downsample = bz::render::FirstDownsample::sparse;
             const auto marked = render_with(s, true);
             EXPECT_EQ(renderer->stats().first_downsample,
@@ -115,7 +119,9 @@ TEST_F(SparseBloomTest, AutomaticReadsTheWholeImageWhereHalfTheTilesWereLit) {
     auto s = bz::render::preset("balanced");
     s.beam = bz::render::beam_look("mame");
     s.first_downsample = bz::render::FirstDownsample::automatic;
-    const std::size_t tiles = static_cast<std::size_t>((kWidth + 15) / 16) * ((kHeight + 15) / 16);
+    constexpr int kTile = bz::render::kLitTileSize;
+    const std::size_t tiles =
+        static_cast<std::size_t>((kWidth + kTile - 1) / kTile) * ((kHeight + kTile - 1) / kTile);
     auto share_then_choice = [&] {
         render_with(s, true);  // the frame before: its list is the one the next frame reads
         const double share =
