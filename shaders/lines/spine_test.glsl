@@ -49,12 +49,33 @@ struct EdgeFaces {
     vec3 face_neg;    // all zero: no face on that side
 };
 
-// The stored surface's inverse depth at `p`, extrapolated from texel `t` along its own slope.
-// Each axis takes the smaller of the forward and backward differences, so a texel next to a
-// depth discontinuity uses the side that stays on its surface.
-float stored_inv_depth_at(ivec2 t, vec2 p, float s) {
-    float xp = stored_inv_depth(t + ivec2(1, 0)) - s, xm = s - stored_inv_depth(t - ivec2(1, 0));
-    float yp = stored_inv_depth(t + ivec2(0, 1)) - s, ym = s - stored_inv_depth(t - ivec2(0, 1));
+// Stored depths as inverse view depth, four at a time.
+vec4 inv_depth4(vec4 d) {
+    vec4 ndc = u_depth_zero_to_one ? d : 2.0 * d - 1.0;
+    return (ndc + u_proj_a) * u_proj_inv_b;
+}
+
+// The stored inverse depth at texel `t` and at its four neighbours (x: t + (1, 0), y:
+// t - (1, 0), z: t + (0, 1), w: t - (0, 1)), clamped to the texture as stored_inv_depth
+// clamps. Two gathers of 2x2 texels (at the corners t and t + 1, which lie half a texel from
+// every centre, so rounding cannot pick other texels) instead of five fetches: on llvmpipe
+// each fetch costs its own addressing and clamping for every sample.
+float stored_inv_depth_cross(ivec2 t, out vec4 around) {
+    vec2 inv_size = 1.0 / vec2(u_depth_max + 1);
+    // textureGather's order: (i0, j1), (i1, j1), (i1, j0), (i0, j0) around the corner.
+    vec4 low = inv_depth4(textureGather(u_depth, vec2(t) * inv_size));
+    vec4 high = inv_depth4(textureGather(u_depth, vec2(t + 1) * inv_size));
+    around = vec4(high.z, low.x, high.x, low.z);
+    return low.y;
+}
+
+// The stored surface's inverse depth at `p`, extrapolated from texel `t` (inverse depth `s`,
+// its neighbours `around` as stored_inv_depth_cross gives them) along its own slope. Each
+// axis takes the smaller of the forward and backward differences, so a texel next to a depth
+// discontinuity uses the side that stays on its surface.
+float stored_inv_depth_at(ivec2 t, vec2 p, float s, vec4 around) {
+    float xp = around.x - s, xm = s - around.y;
+    float yp = around.z - s, ym = s - around.w;
     vec2 g = vec2(abs(xp) < abs(xm) ? xp : xm, abs(yp) < abs(ym) ? yp : ym);
     return s + dot(g, p - (vec2(t) + 0.5));
 }
@@ -65,7 +86,8 @@ bool sample_visible(ivec2 t, vec2 spine_px, float line_inv, EdgeFaces e) {
     vec3 r = vec3((vec2(t) + 0.5) * u_ray.xy + u_ray.zw, -1.0);
     vec3 f = dot(e.edge_plane, r) >= 0.0 ? e.face_pos : e.face_neg;
     float want = dot(f, r);
-    float stored = stored_inv_depth(t);
+    vec4 around;
+    float stored = stored_inv_depth_cross(t, around);
     // No face on that side (a silhouette's outside, a boundary), or a plane seen so edge-on
     // that its depth could be anywhere: compared with the spine's own depth below.
     if (want > line_inv * 0.25) {
@@ -89,7 +111,7 @@ bool sample_visible(ivec2 t, vec2 spine_px, float line_inv, EdgeFaces e) {
     // away (a thin roof over a rafter's flank hides it, a floor sloping away behind a
     // silhouette does not). One place for both cases: llvmpipe runs every branch's code for
     // every sample, so each copy of these four fetches cost it whether taken or not.
-    return stored_inv_depth_at(t, spine_px, stored) <=
+    return stored_inv_depth_at(t, spine_px, stored, around) <=
            line_inv + line_inv * (u_tol_rel + u_fallback_rel) + u_tol_abs;
 }
 
