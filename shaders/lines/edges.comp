@@ -105,16 +105,40 @@ mat4 model_view(uint inst) { return instance_model_view(inst); }
 // view-space test of the geometry shader for a near tie, so that both line methods classify a
 // grazing face alike (the object-space rounding differs from the view-space one, and the
 // difference showed as a few lost silhouette pixels against the exact reference). The face is
-// a, v1, v2 in its winding; `det_sign` is the instance's (the eye's w).
+// a, v1, v2 in its winding, here in view space; `det_sign` is the instance's (the eye's w).
+bool faces_eye_resolved(float det_sign, vec3 n, vec3 to_eye, vec3 a, vec3 v1, vec3 v2) {
+    float s = det_sign * dot(n, to_eye);
+    if (abs(s) > 1e-4 * length(n) * length(to_eye)) return s > 0.0;
+    return faces_eye(face_normal(a, v1, v2), a);
+}
+
+// The edge's vertices in view space: a and b, and the third vertices of faces A and B (zero
+// without face B).
+struct ViewVertices {
+    mat4 mv;
+    vec3 a, b, opp_a, opp_b;
+};
+ViewVertices view_vertices(uint inst, MeshEdge me, vec3 pa, bool has_b) {
+    ViewVertices v;
+    v.mv = model_view(inst);
+    v.a = (v.mv * vec4(pa, 1.0)).xyz;
+    v.b = (v.mv * vec4(position(me.b), 1.0)).xyz;
+    v.opp_a = (v.mv * vec4(position(me.opp_a), 1.0)).xyz;
+    v.opp_b = has_b ? (v.mv * vec4(position(me.opp_b), 1.0)).xyz : vec3(0.0);
+    return v;
+}
+
+#ifndef EDGE_WORK_LISTED
+// faces_eye_resolved with the face's vertices in object space, transformed only for a tie.
 bool faces_eye_object(uint inst, float det_sign, vec3 n, vec3 to_eye, vec3 pa, uint v1, uint v2) {
     float s = det_sign * dot(n, to_eye);
     if (abs(s) > 1e-4 * length(n) * length(to_eye)) return s > 0.0;
     mat4 mv = model_view(inst);
     vec3 a = (mv * vec4(pa, 1.0)).xyz;
-    vec3 b = (mv * vec4(position(v1), 1.0)).xyz;
-    vec3 c = (mv * vec4(position(v2), 1.0)).xyz;
-    return faces_eye(face_normal(a, b, c), a);
+    return faces_eye_resolved(det_sign, n, to_eye, a, (mv * vec4(position(v1), 1.0)).xyz,
+                              (mv * vec4(position(v2), 1.0)).xyz);
 }
+#endif
 
 // Whether every tile under the item's rectangle holds a surface nearer than the nearest point
 // of its bounding sphere, by more than the spine test would forgive: then no spine sample of
@@ -143,15 +167,23 @@ void test_edge(uint inst, vec4 eye, uint e) {
     vec3 pa = position(me.a);
     vec3 to_eye = eye.xyz - pa;  // both faces hold vertex a
     vec3 obj_na = face_normals[me.face_a].xyz;
+    bool has_b = me.opp_b != kNoVertex && me.face_b != kNoVertex;
+    vec3 obj_nb = has_b ? face_normals[me.face_b].xyz : vec3(0.0);
+#ifdef EDGE_WORK_LISTED
+    // Listed edges are nearly all feature edges (the CPU prefilter dropped the rest), and
+    // llvmpipe runs every branch whether a lane takes it or not: the view-space vertices are
+    // computed once, up front, instead of once for each face's tie test and again below.
+    ViewVertices v = view_vertices(inst, me, pa, has_b);
+    bool front_a = faces_eye_resolved(eye.w, obj_na, to_eye, v.a, v.b, v.opp_a);
+#else
     bool front_a = faces_eye_object(inst, eye.w, obj_na, to_eye, pa, me.b, me.opp_a);
+#endif
 
     // The geometry shader's cases, seen from the edge instead of from each face; everything
-    // that is no feature edge returns before any vertex is transformed.
+    // that is no feature edge returns before any vertex is transformed (a tie aside).
     uint kind;
     uint flags = front_a ? EDGE_FACE_A_FRONT : 0u;
-    bool has_b = me.opp_b != kNoVertex && me.face_b != kNoVertex;
     bool front_b = false;
-    vec3 obj_nb = vec3(0.0);
     if (!has_b) {
         // Boundary, non-manifold or inconsistent: always a feature edge, one record per face.
         if (!front_a && u_skip_back_faces) return;
@@ -159,8 +191,11 @@ void test_edge(uint inst, vec4 eye, uint e) {
         if (me.flags == 2u) flags |= EDGE_NON_MANIFOLD;
         if (me.flags == 3u) flags |= EDGE_INCONSISTENT;
     } else {
-        obj_nb = face_normals[me.face_b].xyz;
+#ifdef EDGE_WORK_LISTED
+        front_b = faces_eye_resolved(eye.w, obj_nb, to_eye, v.a, v.opp_b, v.b);
+#else
         front_b = faces_eye_object(inst, eye.w, obj_nb, to_eye, pa, me.opp_b, me.b);
+#endif
         flags |= EDGE_HAS_FACE_B | (front_b ? EDGE_FACE_B_FRONT : 0u);
         if (front_a != front_b) {
             kind = EDGE_SILHOUETTE;
@@ -181,22 +216,24 @@ void test_edge(uint inst, vec4 eye, uint e) {
     // A feature edge: to view space. Normals go with the cofactor matrix (right for any
     // invertible model-view), which maps the object-space cross product of a face's edges to
     // the view-space one.
-    mat4 mv = model_view(inst);
+#ifndef EDGE_WORK_LISTED
+    ViewVertices v = view_vertices(inst, me, pa, has_b);
+#endif
+    mat4 mv = v.mv;
     mat3 l = mat3(mv);
     mat3 cof = mat3(cross(l[1], l[2]), cross(l[2], l[0]), cross(l[0], l[1]));
-    vec3 a = (mv * vec4(pa, 1.0)).xyz;
-    vec3 b = (mv * vec4(position(me.b), 1.0)).xyz;
-    vec3 oa = (mv * vec4(position(me.opp_a), 1.0)).xyz;
+    vec3 a = v.a;
+    vec3 b = v.b;
     vec3 na = cof * obj_na;
     vec3 nb = has_b ? cof * obj_nb : vec3(0.0);
-    vec3 p0 = a, p1 = b, opp = oa;  // emitted direction and the emitting face's third vertex
+    vec3 p0 = a, p1 = b, opp = v.opp_a;  // emitted direction and the emitting face's third vertex
     vec3 face_pos = plane_of(na, a), face_neg = vec3(0.0);
     if (kind == EDGE_SILHOUETTE) {
         // Emitted in the front face's winding with its third vertex.
-        if (!front_a) { p0 = b; p1 = a; opp = (mv * vec4(position(me.opp_b), 1.0)).xyz; }
+        if (!front_a) { p0 = b; p1 = a; opp = v.opp_b; }
         face_pos = vec3(0.0);
     } else if (kind == EDGE_CREASE) {
-        face_neg = plane_of(nb, (mv * vec4(position(me.opp_b), 1.0)).xyz);
+        face_neg = plane_of(nb, v.opp_b);
     }
 
     vec3 m = eye_edge_plane(p0, p1, opp);
