@@ -126,9 +126,12 @@ struct Renderer::Impl {
         return clear_timing->compute_is_faster();
     }
 
+    // `dense_downsample`: the drawn frame's choice (dense_first_downsample below); held
+    // frames and masks draw no bloom, so they need not read the count it reads.
     PassContext context(const scene::MeshLibrary& meshes, const FrameBatches& batches,
                         const CameraMatrices& cam, const StyleDef& style, GLsizei hud_count,
-                        GLuint target, const scene::FrameList& frame, FramePicture* picture) {
+                        GLuint target, const scene::FrameList& frame, FramePicture* picture,
+                        bool dense_downsample = false) {
         const int view_rows = scene_view_rows(frame.view_top, height);
         return PassContext{.programs = programs,
                            .targets = targets,
@@ -156,7 +159,7 @@ struct Renderer::Impl {
                            .raster_work = &raster_work,
                            .software_rasteriser = software,
                            .clears_by_compute = clears_by_compute(),
-                           .dense_first_downsample = dense_first_downsample(style),
+                           .dense_first_downsample = dense_downsample,
                            .intersections = &intersection_buffer,
                            .intersection_count = intersection_count};
     }
@@ -387,8 +390,8 @@ void Renderer::render(const scene::FrameList& frame, const scene::MeshLibrary& m
     const gl::Texture2D* past = m.history.picture();
     FramePicture picture{
         &m.targets.lines, past ? frame.time_s - m.history.time_s() : 0.0, false, {}};
-    const PassContext ctx =
-        m.context(meshes, batches, cam, style, hud_count, target, frame, &picture);
+    const PassContext ctx = m.context(meshes, batches, cam, style, hud_count, target, frame,
+                                      &picture, m.dense_first_downsample(style));
     // The frame is the style's list of passes (frame_passes.cpp), each timed under its name.
     m.run_passes(list, ctx, FrameResources{});
     // The history now holds what this frame wrote of it: only a beam style writes a picture
