@@ -264,19 +264,21 @@ void test_edge(uint inst, vec4 eye, uint e) {
         if (want == 0u || (want <= u_sample_capacity && first_sample <= u_sample_capacity - want)) samples = n;
     }
 
-    EdgeRecord r;
-    r.screen = vec4(s.s0, s.s1);
-    r.depth = vec4(1.0 / s.w, s.t);
-    r.edge_plane = vec4(m, me.cos_dihedral);
-    r.face_pos = vec4(face_pos, 0.0);
-    r.face_neg = vec4(face_neg, 0.0);
-    r.normal_a = vec4(unit_or_zero(reversed ? nb : na), 0.0);
-    r.normal_b = vec4(unit_or_zero(reversed ? na : nb), 0.0);
-    r.vertex_normal_a = vec4(unit_or_zero(cof * vertex_normal(va)), 0.0);
-    r.vertex_normal_b = vec4(unit_or_zero(cof * vertex_normal(vb)), 0.0);
-    r.ids = uvec4(kind | flags, inst, me.id, u_mesh_id);
-    r.vertices = uvec4(va, vb, first_sample, samples);
-    records[slot] = r;
+    records[slot].screen = vec4(s.s0, s.s1);
+    records[slot].depth = vec4(1.0 / s.w, s.t);
+    records[slot].edge_plane = vec4(m, me.cos_dihedral);
+    records[slot].face_pos = vec4(face_pos, 0.0);
+    records[slot].face_neg = vec4(face_neg, 0.0);
+#ifdef EDGE_RECORD_NORMALS
+    // Only the strokes that shade by them read the normals (edge_buffer.h): every other frame
+    // saves their loads, transforms and stores.
+    records[slot].normal_a = vec4(unit_or_zero(reversed ? nb : na), 0.0);
+    records[slot].normal_b = vec4(unit_or_zero(reversed ? na : nb), 0.0);
+    records[slot].vertex_normal_a = vec4(unit_or_zero(cof * vertex_normal(va)), 0.0);
+    records[slot].vertex_normal_b = vec4(unit_or_zero(cof * vertex_normal(vb)), 0.0);
+#endif
+    records[slot].ids = uvec4(kind | flags, inst, me.id, u_mesh_id);
+    records[slot].vertices = uvec4(va, vb, first_sample, samples);
     if (samples > 0u) {  // none visible yet
         spans[2u * slot] = uvec4(sampled, 0xFFFFFFFFu, 0u);
         spans[2u * slot + 1u] = uvec4(0u);

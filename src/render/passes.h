@@ -149,6 +149,10 @@ void pass_depth_tiles(const PassContext& ctx);
 // Fills the edge buffer from every batch's edge list (edges.comp): the strokes of the filled
 // styles and LineMethod::compute read it.
 void pass_edges(const PassContext& ctx);
+// Whether a style's edge records carry their faces' and vertices' normals: the sketch strokes
+// weigh creases by how lit their faces are, the halo bends silhouettes by the vertex normals
+// (shaders/styles/stroke.vert). Nothing else reads them, so other frames skip their work.
+bool records_carry_normals(const StyleDef& style);
 // Whether the edges pass reserves spine samples: LineMethod::compute's beam lines with
 // occlusion (pass_spine_visibility.cpp).
 bool wants_spine_samples(const PassContext& ctx);

@@ -80,6 +80,10 @@ Programs load_programs(const RenderSettings& settings) {
     p.edges = program({stage(GL_COMPUTE_SHADER, "lines/edges.comp")}, {edge_group});
     p.edges_listed =
         program({stage(GL_COMPUTE_SHADER, "lines/edges.comp")}, {edge_group, "EDGE_WORK_LISTED 1"});
+    p.edges_normals = program({stage(GL_COMPUTE_SHADER, "lines/edges.comp")},
+                              {edge_group, "EDGE_RECORD_NORMALS 1"});
+    p.edges_listed_normals = program({stage(GL_COMPUTE_SHADER, "lines/edges.comp")},
+                                     {edge_group, "EDGE_WORK_LISTED 1", "EDGE_RECORD_NORMALS 1"});
     p.spine_visibility = program({stage(GL_COMPUTE_SHADER, "lines/spine_visibility.comp")});
     p.intersections = program({stage(GL_COMPUTE_SHADER, "lines/intersections.comp")});
     p.depth_tiles = program({stage(GL_COMPUTE_SHADER, "lines/depth_tiles.comp")});

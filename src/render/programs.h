@@ -19,10 +19,14 @@ struct Programs {
     gl::Program depth_resolve;    // ... merged into the depth buffer
     gl::Program occlusion_layer;  // prepass.vert + occlusion_layer.frag: one peeled layer
     gl::Program lines;
-    gl::Program mask;              // lines.* with MASK_MODE
-    gl::Program lines_dim;         // lines.* with OCCLUSION_LEVELS: dimmer by level (x-ray)
-    gl::Program edges;             // LineMethod::compute: edges.comp fills the edge buffer
-    gl::Program edges_listed;      // the same for the edges the CPU listed (lines/edge_prefilter.h)
+    gl::Program mask;          // lines.* with MASK_MODE
+    gl::Program lines_dim;     // lines.* with OCCLUSION_LEVELS: dimmer by level (x-ray)
+    gl::Program edges;         // LineMethod::compute: edges.comp fills the edge buffer
+    gl::Program edges_listed;  // the same for the edges the CPU listed (lines/edge_prefilter.h)
+    // ... both writing the records' normals too, for the strokes that shade by them
+    // (EDGE_RECORD_NORMALS; records_carry_normals in passes.h)
+    gl::Program edges_normals;
+    gl::Program edges_listed_normals;
     gl::Program spine_visibility;  // ... spine test per spine sample
     gl::Program intersections;     // intersections.comp: intersection lines into the edge buffer
     gl::Program depth_tiles;       // ... hierarchical-Z culling's depth tiles

@@ -454,6 +454,19 @@ std::vector<float> Renderer::read_picture_hdr() {
     return read_hdr(picture ? *picture : impl_->targets.lines);
 }
 
+std::vector<EdgeRecord> Renderer::read_edge_records() {
+    const EdgeStorage& edges = impl_->edges;
+    if (edges.capacity() == 0) return {};
+    const std::size_t n =
+        std::min<std::size_t>(edges.counts().records, static_cast<std::size_t>(edges.capacity()));
+    std::vector<EdgeRecord> records(n);
+    if (n == 0) return records;
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    glGetNamedBufferSubData(edges.records().id(), 0,
+                            static_cast<GLsizeiptr>(n * sizeof(EdgeRecord)), records.data());
+    return records;
+}
+
 std::vector<glm::ivec2> Renderer::read_lit_tiles() {
     const Targets& t = impl_->targets;
     // Only when the last frame drawn built it (FrameHistory::frame_writes).

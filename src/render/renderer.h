@@ -14,6 +14,7 @@
 #include "render/frame_resources.h"
 #include "render/gpu_scene/intersection_cache.h"
 #include "render/gpu_scene/triangle_culling.h"
+#include "render/lines/edge_buffer.h"
 #include "render/lines/edge_culling.h"
 #include "render/settings.h"
 #include "scene/frame_list.h"
@@ -103,6 +104,9 @@ class Renderer {
     // empty when it composited every pixel (RenderSettings::sparse_composite off, no bloom, or
     // a size the bloom does not divide).
     std::vector<glm::ivec2> read_lit_tiles();
+    // The edge buffer's records as its last fill (an edges pass, with any intersection lines)
+    // left them, those that fit its capacity; empty before any fill. For tests.
+    std::vector<EdgeRecord> read_edge_records();
     // The last render()'s finished bloom, RGBA8 sqrt-encoded (shaders/beam/bloom_encoding.glsl)
     // at the bloom resolution, in GL's order (row 0 at the bottom), with its size.
     std::vector<std::uint8_t> read_bloom(glm::ivec2* size);

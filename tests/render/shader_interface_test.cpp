@@ -91,6 +91,8 @@ std::vector<std::pair<std::string, const bz::gl::Program*>> every_program(
         {"intersections", &p.intersections},
         {"depth_tiles", &p.depth_tiles},
         {"edges_listed", &p.edges_listed},
+        {"edges_normals", &p.edges_normals},
+        {"edges_listed_normals", &p.edges_listed_normals},
         {"edge_quads.sampled", &p.edge_quads.sampled},
         {"edge_quads.tested", &p.edge_quads.tested},
         {"edge_quads_mask.sampled", &p.edge_quads_mask.sampled},

@@ -59,8 +59,10 @@ struct EdgeRecord {
     glm::vec4 face_pos;    // xyz: the spine test's plane for the positive side (n / (n.p),
                            // see shaders/lines/spine_test.glsl); zero = use the spine's depth; w: 0
     glm::vec4 face_neg;    // xyz: ... for the negative side; w: 0
-    glm::vec4 normal_a;    // xyz: unit normal of face A; w: 0
-    glm::vec4 normal_b;    // xyz: unit normal of face B, zero when absent; w: 0
+    // The four normals are written only where the frame's strokes read them
+    // (records_carry_normals, passes.h): elsewhere they hold what the buffer held.
+    glm::vec4 normal_a;         // xyz: unit normal of face A; w: 0
+    glm::vec4 normal_b;         // xyz: unit normal of face B, zero when absent; w: 0
     glm::vec4 vertex_normal_a;  // xyz: unit smooth (angle-weighted) vertex normal at a; w: 0
     glm::vec4 vertex_normal_b;  // xyz: ... at b; w: 0
     glm::uvec4 ids;             // x: kind_flags (EdgeKindCode | edge_flags); y: instance index

@@ -29,6 +29,10 @@ constexpr std::size_t kClustersPerJob = 1024;
 
 }  // namespace
 
+bool records_carry_normals(const StyleDef& style) {
+    return style.lines == LinePass::sketch || style.lines == LinePass::halo;
+}
+
 // Edge extraction for LineMethod::compute: the CPU culls each instance's edge clusters
 // (edge_culling.h) into work items, then one dispatch per batch runs one work group per item
 // (edges.comp), appending the visible feature edges to the edge buffer. With the CPU
@@ -149,7 +153,11 @@ void pass_edges(const PassContext& ctx) {
     }
     ctx.edges.set_work(work);
 
-    const gl::Program& program = listed ? ctx.programs.edges_listed : ctx.programs.edges;
+    const Programs& programs = ctx.programs;
+    const gl::Program& program =
+        records_carry_normals(ctx.style)
+            ? (listed ? programs.edges_listed_normals : programs.edges_normals)
+            : (listed ? programs.edges_listed : programs.edges);
     program.use();
     program.set("u_proj", ctx.cam.proj);
     program.set("u_viewport", glm::vec2(static_cast<float>(ctx.targets.width),
