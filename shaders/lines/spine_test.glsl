@@ -110,7 +110,8 @@ bool sample_visible(ivec2 t, vec2 spine_px, float line_inv, EdgeFaces e) {
     // spine: so a surface just beyond the edge counts by its depth at the edge, not a pixel
     // away (a thin roof over a rafter's flank hides it, a floor sloping away behind a
     // silhouette does not). One place for both cases: llvmpipe runs every branch's code for
-    // every sample, so each copy of these four fetches cost it whether taken or not.
+    // every sample, so each copy of this extrapolation cost it whether taken or not (its
+    // neighbours come with the texel's own gathers, stored_inv_depth_cross).
     return stored_inv_depth_at(t, spine_px, stored, around) <=
            line_inv + line_inv * (u_tol_rel + u_fallback_rel) + u_tol_abs;
 }

@@ -27,8 +27,7 @@ class PassEdgesTest : public RenderTest {
         const scene::MeshId sphere = add_mesh("sphere", geo::uv_sphere(1.0f, 24, 48));
         add_item(sphere);
         frame.items.back().smooth = true;
-        frame.camera =
-            render::frame_bounds(meshes.bounds(sphere), 50.0, double(kWidth) / kHeight);
+        frame.camera = render::frame_bounds(meshes.bounds(sphere), 50.0, double(kWidth) / kHeight);
         settings.method = render::LineMethod::compute;
     }
 
