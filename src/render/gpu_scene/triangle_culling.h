@@ -9,20 +9,14 @@
 #include <vector>
 
 #include "geometry/derived/triangle_clusters.h"
+#include "gl/indirect_commands.h"
 #include "render/gpu_scene/cluster_culling.h"
 #include "render/lines/hiz_culling.h"
 
 namespace bz::render {
 
-// glMultiDrawElementsIndirect's command (DrawElementsIndirectCommand).
-struct TriangleDraw {
-    std::uint32_t count = 0;
-    std::uint32_t instance_count = 1;
-    std::uint32_t first_index = 0;
-    std::int32_t base_vertex = 0;
-    std::uint32_t base_instance = 0;
-};
-static_assert(sizeof(TriangleDraw) == 20, "the GL command layout");
+// One glMultiDrawElementsIndirect command: a run of kept clusters of one instance.
+using TriangleDraw = gl::DrawElementsIndirectCommand;
 
 struct TriangleCullStats {
     std::size_t clusters = 0;         // (instance, cluster) pairs looked at

@@ -16,6 +16,8 @@
 #include <cstdint>
 #include <glm/glm.hpp>
 
+#include "gl/indirect_commands.h"
+
 namespace bz::render {
 
 // What made an edge a feature edge (EdgeRecord::kind_flags bits 0-3).
@@ -89,16 +91,6 @@ struct DrawArraysCommand {
     std::uint32_t first = 0;
     std::uint32_t base_instance = 0;
 };
-// DrawElementsIndirectCommand of a quad draw through EdgeStorage::quad_indices: each quad's
-// four corners indexed by its two triangles, so the vertex shader runs four times per quad,
-// not six (on llvmpipe, one thread runs every vertex: 0.8-1 ms of the seed's hallway).
-struct DrawElementsCommand {
-    std::uint32_t count = 0;
-    std::uint32_t instance_count = 1;
-    std::uint32_t first_index = 0;
-    std::uint32_t base_vertex = 0;
-    std::uint32_t base_instance = 0;
-};
 struct EdgeDrawCommand {
     std::uint32_t vertex_count = 0;
     std::uint32_t instance_count = 1;
@@ -109,9 +101,12 @@ struct EdgeDrawCommand {
     // Written by spine_visibility.comp, read as the quad pass's two indexed indirect draws:
     // the records with spine samples (the frame's samples fit) and those whose fragments run
     // the spine test (they did not); one of the two draws nothing (pass_edge_quads.cpp). Their
-    // counts stop at the buffer's capacity, where the quad indices end.
-    DrawElementsCommand sampled_draw;
-    DrawElementsCommand tested_draw;
+    // counts stop at the buffer's capacity, where the quad indices end. Each draws through
+    // EdgeStorage::quad_indices: a quad's four corners indexed by its two triangles, so the
+    // vertex shader runs four times per quad, not six (on llvmpipe, one thread runs every
+    // vertex: 0.8-1 ms of the seed's hallway).
+    gl::DrawElementsIndirectCommand sampled_draw;
+    gl::DrawElementsIndirectCommand tested_draw;
 };
 static_assert(offsetof(EdgeDrawCommand, sampled_draw) == 24 &&
                   offsetof(EdgeDrawCommand, tested_draw) == 44 && sizeof(EdgeDrawCommand) == 64,
