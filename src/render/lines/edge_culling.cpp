@@ -1,6 +1,7 @@
 #include "render/lines/edge_culling.h"
 
 #include <algorithm>
+#include <array>
 
 namespace bz::render {
 
@@ -109,13 +110,11 @@ void append_edge_work(const geo::ClusteredEdges& clusters, const glm::mat4& mode
         const auto bounds_index = static_cast<std::uint32_t>(bounds ? bounds->size() : 0);
         if (prefilter) {
             stats.edges_prefiltered += count;
-            std::uint32_t listed = 0;
-            for (std::uint32_t e = k.first; e < k.first + count; ++e) {
-                if (!may_be_feature(prefilter->edges[e], clusters.crease_keys[e], eye, cos_crease))
-                    continue;
-                work.push_back(EdgeWorkItem(instance, e, bounds_index, listed == 0 ? 1u : 0u));
-                ++listed;
-            }
+            std::array<std::uint32_t, geo::kMaxClusterEdges> kept;
+            const std::uint32_t listed =
+                list_maybe_features(*prefilter, k.first, count, eye, cos_crease, kept.data());
+            for (std::uint32_t j = 0; j < listed; ++j)
+                work.push_back(EdgeWorkItem(instance, kept[j], bounds_index, j == 0 ? 1u : 0u));
             if (listed == 0) continue;
             count = listed;
         } else {

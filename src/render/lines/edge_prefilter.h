@@ -19,18 +19,23 @@ struct AdjacencyMesh;
 
 namespace bz::render {
 
-// Per edge of a mesh's clustered edge list, what the facing test needs, side by side so that
-// the test streams through memory (an index into the face normals instead cost twice the time
-// on Suzanne, a cache miss an edge).
+// Per edge of a mesh's clustered edge list, what the facing test needs.
 struct EdgeFacing {
     glm::vec3 a;    // vertex a, on both faces
     glm::vec3 n_a;  // face A's unnormalised normal (geo::face_normals, as edges.comp reads it)
     glm::vec3 n_b;  // face B's; zero without face B (the test is then unsure: kept)
 };
 
-// The crease keys it needs too are the clustered list's own (geo::ClusteredEdges::crease_keys).
+// The same for every edge of the list, one array per component, so that a cluster's edges are
+// tested a SIMD vector at a time (list_maybe_features), with the crease keys
+// (geo::ClusteredEdges::crease_keys) beside them. Every array holds geo::kMaxClusterEdges more
+// entries than the list has edges (zero, the crease key 2: no feature), so that a cluster's
+// fixed-size block never reads past the end.
 struct EdgeFacingTable {
-    std::vector<EdgeFacing> edges;  // in the clustered list's order
+    enum Column { ax, ay, az, nax, nay, naz, nbx, nby, nbz, crease_key, kColumns };
+    std::vector<float> columns[kColumns];
+    std::size_t edges = 0;  // edges of the list (each column holds edges + kMaxClusterEdges)
+    EdgeFacing at(std::size_t e) const;
 };
 
 EdgeFacingTable build_edge_facing_table(const geo::AdjacencyMesh& mesh,
@@ -45,5 +50,12 @@ bool uses_edge_prefilter(const RenderSettings& settings, bool software_rasterise
 // edges.comp would surely find it no feature (both faces clearly on one side of the eye, and
 // no crease, boundary or material key below cos_crease).
 bool may_be_feature(const EdgeFacing& f, float crease_key, const glm::vec3& eye, float cos_crease);
+
+// may_be_feature for the table's edges [first, first + count), count <= geo::kMaxClusterEdges
+// (one cluster): writes the indices of those that may be feature edges to `kept` in order and
+// returns how many.
+std::uint32_t list_maybe_features(const EdgeFacingTable& table, std::uint32_t first,
+                                  std::uint32_t count, const glm::vec3& eye, float cos_crease,
+                                  std::uint32_t* kept);
 
 }  // namespace bz::render

@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "geometry/generated/primitives.h"
@@ -99,6 +101,61 @@ TEST_F(EdgePrefilterTest, GrazingSheetsMirroredInstancesAndTheEyeInside) {
     frame.camera.eye = glm::dvec3(0.1, 0.2, 0.3);
     frame.camera.target = glm::dvec3(0.5, 0.3, -1.0);
     expect_same_lines("inside a box");
+}
+
+// The block test lists exactly the edges the edge-by-edge definition keeps, in order: faces
+// both ways, near grazing on either side of the band, without face B, not-a-number, creases
+// and keys above the threshold, in blocks that start anywhere and end short of a cluster.
+TEST(EdgePrefilterBlock, ListsWhatMayBeFeatureKeeps) {
+    std::vector<render::EdgeFacing> facings;
+    std::vector<float> keys;
+    const glm::vec3 eye(0.3f, 2.0f, -1.5f);
+    std::uint32_t state = 12345u;
+    auto next = [&state] {
+        state = state * 1664525u + 1013904223u;
+        return static_cast<float>(state >> 8) / 16777216.0f * 2.0f - 1.0f;
+    };
+    for (int i = 0; i < 1000; ++i) {
+        const glm::vec3 a(next(), next(), next());
+        const glm::vec3 to_eye = eye - a;
+        glm::vec3 n_a(next(), next(), next()), n_b(next(), next(), next());
+        // Every fourth face lies within a few multiples of the band of grazing.
+        if (i % 4 == 0)
+            n_a -= to_eye * (glm::dot(n_a, to_eye) / glm::dot(to_eye, to_eye)) *
+                   (1.0f - 1e-4f * next());
+        if (i % 7 == 0) n_b = glm::vec3(0.0f);  // no face B
+        if (i % 97 == 0) n_a.x = std::nanf("");
+        facings.push_back({a, n_a, n_b});
+        keys.push_back(i % 5 == 0 ? -0.9f : 0.4f + 0.2f * next());  // around the threshold
+    }
+    // A table of them, padded as build_edge_facing_table pads it.
+    render::EdgeFacingTable table;
+    table.edges = facings.size();
+    for (std::size_t i = 0; i < facings.size() + geo::kMaxClusterEdges; ++i) {
+        const bool pad = i >= facings.size();
+        const render::EdgeFacing f = pad ? render::EdgeFacing{} : facings[i];
+        const float values[] = {f.a.x,   f.a.y,   f.a.z,   f.n_a.x, f.n_a.y,
+                                f.n_a.z, f.n_b.x, f.n_b.y, f.n_b.z, pad ? 2.0f : keys[i]};
+        for (int c = 0; c < render::EdgeFacingTable::kColumns; ++c)
+            table.columns[c].push_back(values[c]);
+    }
+    const float cos_crease = 0.5f;
+    std::size_t kept_total = 0, dropped_total = 0;
+    for (std::uint32_t first = 0; first < facings.size(); first += 37) {
+        const auto count = static_cast<std::uint32_t>(
+            std::min<std::size_t>({geo::kMaxClusterEdges, 1 + first % 64, facings.size() - first}));
+        std::vector<std::uint32_t> expected;
+        for (std::uint32_t e = first; e < first + count; ++e)
+            if (render::may_be_feature(table.at(e), keys[e], eye, cos_crease))
+                expected.push_back(e);
+        std::vector<std::uint32_t> kept(geo::kMaxClusterEdges);
+        kept.resize(render::list_maybe_features(table, first, count, eye, cos_crease, kept.data()));
+        EXPECT_EQ(kept, expected) << "block at " << first;
+        kept_total += kept.size();
+        dropped_total += count - kept.size();
+    }
+    EXPECT_GT(kept_total, 100u);
+    EXPECT_GT(dropped_total, 50u);
 }
 
 }  // namespace
