@@ -1,13 +1,14 @@
 #pragma once
-// Runs `job(i, chunk)` for every i in [0, n) on up to `max_threads` threads, in contiguous
-// chunks of at least `min_per_chunk` jobs; chunk c's jobs come before chunk c+1's, so results
-// gathered per chunk and concatenated in chunk order are the same as one thread's, whatever
+// Runs `job(i, chunk)` for every i in [0, n) on up to `max_threads` of the pool's threads, in
+// contiguous chunks of at least `min_per_chunk` jobs; chunk c's jobs come before chunk c+1's, so
+// results gathered per chunk and concatenated in chunk order are the same as one thread's, whatever
 // the thread count. Small work (n < 2 * min_per_chunk) runs on the calling thread. For CPU work
 // a frame does before the GPU starts (culling thousands of clusters per instance).
 #include <algorithm>
 #include <cstddef>
 #include <thread>
-#include <vector>
+
+#include "core/worker_pool.h"
 
 namespace bz {
 
@@ -20,21 +21,15 @@ inline std::size_t chunk_count(std::size_t n, std::size_t min_per_chunk, std::si
 }
 
 template <class Job>
-void parallel_chunks(std::size_t n, std::size_t min_per_chunk, std::size_t max_threads,
-                     const Job& job) {
-    const std::size_t chunks = chunk_count(n, min_per_chunk, max_threads);
+void parallel_chunks(WorkerPool& pool, std::size_t n, std::size_t min_per_chunk,
+                     std::size_t max_threads, const Job& job) {
+    const std::size_t chunks =
+        chunk_count(n, min_per_chunk, std::min(max_threads, pool.max_threads()));
     const auto run = [&](std::size_t c) {
         for (std::size_t i = n * c / chunks; i < n * (c + 1) / chunks; ++i) job(i, c);
     };
-    if (chunks <= 1) {
-        if (chunks == 1) run(0);
-        return;
-    }
-    std::vector<std::thread> threads;
-    threads.reserve(chunks - 1);
-    for (std::size_t c = 1; c < chunks; ++c) threads.emplace_back(run, c);
-    run(0);
-    for (std::thread& t : threads) t.join();
+    if (chunks == 1) run(0);
+    if (chunks > 1) pool.run(chunks, run);
 }
 
 // Processor threads worth using for such work (at least 1).

@@ -6,6 +6,7 @@
 #include <span>
 #include <vector>
 
+#include "core/worker_pool.h"
 #include "gl/state.h"
 #include "gl/vertex_array.h"
 #include "render/frame_history.h"
@@ -55,6 +56,7 @@ struct PassContext {
     const gl::VertexArray& empty_vao;     // for full-screen triangles
     const gl::Buffer& instances;          // the frame's InstanceData, also read as an SSBO
     EdgeStorage& edges;                   // the edge buffer (strokes, LineMethod::compute)
+    WorkerPool& workers;                  // threads for the CPU culling (parallel_chunks.h)
     const StyleDef& style;                // what the frame looks like (render/styles/)
     const StyleTextures& style_textures;  // noise and stroke profiles
     const gl::VertexArray& hud_vao;

@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "core/error.h"
+#include "core/parallel_chunks.h"
 #include "gl/driver.h"
 #include "render/clear_image.h"
 #include "render/frame_passes.h"
@@ -47,6 +48,7 @@ struct Renderer::Impl {
     gl::Buffer raster_work;     // the compute prepass's work items (lines/prepass_raster.h)
     MeshCache gpu_meshes{instances};
     EdgeStorage edges;
+    WorkerPool workers{worker_threads()};
     // Intersection lines: the crossings, kept while nothing moves, and the frame's segments
     // in view space for intersections.comp.
     IntersectionCache intersection_cache;
@@ -145,6 +147,7 @@ struct Renderer::Impl {
                            .empty_vao = empty_vao,
                            .instances = instances,
                            .edges = edges,
+                           .workers = workers,
                            .style = style,
                            .style_textures = style_textures,
                            .hud_vao = hud_vao,

@@ -89,13 +89,13 @@ void pass_edges(const PassContext& ctx) {
     }
     // Culling runs on several threads when there is enough of it; chunks keep job order, so
     // the items are the same as one thread's.
-    const std::size_t threads = clusters >= kCullPairsPerThread ? worker_threads() : 1;
+    const std::size_t threads = clusters >= kCullPairsPerThread ? ctx.workers.max_threads() : 1;
     const std::size_t chunks = chunk_count(jobs.size(), 1, threads);
     std::vector<std::vector<EdgeWorkItem>> chunk_work(chunks);
     std::vector<std::vector<HizBounds>> chunk_bounds(chunks);
     std::vector<EdgeCullStats> chunk_stats(chunks);
     std::vector<std::size_t> job_items(jobs.size());
-    parallel_chunks(jobs.size(), 1, threads, [&](std::size_t j, std::size_t c) {
+    parallel_chunks(ctx.workers, jobs.size(), 1, threads, [&](std::size_t j, std::size_t c) {
         const Job& job = jobs[j];
         const std::size_t before = chunk_work[c].size();
         append_edge_work(job.mesh->edge_clusters, instances[job.instance].model_view,

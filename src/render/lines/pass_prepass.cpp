@@ -89,7 +89,7 @@ TriangleCullStats draw_batch_triangles(const PassContext& ctx, gl::PipelineState
         clusters += mesh.triangle_clusters.size() * static_cast<std::size_t>(b.instance_count);
     }
     // Several threads when there is enough of it; chunks keep job order (parallel_chunks.h).
-    const std::size_t threads = clusters >= kCullPairsPerThread ? worker_threads() : 1;
+    const std::size_t threads = clusters >= kCullPairsPerThread ? ctx.workers.max_threads() : 1;
     const std::size_t chunks = chunk_count(jobs.size(), 1, threads);
     std::vector<std::vector<TriangleDraw>> chunk_draws(chunks), chunk_one_sided(chunks);
     std::vector<TriangleCullStats> chunk_stats(chunks);
@@ -97,7 +97,7 @@ TriangleCullStats draw_batch_triangles(const PassContext& ctx, gl::PipelineState
         job_work(jobs.size());
     std::vector<RasterRoute> chunk_routes;
     if (route) chunk_routes.assign(chunks, RasterRoute(route->view));
-    parallel_chunks(jobs.size(), 1, threads, [&](std::size_t j, std::size_t c) {
+    parallel_chunks(ctx.workers, jobs.size(), 1, threads, [&](std::size_t j, std::size_t c) {
         const Job& job = jobs[j];
         const std::size_t before = chunk_draws[c].size();
         const std::size_t one_sided_before = chunk_one_sided[c].size();
