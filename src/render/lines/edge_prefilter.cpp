@@ -66,8 +66,7 @@ bool uses_edge_prefilter(const RenderSettings& settings, bool software_rasterise
 
 bool may_be_feature(const EdgeFacing& f, float crease_key, const glm::vec3& eye, float cos_crease) {
     // Creases, boundaries and material boundaries sort below any crease threshold they pass.
-    // Everything is computed and combined without branches: near a silhouette the two faces'
-    // signs are a coin toss, and mispredicted branches were most of the test's cost (below).
+    // The same expressions as list_maybe_features's, so that the two agree on every edge.
     const glm::vec3 to_eye = eye - f.a;
     const float t = glm::dot(to_eye, to_eye);
     const float sa = glm::dot(f.n_a, to_eye);

@@ -29,8 +29,8 @@ struct EdgeFacing {
 // The same for every edge of the list, one array per component, so that a cluster's edges are
 // tested a SIMD vector at a time (list_maybe_features), with the crease keys
 // (geo::ClusteredEdges::crease_keys) beside them. Every array holds geo::kMaxClusterEdges more
-// entries than the list has edges (zero, the crease key 2: no feature), so that a cluster's
-// fixed-size block never reads past the end.
+// entries than the list has edges (zeros and key 2, read but never listed), so that a
+// cluster's fixed-size block never reads past the end.
 struct EdgeFacingTable {
     enum Column { ax, ay, az, nax, nay, naz, nbx, nby, nbz, crease_key, kColumns };
     std::vector<float> columns[kColumns];
