@@ -48,7 +48,9 @@ bool uses_edge_prefilter(const RenderSettings& settings, bool software_rasterise
 // Whether an edge (its facing record and crease key) may be a feature edge of an instance
 // whose eye, in object space, is `eye`, with creases below `cos_crease`: false only where
 // edges.comp would surely find it no feature (both faces clearly on one side of the eye, and
-// no crease, boundary or material key below cos_crease).
+// no crease, boundary or material key below cos_crease). The definition, one edge at a time;
+// the culling runs list_maybe_features, which the tests hold to it (written through an
+// EdgeFacing per edge, GCC no longer vectorises the block).
 bool may_be_feature(const EdgeFacing& f, float crease_key, const glm::vec3& eye, float cos_crease);
 
 // may_be_feature for the table's edges [first, first + count), count <= geo::kMaxClusterEdges
